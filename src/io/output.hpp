@@ -1,0 +1,36 @@
+// Results out: DIR/summary.json, DIR/history.csv and a VTK XML PolyData series
+// (DIR/vtk/step_NNNNNN.vtp indexed by DIR/blocks.pvd). See README "Output files".
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "solver/run.hpp"
+#include "solver/scene.hpp"
+#include "solver/world.hpp"
+
+namespace dda {
+
+class OutputWriter {
+ public:
+  // Creates `dir` (and dir/vtk) if needed and opens history.csv. Throws std::runtime_error
+  // naming the path when it cannot write there.
+  OutputWriter(std::filesystem::path dir, const Scene& scene);
+
+  // Appends one history row per block for the world's current step and writes a VTK frame.
+  void record(const World& world);
+
+  // Writes summary.json and the .pvd index. Called once at the end, also after divergence,
+  // so that what was written is kept and indexed.
+  void finish(const World& world, const RunStats& stats);
+
+ private:
+  std::filesystem::path dir_;
+  const Scene& scene_;
+  std::ofstream history_;
+  std::vector<std::pair<double, std::string>> frames_;  // (time, relative file name)
+};
+
+}  // namespace dda

@@ -1,0 +1,119 @@
+#include "kinematics/polygon.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace dda {
+namespace {
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Twice the signed area of triangle abc: > 0 when a, b, c turn counter-clockwise.
+double orient(const Vec2& a, const Vec2& b, const Vec2& c) { return cross(b - a, c - a); }
+
+// p lies on segment ab, given that a, b, p are collinear.
+bool within_box(const Vec2& a, const Vec2& b, const Vec2& p) {
+  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
+         std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
+}
+
+// Closed segments ab and cd share at least one point.
+bool segments_touch(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const double o1 = orient(a, b, c), o2 = orient(a, b, d);
+  const double o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) {
+    return true;
+  }
+  return (o1 == 0 && within_box(a, b, c)) || (o2 == 0 && within_box(a, b, d)) ||
+         (o3 == 0 && within_box(c, d, a)) || (o4 == 0 && within_box(c, d, b));
+}
+
+}  // namespace
+
+double signed_area(const Polygon& poly) {
+  const std::size_t n = poly.size();
+  if (n < 3) return 0.0;
+  // Relative to the first vertex, so that far-away coordinates lose no digits.
+  double twice = 0.0;
+  for (std::size_t i = 1; i + 1 < n; ++i) twice += cross(poly[i] - poly[0], poly[i + 1] - poly[0]);
+  return 0.5 * twice;
+}
+
+Moments polygon_moments(const Polygon& poly) {
+  const std::size_t n = poly.size();
+  assert(n >= 3);
+  Moments m;
+  // Pass 1: area and centroid by Green's theorem, relative to vertex 0.
+  const Vec2 origin = poly[0];
+  double twice_area = 0.0;
+  Vec2 first = Vec2::Zero();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = poly[i] - origin, b = poly[(i + 1) % n] - origin;
+    const double c = cross(a, b);
+    twice_area += c;
+    first += (a + b) * c;
+  }
+  m.area = 0.5 * twice_area;
+  m.centroid = origin + first / (3.0 * twice_area);
+  // Pass 2: second moments about the centroid, edge by edge (exact for straight edges):
+  //   int x^2 = 1/12 sum (xi^2 + xi xj + xj^2) ci,  int xy = 1/24 sum (xi yj + 2 xi yi + 2 xj yj + xj yi) ci
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = poly[i] - m.centroid, b = poly[(i + 1) % n] - m.centroid;
+    const double c = cross(a, b);
+    m.sxx += (a.x() * a.x() + a.x() * b.x() + b.x() * b.x()) * c;
+    m.syy += (a.y() * a.y() + a.y() * b.y() + b.y() * b.y()) * c;
+    m.sxy += (a.x() * b.y() + 2.0 * a.x() * a.y() + 2.0 * b.x() * b.y() + b.x() * a.y()) * c;
+  }
+  m.sxx /= 12.0;
+  m.syy /= 12.0;
+  m.sxy /= 24.0;
+  return m;
+}
+
+bool is_self_intersecting(const Polygon& poly) {
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = poly[i];
+    const Vec2& b = poly[(i + 1) % n];
+    if (a == b) return true;  // a zero-length edge
+    // Neighbour edge (i, i+1) then (i+1, i+2): they overlap when the turn at b folds back.
+    const Vec2& c = poly[(i + 2) % n];
+    if (n >= 3 && orient(a, b, c) == 0.0 && (a - b).dot(c - b) > 0.0) return true;
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // edges n-1 and 0 are neighbours
+      if (segments_touch(a, b, poly[j], poly[(j + 1) % n])) return true;
+    }
+  }
+  return false;
+}
+
+bool contains_point(const Polygon& poly, const Vec2& p) {
+  const std::size_t n = poly.size();
+  bool inside = false;
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec2& a = poly[j];
+    const Vec2& b = poly[i];
+    // On the edge (within a relative round-off band) counts as inside.
+    const double len2 = (b - a).squaredNorm();
+    if (std::abs(orient(a, b, p)) <= 1e-12 * len2 && within_box(a, b, p)) return true;
+    if ((b.y() > p.y()) != (a.y() > p.y())) {
+      const double x_cross = b.x() + (p.y() - b.y()) * (a.x() - b.x()) / (a.y() - b.y());
+      if (p.x() < x_cross) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+Box bounding_box(const std::vector<Polygon>& polys) {
+  Box box{Vec2::Constant(INFINITY), Vec2::Constant(-INFINITY)};
+  for (const Polygon& poly : polys) {
+    for (const Vec2& v : poly) {
+      box.min = box.min.cwiseMin(v);
+      box.max = box.max.cwiseMax(v);
+    }
+  }
+  return box;
+}
+
+}  // namespace dda

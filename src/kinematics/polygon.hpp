@@ -1,0 +1,41 @@
+// Exact polygon integrals (Green's theorem over the edges) and small geometric predicates.
+// Pure functions over plain data.
+#pragma once
+
+#include "kinematics/types.hpp"
+
+namespace dda {
+
+// Area, centroid and second moments about the centroid of a simple polygon:
+//   area = int dA,  centroid = int x dA / area,
+//   sxx = int (x-xc)^2 dA,  syy = int (y-yc)^2 dA,  sxy = int (x-xc)(y-yc) dA.
+// Counter-clockwise polygons give a positive area; clockwise ones a negative area
+// (and moments of the same sign), which callers use to detect orientation.
+struct Moments {
+  double area = 0.0;
+  Vec2 centroid = Vec2::Zero();
+  double sxx = 0.0;
+  double syy = 0.0;
+  double sxy = 0.0;
+};
+
+Moments polygon_moments(const Polygon& poly);
+
+// Signed area (positive when counter-clockwise).
+double signed_area(const Polygon& poly);
+
+// True when two edges that are not neighbours touch or cross, or neighbours overlap:
+// the polygon is not simple.
+bool is_self_intersecting(const Polygon& poly);
+
+// Point in polygon (crossing number); points on the boundary count as inside.
+bool contains_point(const Polygon& poly, const Vec2& p);
+
+// Axis-aligned bounding box of all the polygons: {min, max}.
+struct Box {
+  Vec2 min;
+  Vec2 max;
+};
+Box bounding_box(const std::vector<Polygon>& polys);
+
+}  // namespace dda

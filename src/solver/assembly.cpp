@@ -1,0 +1,43 @@
+#include "solver/assembly.hpp"
+
+#include "kinematics/block_matrices.hpp"
+
+namespace dda {
+namespace {
+
+void add_block_terms(const World& world, const Block& b, const StepContext& ctx,
+                     Mat6& k, Eigen::Ref<Vec6> f) {
+  const LinearT t = shi_t();
+  const Mat6 mass = mass_matrix(t, b.moments, b.density);
+  const Vec6 v0 = ctx.dynamic_coefficient * b.velocity;
+  k += elastic_stiffness(b.moments, b.elastic) + (2.0 / (ctx.dt * ctx.dt)) * mass;
+  f += body_force(t, b.moments, b.density, world.gravity) +
+       initial_stress_force(b.moments, b.stress) + (2.0 / ctx.dt) * (mass * v0);
+}
+
+}  // namespace
+
+void assemble(const World& world, const StepContext& ctx, BlockSystem& system) {
+  system.reset(world.dof_count / 6);
+  for (const Block& b : world.blocks) {
+    if (b.fixed) continue;
+    const int row = b.first_dof / 6;
+    add_block_terms(world, b, ctx, system.diagonal[row], system.rhs.segment<6>(b.first_dof));
+  }
+  const LinearT t = shi_t();
+  for (const Pin& pin : world.pins) {
+    const Block& b = world.blocks[pin.block];
+    if (b.fixed) continue;  // a pin on a fixed block holds nothing that moves
+    const Mat26 tp = t.at(pin.current - b.moments.centroid);
+    system.diagonal[b.first_dof / 6] += spring_stiffness(tp, ctx.penalty);
+    system.rhs.segment<6>(b.first_dof) += spring_force(tp, ctx.penalty, pin.anchor - pin.current);
+  }
+  for (const PointLoad& load : world.loads) {
+    const Block& b = world.blocks[load.block];
+    if (b.fixed) continue;
+    const Mat26 tp = t.at(load.current - b.moments.centroid);
+    system.rhs.segment<6>(b.first_dof) += point_force(tp, load.force);
+  }
+}
+
+}  // namespace dda

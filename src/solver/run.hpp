@@ -1,0 +1,27 @@
+// The time loop: advances a World step by step until the scene's steps or end time,
+// reporting to an observer after every completed step.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "solver/world.hpp"
+
+namespace dda {
+
+struct RunStats {
+  int steps = 0;           // completed steps
+  int cut_steps = 0;       // attempts thrown away by the displacement-ratio control
+  long iterations = 0;     // linear solves (assemble + solve passes) in all
+  double wall_time_s = 0;  // whole run, seconds
+  bool diverged = false;
+  std::string message;     // why the run stopped early, empty otherwise
+};
+
+// Called with the world after each completed step (and once before the first step with
+// world.step == 0). Return false to stop the run.
+using StepObserver = std::function<bool(const World&, const RunStats&)>;
+
+RunStats run(World& world, const StepObserver& observe);
+
+}  // namespace dda

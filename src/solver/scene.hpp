@@ -1,0 +1,78 @@
+// A validated scene: what the user asked for, in user units (SI), immutable once built.
+// io/ turns a JSON file into this; solver/ turns this into a World. Every field here has
+// already been checked (io/scene_reader.cpp), so the solver only asserts.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinematics/types.hpp"
+#include "materials/elastic.hpp"
+
+namespace dda {
+
+// How the block configuration is moved at the end of a step (paper Sections 2 and 3).
+// Only Shi's original update exists so far; the paper's treatments come with issue 4.
+enum class RotationUpdate { Original };
+
+struct Material {
+  std::string name;
+  double density = 0.0;  // kg/m^3, > 0
+  double young = 0.0;    // Pa, > 0
+  double poisson = 0.0;  // (-1, 0.5)
+};
+
+struct BlockSpec {
+  Polygon vertices;              // counter-clockwise, simple, non-zero area
+  int material = 0;              // index into Scene::materials
+  bool fixed = false;            // fixed blocks carry no unknowns
+  Vec3 velocity = Vec3::Zero();  // [vx, vy, omega] at the centroid (m/s, rad/s)
+  Vec3 initial_stress = Vec3::Zero();  // [sxx, syy, sxy] (Pa), tension positive
+};
+
+// A fixed point: the material point of `block` at `point` is held there by a penalty spring.
+struct PinSpec {
+  Vec2 point = Vec2::Zero();
+  int block = -1;  // resolved by the reader: the block containing the point
+};
+
+// A constant force (N per metre of thickness) applied at a material point of a block.
+struct PointLoadSpec {
+  Vec2 point = Vec2::Zero();
+  Vec2 force = Vec2::Zero();
+  int block = -1;
+};
+
+struct ControlSettings {
+  // Time step (s). One value, or a list used cyclically (the paper alternates 0.01/0.02 s).
+  std::vector<double> time_steps{0.01};
+  // Exactly one of the two is set: the number of completed steps, or the end time (s).
+  std::optional<int> steps;
+  std::optional<double> end_time;
+  // A step in which any vertex moves more than ratio * w0 (w0 = half the larger extent of
+  // the scene's bounding box at the start) is cut and redone. Shi's g2; range (0, 1].
+  double max_displacement_ratio = 0.01;
+  // Share of the end-of-step velocity carried into the next step: 1 dynamic, 0 static
+  // (velocities dropped each step). Range [0, 1].
+  double dynamic_coefficient = 1.0;
+  RotationUpdate rotation_update = RotationUpdate::Original;
+  // Penalty stiffness of pins (N/m per metre of thickness); nullopt means "auto"
+  // (50 x the largest Young's modulus, Shi's usual g0; see README).
+  std::optional<double> penalty;
+  // Write history rows and a VTK frame every this many steps (and at the start and end).
+  int output_every = 10;
+};
+
+struct Scene {
+  std::string source;              // file name, or "built-in default scene"
+  Vec2 gravity{0.0, -9.81};        // m/s^2
+  PlaneMode plane = PlaneMode::Strain;
+  ControlSettings control;
+  std::vector<Material> materials;
+  std::vector<BlockSpec> blocks;
+  std::vector<PinSpec> pins;
+  std::vector<PointLoadSpec> point_loads;
+};
+
+}  // namespace dda

@@ -1,0 +1,34 @@
+// One DDA time step as a pipeline of named stages (see step.cpp, read top-down).
+#pragma once
+
+#include <string>
+
+#include "solver/block_system.hpp"
+#include "solver/linear_solver.hpp"
+#include "solver/run.hpp"
+#include "solver/world.hpp"
+
+namespace dda {
+
+// What the step loop keeps between steps: buffers and the factorisation's analysis.
+struct StepWorkspace {
+  BlockSystem system;
+  CholmodSolver solver;
+};
+
+struct StepOutcome {
+  bool ok = true;
+  std::string message;  // why the step failed (divergence), empty when ok
+};
+
+// The time step the schedule asks for at the world's current step: the list is used
+// cyclically, and the last step is shortened to land on end_time.
+double scheduled_time_step(const World& world);
+
+// True when the world has done its steps or reached its end time.
+bool is_finished(const World& world);
+
+// Advances the world by one step; counts solves and cut attempts in `stats`.
+StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats);
+
+}  // namespace dda

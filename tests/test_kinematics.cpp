@@ -1,0 +1,150 @@
+// Polygon integrals, T, the mass matrix and frame rotations against hand-derived values
+// and an independent quadrature.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "kinematics/block_matrices.hpp"
+#include "kinematics/frames.hpp"
+#include "kinematics/polygon.hpp"
+#include "scene_builders.hpp"
+
+using namespace dda;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+// Exact polygon integration is a handful of flops per edge: round-off of a few ulps,
+// so 1e-14 (relative to the quantity, or absolute for values that vanish) is ample.
+constexpr double kRoundOff = 1e-14;
+
+TEST_CASE("polygon moments: unit square", "[kinematics]") {
+  const Moments m = polygon_moments(test::rectangle(0, 0, 1, 1));
+  CHECK_THAT(m.area, WithinRel(1.0, kRoundOff));
+  CHECK_THAT(m.centroid.x(), WithinRel(0.5, kRoundOff));
+  CHECK_THAT(m.centroid.y(), WithinRel(0.5, kRoundOff));
+  CHECK_THAT(m.sxx, WithinRel(1.0 / 12.0, kRoundOff));  // b h^3 / 12
+  CHECK_THAT(m.syy, WithinRel(1.0 / 12.0, kRoundOff));
+  CHECK_THAT(m.sxy, WithinAbs(0.0, kRoundOff));
+}
+
+TEST_CASE("polygon moments: right triangle with legs 3 and 6", "[kinematics]") {
+  // Legs a = 3 along x, b = 6 along y: area ab/2 = 9, centroid (a/3, b/3) = (1, 2),
+  // central moments A a^2/18 = 4.5, A b^2/18 = 18, product -a^2 b^2/72 = -4.5.
+  const Moments m = polygon_moments({{0, 0}, {3, 0}, {0, 6}});
+  CHECK_THAT(m.area, WithinRel(9.0, kRoundOff));
+  CHECK_THAT(m.centroid.x(), WithinRel(1.0, kRoundOff));
+  CHECK_THAT(m.centroid.y(), WithinRel(2.0, kRoundOff));
+  CHECK_THAT(m.sxx, WithinRel(4.5, kRoundOff));
+  CHECK_THAT(m.syy, WithinRel(18.0, kRoundOff));
+  CHECK_THAT(m.sxy, WithinRel(-4.5, kRoundOff));
+}
+
+TEST_CASE("polygon moments: regular octagon", "[kinematics]") {
+  // Circumradius R: area 2 sqrt(2) R^2; polar moment A R^2 (1 + 2 cos^2(pi/8)) / 6 split
+  // equally between the axes by symmetry (verification catalogue, rigid pendulum).
+  const double r = 0.5;  // the paper's octagon: diameter 1 m, area 0.707107 m^2
+  const Moments m = polygon_moments(test::regular_polygon(8, r, {3.0, -2.0}, 0.3));
+  const double area = 2.0 * std::sqrt(2.0) * r * r;
+  const double c = std::cos(M_PI / 8.0);
+  const double axis = area * r * r * (1.0 + 2.0 * c * c) / 12.0;
+  CHECK_THAT(m.area, WithinRel(area, kRoundOff));
+  CHECK_THAT(m.area, WithinRel(0.707107, 1e-6));  // the paper's printed value, 6 digits
+  CHECK_THAT(m.centroid.x(), WithinRel(3.0, kRoundOff));
+  CHECK_THAT(m.centroid.y(), WithinRel(-2.0, kRoundOff));
+  CHECK_THAT(m.sxx, WithinRel(axis, 1e-13));  // trig round-off in the vertices
+  CHECK_THAT(m.syy, WithinRel(axis, 1e-13));
+  CHECK_THAT(m.sxy, WithinAbs(0.0, 1e-15));
+}
+
+TEST_CASE("polygon moments: concave L-shape", "[kinematics]") {
+  // Two unit-height rectangles [0,2]x[0,1] and [0,1]x[1,2] (parallel-axis theorem by hand):
+  // area 3, centroid (5/6, 5/6), sxx = syy = 11/12, sxy = -1/3.
+  const Moments m = polygon_moments(test::l_shape());
+  CHECK_THAT(m.area, WithinRel(3.0, kRoundOff));
+  CHECK_THAT(m.centroid.x(), WithinRel(5.0 / 6.0, kRoundOff));
+  CHECK_THAT(m.centroid.y(), WithinRel(5.0 / 6.0, kRoundOff));
+  CHECK_THAT(m.sxx, WithinRel(11.0 / 12.0, kRoundOff));
+  CHECK_THAT(m.syy, WithinRel(11.0 / 12.0, kRoundOff));
+  CHECK_THAT(m.sxy, WithinRel(-1.0 / 3.0, kRoundOff));
+}
+
+TEST_CASE("polygon orientation, simplicity and containment", "[kinematics]") {
+  Polygon ccw = test::l_shape();
+  CHECK(signed_area(ccw) > 0.0);
+  Polygon cw(ccw.rbegin(), ccw.rend());
+  CHECK_THAT(signed_area(cw), WithinRel(-3.0, kRoundOff));
+  CHECK_FALSE(is_self_intersecting(ccw));
+  CHECK(is_self_intersecting({{0, 0}, {1, 1}, {1, 0}, {0, 1}}));        // bow tie
+  CHECK(is_self_intersecting({{0, 0}, {2, 0}, {1, 0}, {1, 1}}));        // edge folds back
+  CHECK(is_self_intersecting({{0, 0}, {1, 0}, {1, 0}, {1, 1}}));        // repeated vertex
+  CHECK(contains_point(ccw, {0.5, 1.5}));
+  CHECK_FALSE(contains_point(ccw, {1.5, 1.5}));  // the notch of the L
+  CHECK(contains_point(ccw, {2.0, 0.5}));        // on the boundary counts as inside
+}
+
+TEST_CASE("T matrix is Shi's Eq. 3", "[kinematics]") {
+  const Mat26 t = shi_t().at({0.3, -0.7});  // X = 0.3, Y = -0.7
+  Mat26 expected;
+  expected << 1, 0, 0.7, 0.3, 0, -0.35,  //
+      0, 1, 0.3, 0, -0.7, 0.15;
+  CHECK((t - expected).cwiseAbs().maxCoeff() == 0.0);
+}
+
+namespace {
+
+// Independent reference for int rho T^T T dA: split the polygon into triangles fanned from
+// `apex` (a point that sees every vertex) and use the three-edge-midpoint rule, exact for
+// quadratics (T^T T is quadratic in x, y). No polygon moments are used.
+Mat6 mass_by_quadrature(const Polygon& poly, const Vec2& apex, double rho) {
+  const Vec2 reference = polygon_moments(poly).centroid;  // T's reference point only
+  const LinearT t = shi_t();
+  Mat6 m = Mat6::Zero();
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Vec2 a = apex, b = poly[i], c = poly[(i + 1) % poly.size()];
+    const double area = 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+    for (const Vec2& q : {Vec2((a + b) / 2), Vec2((b + c) / 2), Vec2((c + a) / 2)}) {
+      const Mat26 tq = t.at(q - reference);
+      m += rho * area / 3.0 * tq.transpose() * tq;
+    }
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("mass matrix matches numerical quadrature", "[kinematics]") {
+  const double rho = 2700.0;
+  struct Case {
+    Polygon poly;
+    Vec2 apex;
+  };
+  const std::vector<Case> cases = {
+      {test::rectangle(1, 2, 3, 0.5), {2.5, 2.25}},
+      {{{0, 0}, {3, 0}, {0, 6}}, {1, 2}},
+      {test::regular_polygon(8, 0.5, {1, 1}, 0.2), {1, 1}},
+      {test::l_shape(), {5.0 / 6.0, 5.0 / 6.0}},  // the centroid sees all six vertices
+  };
+  for (const Case& c : cases) {
+    const Mat6 exact = mass_matrix(shi_t(), polygon_moments(c.poly), rho);
+    const Mat6 quad = mass_by_quadrature(c.poly, c.apex, rho);
+    // Both are exact integrals; they differ by summation round-off (~1e-15 of the largest entry).
+    CHECK((exact - quad).cwiseAbs().maxCoeff() <= 1e-13 * exact.cwiseAbs().maxCoeff());
+    CHECK((exact - exact.transpose()).cwiseAbs().maxCoeff() == 0.0);
+  }
+}
+
+TEST_CASE("strain in a turned frame: the tensor rotation", "[kinematics]") {
+  // A stretch along x seen from a frame turned by 90 degrees is a stretch along y'.
+  const Vec3 e(1e-3, 0.0, 0.0);
+  const Vec3 at90 = strain_in_turned_frame(e, M_PI / 2);
+  CHECK_THAT(at90[0], WithinAbs(0.0, 1e-18));  // cos(pi) round-off times 1e-3
+  CHECK_THAT(at90[1], WithinAbs(1e-3, 1e-18));
+  CHECK_THAT(at90[2], WithinAbs(0.0, 1e-18));
+  // At 45 degrees: e'x = e'y = 5e-4, g'xy = -(ex - ey) = -1e-3 (Mohr's circle).
+  const Vec3 at45 = strain_in_turned_frame(e, M_PI / 4);
+  CHECK_THAT(at45[0], WithinAbs(5e-4, 1e-18));
+  CHECK_THAT(at45[1], WithinAbs(5e-4, 1e-18));
+  CHECK_THAT(at45[2], WithinAbs(-1e-3, 1e-18));
+  // Turning forth and back is the identity.
+  const Vec3 g(3e-4, -1e-4, 2e-4);
+  CHECK((strain_in_turned_frame(strain_in_turned_frame(g, 0.7), -0.7) - g).norm() <= 1e-19);
+}

@@ -1,0 +1,109 @@
+// The fast path (CHOLMOD) against the simple reference (dense LDLT) on assembled systems.
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "kinematics/block_matrices.hpp"
+#include "scene_builders.hpp"
+#include "solver/assembly.hpp"
+#include "solver/linear_solver.hpp"
+#include "solver/world.hpp"
+
+using namespace dda;
+
+namespace {
+
+// A world of `n` blocks of assorted shapes with pins and point loads, some fixed.
+World assorted_world(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Scene s = test::base_scene(1, 0.01);
+  s.materials.push_back(Material{"soft", 1800.0, 5e7, 0.3});
+  for (int i = 0; i < n; ++i) {
+    const Vec2 c(3.0 * i, 0.0);
+    BlockSpec b = test::block(i % 3 == 0   ? test::regular_polygon(5 + i % 4, 0.8, c, u(rng))
+                              : i % 3 == 1 ? test::rectangle(c.x() - 1, -0.5, 2, 1 + 0.5 * u(rng))
+                                           : Polygon{{c.x() - 1, -1}, {c.x() + 1, -1}, {c.x() + 1, 0},
+                                                     {c.x(), 0}, {c.x(), 1}, {c.x() - 1, 1}});
+    b.material = i % 2;
+    b.fixed = (i % 7 == 6);
+    b.velocity = Vec3(u(rng), u(rng), u(rng));
+    b.initial_stress = 1e5 * Vec3(u(rng), u(rng), u(rng));
+    s.blocks.push_back(b);
+    if (i % 4 == 1) s.pins.push_back(PinSpec{{c.x() + 0.2, 0.1}, i});
+    if (i % 5 == 2) s.point_loads.push_back(PointLoadSpec{{c.x(), 0.2}, {1e4 * u(rng), 1e4}, i});
+  }
+  return make_world(s);
+}
+
+// Springs between neighbouring free blocks, as contacts will add: p [Ti -Tj]^T [Ti -Tj].
+void add_block_couplings(const World& w, BlockSystem& sys, double p) {
+  const LinearT t = shi_t();
+  for (std::size_t i = 0; i + 1 < w.blocks.size(); ++i) {
+    const Block& a = w.blocks[i];
+    const Block& b = w.blocks[i + 1];
+    if (a.fixed || b.fixed) continue;
+    const Vec2 x = 0.5 * (a.moments.centroid + b.moments.centroid);
+    const Mat26 ta = t.at(x - a.moments.centroid);
+    const Mat26 tb = t.at(x - b.moments.centroid);
+    sys.diagonal[a.first_dof / 6] += p * ta.transpose() * ta;
+    sys.diagonal[b.first_dof / 6] += p * tb.transpose() * tb;
+    sys.couplings.push_back({b.first_dof / 6, a.first_dof / 6, -p * tb.transpose() * ta});
+  }
+}
+
+StepContext context(const World& w, double dt) {
+  StepContext ctx;
+  ctx.dt = dt;
+  ctx.penalty = w.penalty;
+  ctx.dynamic_coefficient = 1.0;
+  return ctx;
+}
+
+}  // namespace
+
+TEST_CASE("CHOLMOD and dense LDLT agree on assembled systems", "[solver]") {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    World w = assorted_world(25, seed);
+    BlockSystem sys;
+    assemble(w, context(w, 0.01), sys);
+    add_block_couplings(w, sys, 1e9);
+    const auto dense = solve_dense(sys);
+    CholmodSolver cholmod;
+    const auto sparse = cholmod.solve(sys);
+    REQUIRE(dense);
+    REQUIRE(sparse);
+    // Both are backward-stable factorisations of the same SPD matrix (condition ~1e8 with
+    // the penalty springs): they agree to well within 1e-10 relative, as the issue asks.
+    CHECK((*dense - *sparse).norm() <= 1e-10 * dense->norm());
+    // And the sparse answer satisfies the system (residual relative to K and x).
+    const Eigen::MatrixXd k = sys.dense();
+    CHECK((k * *sparse - sys.rhs).norm() <= 1e-12 * k.norm() * sparse->norm());
+  }
+}
+
+TEST_CASE("CHOLMOD reuses its analysis and follows a changed pattern", "[solver]") {
+  World w = assorted_world(12, 7);
+  BlockSystem sys;
+  CholmodSolver cholmod;
+  assemble(w, context(w, 0.01), sys);
+  const auto first = cholmod.solve(sys);
+  assemble(w, context(w, 0.005), sys);  // same pattern, new values
+  const auto second = cholmod.solve(sys);
+  add_block_couplings(w, sys, 1e9);  // new pattern
+  const auto third = cholmod.solve(sys);
+  REQUIRE((first && second && third));
+  assemble(w, context(w, 0.005), sys);
+  CHECK((*second - *solve_dense(sys)).norm() <= 1e-10 * second->norm());
+  add_block_couplings(w, sys, 1e9);
+  CHECK((*third - *solve_dense(sys)).norm() <= 1e-10 * third->norm());
+}
+
+TEST_CASE("a matrix that is not positive definite is reported, not solved", "[solver]") {
+  BlockSystem sys;
+  sys.reset(1);
+  sys.diagonal[0] = -Mat6::Identity();
+  sys.rhs.setOnes();
+  CholmodSolver cholmod;
+  CHECK_FALSE(cholmod.solve(sys));
+  CHECK_FALSE(solve_dense(sys));
+}
