@@ -1,0 +1,269 @@
+#include "io/output.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "kinematics/frames.hpp"
+
+namespace dda {
+
+namespace {
+
+namespace fs = std::filesystem;
+// ordered_json keeps the keys in the order written here, which reads better than sorted.
+using json = nlohmann::ordered_json;
+
+constexpr const char* kHistoryHeader =
+    "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega";
+
+// 17 significant digits: enough for every double to read back bit-for-bit.
+std::string num(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+[[noreturn]] void fail(const std::string& what, const fs::path& path) {
+  throw std::runtime_error("output: " + what + " " + path.string());
+}
+
+// Writes `text` to `path` through a temporary file and a rename, so a reader (or a run that
+// dies half-way) never sees a half-written file.
+void write_atomically(const fs::path& path, const std::string& text) {
+  fs::path tmp = path;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) fail("cannot open", tmp);
+    out << text;
+    out.flush();
+    if (!out) fail("cannot write", tmp);
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) fail("cannot rename " + tmp.string() + " to", path);
+}
+
+std::string frame_name(int step) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "vtk/step_%06d.vtp", step);
+  return buf;
+}
+
+// ---- VTK XML PolyData ----
+
+// One <DataArray> of per-cell values; `values(i)` gives the components of block i.
+template <class Values>
+void cell_array(std::string& s, const World& w, const char* type, const char* name,
+                std::initializer_list<const char*> components, Values values) {
+  s += "        <DataArray type=\"";
+  s += type;
+  s += "\" Name=\"";
+  s += name;
+  s += "\" NumberOfComponents=\"" + std::to_string(components.size()) + "\"";
+  int k = 0;
+  // Component names make ParaView show "sxx" rather than "0" in its menus.
+  for (const char* c : components) {
+    if (components.size() > 1) s += " ComponentName" + std::to_string(k++) + "=\"" + c + "\"";
+  }
+  s += " format=\"ascii\">\n";
+  for (std::size_t i = 0; i < w.blocks.size(); ++i) {
+    s += "         ";
+    for (const std::string& v : values(w.blocks[i], static_cast<int>(i))) s += " " + v;
+    s += "\n";
+  }
+  s += "        </DataArray>\n";
+}
+
+std::vector<std::string> nums(std::initializer_list<double> xs) {
+  std::vector<std::string> out;
+  for (double x : xs) out.push_back(num(x));
+  return out;
+}
+
+void write_points_and_polys(std::string& s, const World& w) {
+  s += "      <Points>\n";
+  s += "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (const Block& b : w.blocks) {
+    for (const Vec2& p : b.vertices) s += "          " + num(p.x()) + " " + num(p.y()) + " 0\n";
+  }
+  s += "        </DataArray>\n      </Points>\n      <Polys>\n";
+  std::string connectivity, offsets;
+  int next = 0;
+  for (const Block& b : w.blocks) {
+    for (std::size_t k = 0; k < b.vertices.size(); ++k) connectivity += " " + std::to_string(next++);
+    offsets += " " + std::to_string(next);
+  }
+  s += "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n         " +
+       connectivity + "\n        </DataArray>\n";
+  s += "        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n         " +
+       offsets + "\n        </DataArray>\n      </Polys>\n";
+}
+
+void write_cell_data(std::string& s, const World& w) {
+  s += "      <CellData>\n";
+  cell_array(s, w, "Int32", "block", {"block"}, [](const Block&, int i) {
+    return std::vector<std::string>{std::to_string(i)};
+  });
+  cell_array(s, w, "UInt8", "fixed", {"fixed"}, [](const Block& b, int) {
+    return std::vector<std::string>{b.fixed ? "1" : "0"};
+  });
+  cell_array(s, w, "Float64", "area", {"area"},
+             [](const Block& b, int) { return nums({b.moments.area}); });
+  cell_array(s, w, "Float64", "rotation", {"rotation"},
+             [](const Block& b, int) { return nums({b.rotation}); });
+  cell_array(s, w, "Float64", "stress", {"sxx", "syy", "sxy"}, [](const Block& b, int) {
+    return nums({b.stress[0], b.stress[1], b.stress[2]});
+  });
+  cell_array(s, w, "Float64", "strain", {"exx", "eyy", "gxy"}, [](const Block& b, int) {
+    return nums({b.strain[0], b.strain[1], b.strain[2]});
+  });
+  cell_array(s, w, "Float64", "velocity", {"vx", "vy", "omega"}, [](const Block& b, int) {
+    return nums({b.velocity[kU0], b.velocity[kV0], b.velocity[kR0]});
+  });
+  s += "      </CellData>\n";
+}
+
+std::string vtp_text(const World& w) {
+  std::size_t points = 0;
+  for (const Block& b : w.blocks) points += b.vertices.size();
+  std::string s =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <PolyData>\n";
+  s += "    <Piece NumberOfPoints=\"" + std::to_string(points) +
+       "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"" +
+       std::to_string(w.blocks.size()) + "\">\n";
+  write_points_and_polys(s, w);
+  write_cell_data(s, w);
+  s += "    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  return s;
+}
+
+std::string pvd_text(const std::vector<std::pair<double, std::string>>& frames) {
+  std::string s =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <Collection>\n";
+  for (const auto& [time, file] : frames) {
+    s += "    <DataSet timestep=\"" + num(time) + "\" group=\"\" part=\"0\" file=\"" + file +
+         "\"/>\n";
+  }
+  s += "  </Collection>\n</VTKFile>\n";
+  return s;
+}
+
+// ---- summary.json ----
+
+json vec(const Vec2& v) { return json::array({v.x(), v.y()}); }
+json vec(const Vec3& v) { return json::array({v[0], v[1], v[2]}); }
+
+template <class T>
+json optional_value(const std::optional<T>& x) {
+  return x ? json(*x) : json(nullptr);
+}
+
+json settings_json(const World& w) {
+  const ControlSettings& c = w.control;
+  return {
+      {"gravity", vec(w.gravity)},
+      {"plane", w.plane == PlaneMode::Strain ? "strain" : "stress"},
+      {"time_step", c.time_steps},
+      {"steps", optional_value(c.steps)},
+      {"end_time", optional_value(c.end_time)},
+      {"max_displacement_ratio", c.max_displacement_ratio},
+      {"dynamic_coefficient", c.dynamic_coefficient},
+      // Only Shi's original update exists (RotationUpdate has one value).
+      {"rotation_update", "original"},
+      {"penalty", w.penalty},
+      {"penalty_rule", c.penalty ? "user" : "auto"},
+      {"output_every", c.output_every},
+      {"w0", w.w0},
+  };
+}
+
+json block_json(const Block& b, int index) {
+  json vertices = json::array();
+  for (const Vec2& p : b.vertices) vertices.push_back(vec(p));
+  return {
+      {"index", index},
+      {"fixed", b.fixed},
+      {"vertices", vertices},
+      {"centroid", vec(b.moments.centroid)},
+      {"rotation", b.rotation},
+      {"area", b.moments.area},
+      {"strain", vec(b.strain)},
+      {"local_strain", vec(strain_in_turned_frame(b.strain, b.rotation))},
+      {"stress", vec(b.stress)},
+      {"velocity", json::array({b.velocity[kU0], b.velocity[kV0], b.velocity[kR0]})},
+  };
+}
+
+}  // namespace
+
+OutputWriter::OutputWriter(std::filesystem::path dir, const Scene& scene)
+    : dir_(std::move(dir)), scene_(scene) {
+  std::error_code ec;
+  fs::create_directories(dir_ / "vtk", ec);
+  if (ec) fail("cannot create directory (" + ec.message() + ")", dir_ / "vtk");
+  const fs::path history = dir_ / "history.csv";
+  history_.open(history, std::ios::trunc);
+  if (!history_) fail("cannot open", history);
+  history_ << kHistoryHeader << '\n';
+  history_.flush();
+  if (!history_) fail("cannot write", history);
+}
+
+void OutputWriter::record(const World& world) {
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
+    const double values[] = {b.moments.centroid.x(), b.moments.centroid.y(), b.rotation,
+                             b.moments.area,         b.strain[0],            b.strain[1],
+                             b.strain[2],            b.stress[0],            b.stress[1],
+                             b.stress[2],            b.velocity[kU0],        b.velocity[kV0],
+                             b.velocity[kR0]};
+    history_ << world.step << ',' << num(world.time) << ',' << i;
+    for (double v : values) history_ << ',' << num(v);
+    history_ << '\n';
+  }
+  // Flushed every time: a run that dies keeps every row written so far.
+  history_.flush();
+  if (!history_) fail("cannot write", dir_ / "history.csv");
+
+  const std::string name = frame_name(world.step);
+  write_atomically(dir_ / name, vtp_text(world));
+  // Recording the same step twice (e.g. the final step is also an output step) overwrites
+  // the frame; the index lists it once.
+  if (frames_.empty() || frames_.back().second != name) frames_.emplace_back(world.time, name);
+  write_atomically(dir_ / "blocks.pvd", pvd_text(frames_));
+}
+
+void OutputWriter::finish(const World& world, const RunStats& stats) {
+  write_atomically(dir_ / "blocks.pvd", pvd_text(frames_));
+
+  json blocks = json::array();
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    blocks.push_back(block_json(world.blocks[i], static_cast<int>(i)));
+  }
+  const json summary = {
+      {"scene", scene_.source},
+      {"settings", settings_json(world)},
+      {"wall_time_s", stats.wall_time_s},
+      {"steps", stats.steps},
+      {"cut_steps", stats.cut_steps},
+      {"iterations", stats.iterations},
+      {"end_time", world.time},
+      {"diverged", stats.diverged},
+      {"message", stats.message},
+      {"blocks", blocks},
+  };
+  // Replace rather than throw on invalid UTF-8 (a scene path or message from the system).
+  write_atomically(dir_ / "summary.json",
+                   summary.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
+}
+
+}  // namespace dda
