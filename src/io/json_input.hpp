@@ -1,0 +1,92 @@
+// Strict JSON reading for user input, independent of what the document means: parsing with
+// line:column errors, and a Field view that pairs a JSON value with its place in the file
+// ("blocks[3].vertices[0]") so that every type or range check can say where it failed.
+// All failures are thrown as InputError("<source>: <place>: <message>").
+#pragma once
+
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/scene_reader.hpp"
+#include "kinematics/types.hpp"
+
+namespace dda::input {
+
+// 1-based line and column of a 1-based byte position in `text` (nlohmann reports errors as a
+// byte count). Columns count UTF-8 characters, which is what an editor shows.
+struct TextPosition {
+  std::size_t line = 1;
+  std::size_t column = 1;
+};
+TextPosition position_of_byte(std::string_view text, std::size_t byte);
+
+// Parses `text` as one JSON value. Stricter than nlohmann's default in two ways that matter
+// for hand-written input: a key repeated in one object is an error (nlohmann would silently
+// keep the last one), and a number too large for a double is reported at its place.
+nlohmann::json parse_strict_json(const std::string& text, const std::string& source);
+
+// Places in a document, as printed in messages: "control.time_step", "blocks[3]",
+// "materials[\"my rock\"]" (keys that are not plain identifiers are quoted).
+std::string member_path(std::string_view parent, std::string_view key);
+std::string element_path(std::string_view parent, std::size_t index);
+
+// Shortest text that reads back as the same double ("0.1", "-1", "1e+300", "inf").
+std::string format_number(double x);
+
+// A JSON value and where it is. Cheap to copy; refers to the parsed document and the source
+// name, which must outlive it.
+class Field {
+ public:
+  Field(const nlohmann::json& value, std::string path, const std::string& source);
+
+  const std::string& path() const { return path_; }
+  const nlohmann::json& value() const { return *value_; }
+
+  // Throws InputError "<source>: <path>: <message>".
+  [[noreturn]] void fail(std::string_view message) const;
+
+  // ---- objects ----
+  // Requires an object whose keys are all in `known` (unknown keys are usually typos, which
+  // must not be silently ignored).
+  void expect_keys(std::initializer_list<std::string_view> known) const;
+  bool has(std::string_view key) const;
+  Field member(std::string_view key) const;  // required key
+  std::optional<Field> optional_member(std::string_view key) const;
+  std::vector<std::pair<std::string, Field>> members() const;  // requires an object
+
+  // ---- lists ----
+  // Requires a list of at least `min_count` elements; `what` names the elements in the
+  // message ("a block", "a vertex").
+  std::vector<Field> elements(std::size_t min_count, std::string_view what) const;
+
+  // ---- scalars ----
+  bool is_string() const { return value_->is_string(); }
+  bool is_list() const { return value_->is_array(); }
+  double number() const;  // finite
+  int integer() const;    // a whole number that fits an int (1e3 is accepted, 2.5 is not)
+  bool boolean() const;
+  std::string string() const;
+  // Fixed-length lists of numbers; `shape` is shown in messages, e.g. "[x, y]".
+  Vec2 vec2(std::string_view shape) const;
+  Vec3 vec3(std::string_view shape) const;
+
+  // "a string (\"abc\")", "a list", "the number -1", ... for "expected X, got Y".
+  std::string describe() const;
+
+ private:
+  [[noreturn]] void fail_type(std::string_view expected) const;
+  std::vector<double> numbers(std::size_t count, std::string_view shape) const;
+
+  const nlohmann::json* value_;
+  std::string path_;
+  const std::string* source_;
+};
+
+}  // namespace dda::input

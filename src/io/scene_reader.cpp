@@ -1,0 +1,330 @@
+// Scene JSON -> Scene. The format is documented in docs/scene-format.md; keep the two in step.
+// Every check happens here, once, so that the solver can trust a Scene without re-checking.
+#include "io/scene_reader.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/json_input.hpp"
+#include "kinematics/polygon.hpp"
+
+namespace dda {
+
+namespace {
+
+using input::Field;
+using input::format_number;
+
+// ---- numbers with a range ----
+
+double positive_number(const Field& f) {
+  const double x = f.number();
+  if (x <= 0.0) f.fail("must be positive, got " + format_number(x));
+  return x;
+}
+
+// lo <= x <= hi, with each end optionally excluded; `range` is the range as the user reads it.
+double number_in_range(const Field& f, double lo, bool lo_open, double hi, bool hi_open,
+                       std::string_view range) {
+  const double x = f.number();
+  const bool above_lo = lo_open ? x > lo : x >= lo;
+  const bool below_hi = hi_open ? x < hi : x <= hi;
+  if (!above_lo || !below_hi) {
+    f.fail("must be " + std::string(range) + ", got " + format_number(x));
+  }
+  return x;
+}
+
+int integer_at_least(const Field& f, int lo) {
+  const int n = f.integer();
+  if (n < lo) f.fail("must be at least " + std::to_string(lo) + ", got " + std::to_string(n));
+  return n;
+}
+
+std::string quoted_list(std::initializer_list<std::string_view> names) {
+  std::string out;
+  for (std::string_view n : names) out += (out.empty() ? "\"" : ", \"") + std::string(n) + "\"";
+  return out;
+}
+
+// ---- top level and control ----
+
+PlaneMode read_plane(const Field& f) {
+  const std::string name = f.string();
+  if (name == "strain") return PlaneMode::Strain;
+  if (name == "stress") return PlaneMode::Stress;
+  f.fail("unknown plane mode \"" + name + "\" (known: " + quoted_list({"strain", "stress"}) +
+         ")");
+}
+
+std::vector<double> read_time_steps(const Field& f) {
+  if (!f.is_list()) return {positive_number(f)};
+  std::vector<double> steps;
+  for (const Field& step : f.elements(1, "a list of time steps must not be empty")) {
+    steps.push_back(positive_number(step));
+  }
+  return steps;
+}
+
+// The run length is given one way only, so that the two can never disagree.
+void read_run_length(const Field& control, ControlSettings& c) {
+  const bool has_steps = control.has("steps");
+  const bool has_end_time = control.has("end_time");
+  if (has_steps && has_end_time) {
+    control.fail("give either \"steps\" or \"end_time\", not both");
+  }
+  if (!has_steps && !has_end_time) {
+    control.fail("missing the run length: give \"steps\" (a number of steps) or \"end_time\" "
+                 "(seconds)");
+  }
+  if (has_steps) c.steps = integer_at_least(control.member("steps"), 1);
+  if (has_end_time) c.end_time = positive_number(control.member("end_time"));
+}
+
+RotationUpdate read_rotation_update(const Field& f) {
+  // The paper's treatments (issue 4) have names reserved now, so that scenes written for
+  // them get a clear "not yet" instead of "unknown".
+  static const std::initializer_list<std::string_view> kReserved = {
+      "second_order", "post_adjustment",        "sin_variable",   "local_frame",
+      "local_frame_as_printed", "finite_rotation"};
+  const std::string name = f.string();
+  if (name == "original") return RotationUpdate::Original;
+  for (std::string_view reserved : kReserved) {
+    if (name == reserved) f.fail("\"" + name + "\" is not implemented yet (issue 4)");
+  }
+  f.fail("unknown rotation update \"" + name + "\" (known: \"original\"; not implemented yet: " +
+         quoted_list(kReserved) + ")");
+}
+
+std::optional<double> read_penalty(const Field& f) {
+  if (f.is_string()) {
+    const std::string text = f.string();
+    if (text == "auto") return std::nullopt;
+    f.fail("expected a positive number (N/m) or \"auto\", got \"" + text + "\"");
+  }
+  return positive_number(f);
+}
+
+ControlSettings read_control(const Field& f) {
+  f.expect_keys({"time_step", "steps", "end_time", "max_displacement_ratio",
+                 "dynamic_coefficient", "rotation_update", "penalty", "output_every"});
+  ControlSettings c;
+  c.time_steps = read_time_steps(f.member("time_step"));
+  read_run_length(f, c);
+  if (auto g = f.optional_member("max_displacement_ratio")) {
+    c.max_displacement_ratio =
+        number_in_range(*g, 0.0, true, 1.0, false, "greater than 0 and at most 1");
+  }
+  if (auto g = f.optional_member("dynamic_coefficient")) {
+    c.dynamic_coefficient = number_in_range(*g, 0.0, false, 1.0, false, "between 0 and 1");
+  }
+  if (auto g = f.optional_member("rotation_update")) {
+    c.rotation_update = read_rotation_update(*g);
+  }
+  if (auto g = f.optional_member("penalty")) c.penalty = read_penalty(*g);
+  if (auto g = f.optional_member("output_every")) c.output_every = integer_at_least(*g, 1);
+  return c;
+}
+
+// ---- materials ----
+
+Material read_material(const std::string& name, const Field& f) {
+  f.expect_keys({"model", "density", "young", "poisson"});
+  const Field model = f.member("model");
+  if (model.string() != "elastic") {
+    model.fail("unknown material model \"" + model.string() + "\" (known models: \"elastic\")");
+  }
+  Material m;
+  m.name = name;
+  m.density = positive_number(f.member("density"));
+  m.young = positive_number(f.member("young"));
+  // The bounds keep the elastic matrix positive definite (bulk and shear moduli positive).
+  m.poisson = number_in_range(f.member("poisson"), -1.0, true, 0.5, true,
+                              "greater than -1 and less than 0.5");
+  return m;
+}
+
+std::vector<Material> read_materials(const Field& f) {
+  std::vector<Material> materials;
+  for (const auto& [name, value] : f.members()) materials.push_back(read_material(name, value));
+  if (materials.empty()) f.fail("define at least one material");
+  return materials;
+}
+
+int material_index(const Field& f, const std::vector<Material>& materials) {
+  const std::string name = f.string();
+  std::string known;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    if (materials[i].name == name) return static_cast<int>(i);
+    known += (known.empty() ? "\"" : ", \"") + materials[i].name + "\"";
+  }
+  f.fail("unknown material \"" + name + "\" (materials defined: " + known + ")");
+}
+
+// ---- block geometry ----
+
+double bbox_diagonal(const Polygon& poly) {
+  const Box box = bounding_box({poly});
+  return (box.max - box.min).norm();
+}
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Degeneracy tolerance relative to the polygon's bounding-box diagonal d: lengths <= 1e-12 d
+// and areas <= 1e-12 d^2 count as zero. Scale-free, far above rounding in the sums (~1e-16
+// relative) and far below any real block.
+constexpr double kRelativeTolerance = 1e-12;
+
+// A repeated vertex gives a zero-length edge; the common cause is closing the polygon by
+// repeating the first vertex, which gets its own hint.
+void check_no_repeated_vertex(const Field& f, const Polygon& poly, double diagonal) {
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    if ((poly[i] - poly[j]).norm() > kRelativeTolerance * diagonal) continue;
+    if (j == 0) {
+      f.fail("the last vertex repeats the first; list each corner once (the polygon is "
+             "closed automatically)");
+    }
+    f.fail("vertices " + std::to_string(i) + " and " + std::to_string(j) +
+           " are the same point; list each corner once");
+  }
+}
+
+// All vertices on one line: checked before self-intersection so that a flat polygon is
+// reported as having zero area rather than as overlapping edges.
+bool all_collinear(const Polygon& poly, double diagonal) {
+  std::size_t far = 0;
+  for (std::size_t i = 1; i < poly.size(); ++i) {
+    if ((poly[i] - poly[0]).norm() > (poly[far] - poly[0]).norm()) far = i;
+  }
+  const Vec2 axis = poly[far] - poly[0];
+  return std::all_of(poly.begin(), poly.end(), [&](const Vec2& p) {
+    return std::abs(cross(axis, p - poly[0])) <= kRelativeTolerance * diagonal * diagonal;
+  });
+}
+
+// Order matters: a self-crossing polygon can have any signed area (a figure eight has zero),
+// so crossing is checked before area and orientation.
+void check_polygon_shape(const Field& f, const Polygon& poly) {
+  const double diagonal = bbox_diagonal(poly);
+  check_no_repeated_vertex(f, poly, diagonal);
+  if (all_collinear(poly, diagonal)) {
+    f.fail("polygon has zero area: all its vertices lie on one line");
+  }
+  if (is_self_intersecting(poly)) {
+    f.fail("polygon crosses itself (two of its edges cross or touch); list the vertices in "
+           "order around the boundary");
+  }
+  const double area = signed_area(poly);
+  if (std::abs(area) <= kRelativeTolerance * diagonal * diagonal) {
+    f.fail("polygon has zero area (" + format_number(area) + " m^2)");
+  }
+  if (area < 0.0) f.fail("polygon is clockwise; list the vertices counter-clockwise");
+}
+
+Polygon read_polygon(const Field& f) {
+  Polygon poly;
+  for (const Field& vertex : f.elements(3, "a polygon needs at least 3 vertices")) {
+    poly.push_back(vertex.vec2("[x, y]"));
+  }
+  check_polygon_shape(f, poly);
+  return poly;
+}
+
+// ---- blocks, pins, loads ----
+
+BlockSpec read_block(const Field& f, const std::vector<Material>& materials) {
+  f.expect_keys({"vertices", "material", "fixed", "velocity", "initial_stress"});
+  BlockSpec b;
+  b.vertices = read_polygon(f.member("vertices"));
+  b.material = material_index(f.member("material"), materials);
+  if (auto g = f.optional_member("fixed")) b.fixed = g->boolean();
+  if (auto g = f.optional_member("velocity")) b.velocity = g->vec3("[vx, vy, omega]");
+  if (auto g = f.optional_member("initial_stress")) {
+    b.initial_stress = g->vec3("[sxx, syy, sxy]");
+  }
+  return b;
+}
+
+// The first block (in list order) containing the point; boundary points count as inside,
+// so a pin on a shared edge goes to the block listed first.
+int block_containing(const Field& point_field, const Vec2& p,
+                     const std::vector<BlockSpec>& blocks) {
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    if (contains_point(blocks[i].vertices, p)) return static_cast<int>(i);
+  }
+  point_field.fail("point (" + format_number(p.x()) + ", " + format_number(p.y()) +
+                   ") is outside every block; it must lie inside or on the boundary of one");
+}
+
+PinSpec read_pin(const Field& f, const std::vector<BlockSpec>& blocks) {
+  f.expect_keys({"point"});
+  PinSpec pin;
+  const Field point = f.member("point");
+  pin.point = point.vec2("[x, y]");
+  pin.block = block_containing(point, pin.point, blocks);
+  return pin;
+}
+
+PointLoadSpec read_point_load(const Field& f, const std::vector<BlockSpec>& blocks) {
+  f.expect_keys({"point", "force"});
+  PointLoadSpec load;
+  const Field point = f.member("point");
+  load.point = point.vec2("[x, y]");
+  load.force = f.member("force").vec2("[fx, fy]");
+  load.block = block_containing(point, load.point, blocks);
+  return load;
+}
+
+Scene read_scene(const Field& root, const std::string& source) {
+  root.expect_keys({"description", "gravity", "plane", "control", "materials", "blocks",
+                    "pins", "point_loads"});
+  Scene scene;
+  scene.source = source;
+  if (auto g = root.optional_member("description")) g->string();  // free text, checked only
+  if (auto g = root.optional_member("gravity")) scene.gravity = g->vec2("[gx, gy]");
+  if (auto g = root.optional_member("plane")) scene.plane = read_plane(*g);
+  scene.control = read_control(root.member("control"));
+  scene.materials = read_materials(root.member("materials"));
+  for (const Field& b : root.member("blocks").elements(1, "list at least one block")) {
+    scene.blocks.push_back(read_block(b, scene.materials));
+  }
+  if (auto pins = root.optional_member("pins")) {
+    for (const Field& p : pins->elements(0, "")) scene.pins.push_back(read_pin(p, scene.blocks));
+  }
+  if (auto loads = root.optional_member("point_loads")) {
+    for (const Field& p : loads->elements(0, "")) {
+      scene.point_loads.push_back(read_point_load(p, scene.blocks));
+    }
+  }
+  return scene;
+}
+
+}  // namespace
+
+Scene parse_scene_text(const std::string& text, const std::string& source) {
+  const nlohmann::json document = input::parse_strict_json(text, source);
+  return read_scene(Field(document, "", source), source);
+}
+
+Scene read_scene_file(const std::string& path) {
+  const std::string name = path.empty() ? "(empty file name)" : path;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(name + ": cannot open: it is a directory, not a scene file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(name + ": cannot open file (" + std::strerror(errno) + ")");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(name + ": cannot read file (" + std::strerror(errno) + ")");
+  return parse_scene_text(text.str(), path);
+}
+
+}  // namespace dda

@@ -1,0 +1,514 @@
+// Scene input (io/scene_reader): a valid scene lands in the Scene struct field by field, and
+// every kind of bad input is rejected with one message naming the file and the place in it,
+// both by the reader and by the real command line (`dda run FILE` exits with code 2).
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/json_input.hpp"
+#include "io/scene_reader.hpp"
+#include "kinematics/polygon.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A valid scene that uses every key with a non-default value. Each bad scene below is this
+// text with one edit, so that each test breaks exactly one rule. Block 1 is a triangle
+// resting on block 0; the point load sits on their shared edge.
+const std::string kValidScene = R"json({
+  "description": "every key, non-default values",
+  "gravity": [0.5, -9.0],
+  "plane": "stress",
+  "control": {"time_step": [0.01, 0.02], "steps": 40, "max_displacement_ratio": 0.005, "dynamic_coefficient": 0.5, "rotation_update": "original", "penalty": 2.5e10, "output_every": 5},
+  "materials": {
+    "rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25},
+    "clay": {"model": "elastic", "density": 1800, "young": 5e7, "poisson": 0.4}
+  },
+  "blocks": [
+    {"vertices": [[0, 0], [4, 0], [4, 1], [0, 1]], "material": "rock", "fixed": true},
+    {"vertices": [[1, 1], [2, 1], [1.5, 2]], "material": "clay", "velocity": [0.1, -0.2, 0.3], "initial_stress": [-1e5, -2e5, 3e4]}
+  ],
+  "pins": [{"point": [1.5, 1.5]}],
+  "point_loads": [{"point": [1, 1], "force": [10, -20]}]
+}
+)json";
+
+// `text` with the one occurrence of `from` replaced by `to`. More than one occurrence, or
+// none, is a mistake in the test itself.
+std::string edit(const std::string& text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  if (at == std::string::npos || text.find(from, at + 1) != std::string::npos) {
+    throw std::logic_error("test edit: \"" + from + "\" must occur exactly once");
+  }
+  return text.substr(0, at) + to + text.substr(at + from.size());
+}
+
+// `text` (a JSON document) with the value at `pointer` removed, or replaced by `value`.
+// Used where the layout of the text does not matter to the message.
+std::string without(const std::string& text, const std::string& pointer) {
+  nlohmann::json document = nlohmann::json::parse(text);
+  const nlohmann::json::json_pointer at(pointer);
+  document[at.parent_pointer()].erase(at.back());
+  return document.dump(2);
+}
+
+std::string with(const std::string& text, const std::string& pointer,
+                 const nlohmann::json& value) {
+  nlohmann::json document = nlohmann::json::parse(text);
+  document[nlohmann::json::json_pointer(pointer)] = value;
+  return document.dump(2);
+}
+
+// A bad scene, where its error must be reported (the place, printed right after the file
+// name) and words the message must contain.
+struct BadScene {
+  std::string name;
+  std::string text;
+  std::string place;
+  std::vector<std::string> words;
+};
+
+std::vector<BadScene> bad_scenes() {
+  const std::string& s = kValidScene;
+  const std::string triangle = "[[1, 1], [2, 1], [1.5, 2]]";
+  return {
+      // ---- not JSON, or not the right kind of document ----
+      // The comma after "stress" (line 4) is missing; nlohmann notices at the end of the next
+      // token, the key "control" (line 5, columns 3 to 11), and reports that position.
+      {"invalid JSON", edit(s, "stress\",", "stress\""), "line 5, column 11", {"invalid JSON"}},
+      // JSON has no NaN; the position is the N.
+      {"NaN literal (not JSON)", edit(s, "\"young\": 1e9", "\"young\": NaN"),
+       "line 7, column 60", {"invalid JSON"}},
+      {"duplicate key", edit(s, "\"plane\": \"stress\",", "\"plane\": \"stress\", \"plane\": \"strain\","),
+       "plane", {"duplicate key"}},
+      {"document is a list", "[1, 2]\n", "top level", {"expected an object", "list"}},
+      {"empty file", "", "line 1, column 1", {"invalid JSON", "end of input"}},
+      // ---- wrong types ----
+      {"number expected", edit(s, "\"young\": 1e9", "\"young\": \"1e9\""), "materials.rock.young",
+       {"expected a number", "a string (\"1e9\")"}},
+      {"list expected", edit(s, "[0.5, -9.0]", "9.81"), "gravity", {"expected a list [gx, gy]"}},
+      {"object expected", edit(s, "{\"point\": [1.5, 1.5]}", "[1.5, 1.5]"), "pins[0]",
+       {"expected an object", "a list"}},
+      {"string expected", edit(s, "\"material\": \"clay\"", "\"material\": 2"),
+       "blocks[1].material", {"expected a string", "the number 2"}},
+      {"bool expected", edit(s, "\"fixed\": true", "\"fixed\": \"yes\""), "blocks[0].fixed",
+       {"expected true or false"}},
+      {"integer expected", edit(s, "\"steps\": 40", "\"steps\": 40.5"), "control.steps",
+       {"expected an integer", "40.5"}},
+      {"list of 3 expected", edit(s, "[0.1, -0.2, 0.3]", "[0.1, -0.2]"), "blocks[1].velocity",
+       {"expected a list of 3 numbers [vx, vy, omega]"}},
+      {"vertex coordinate not a number", edit(s, "[4, 1]", "[4, \"1\"]"),
+       "blocks[0].vertices[2][1]", {"expected a number"}},
+      // ---- unknown keys (typos must not be ignored) ----
+      {"unknown top-level key", edit(s, "\"plane\":", "\"plain\":"), "plain",
+       {"unknown key", "did you mean \"plane\"", "known keys: description, gravity"}},
+      {"unknown control key", edit(s, "\"time_step\":", "\"time_stepp\":"), "control.time_stepp",
+       {"unknown key", "did you mean \"time_step\"", "output_every"}},
+      {"unknown block key", edit(s, "\"fixed\": true", "\"fixed\": true, \"colour\": \"red\""),
+       "blocks[0].colour", {"unknown key", "known keys: vertices, material"}},
+      {"unknown material key", edit(s, "\"poisson\": 0.25}", "\"poisson\": 0.25, \"cohesion\": 1}"),
+       "materials.rock.cohesion", {"unknown key"}},
+      {"unknown pin key", edit(s, "{\"point\": [1.5, 1.5]}", "{\"point\": [1.5, 1.5], \"block\": 1}"),
+       "pins[0].block", {"unknown key", "known keys: point"}},
+      // ---- missing required fields ----
+      {"missing control", without(s, "/control"), "control", {"required key is missing"}},
+      {"missing materials", without(s, "/materials"), "materials", {"required key is missing"}},
+      {"missing blocks", without(s, "/blocks"), "blocks", {"required key is missing"}},
+      {"missing time_step", without(s, "/control/time_step"), "control.time_step",
+       {"required key is missing"}},
+      {"missing vertices", without(s, "/blocks/1/vertices"), "blocks[1].vertices",
+       {"required key is missing"}},
+      {"missing block material", without(s, "/blocks/1/material"), "blocks[1].material",
+       {"required key is missing"}},
+      {"missing model", without(s, "/materials/clay/model"), "materials.clay.model",
+       {"required key is missing"}},
+      {"missing density", without(s, "/materials/clay/density"), "materials.clay.density",
+       {"required key is missing"}},
+      {"missing young", without(s, "/materials/clay/young"), "materials.clay.young",
+       {"required key is missing"}},
+      {"missing poisson", without(s, "/materials/clay/poisson"), "materials.clay.poisson",
+       {"required key is missing"}},
+      {"missing pin point", without(s, "/pins/0/point"), "pins[0].point",
+       {"required key is missing"}},
+      {"missing force", without(s, "/point_loads/0/force"), "point_loads[0].force",
+       {"required key is missing"}},
+      {"empty block list", with(s, "/blocks", nlohmann::json::array()), "blocks",
+       {"at least one block", "got 0"}},
+      {"no materials", with(s, "/materials", nlohmann::json::object()), "materials",
+       {"at least one material"}},
+      // ---- polygons ----
+      {"clockwise polygon", edit(s, triangle, "[[1, 1], [1.5, 2], [2, 1]]"), "blocks[1].vertices",
+       {"clockwise", "counter-clockwise"}},
+      {"self-crossing polygon", edit(s, triangle, "[[1, 1], [2, 2], [2, 1], [1, 2]]"),
+       "blocks[1].vertices", {"crosses itself"}},
+      {"fewer than 3 vertices", edit(s, triangle, "[[1, 1], [2, 1]]"), "blocks[1].vertices",
+       {"at least 3 vertices", "got 2"}},
+      {"zero area (collinear)", edit(s, triangle, "[[1, 1], [2, 1], [3, 1]]"),
+       "blocks[1].vertices", {"zero area"}},
+      {"first vertex repeated at the end", edit(s, triangle, "[[1, 1], [2, 1], [1.5, 2], [1, 1]]"),
+       "blocks[1].vertices", {"repeats the first"}},
+      // ---- numbers ----
+      // nlohmann rejects literals that overflow a double; the reader reports them at their
+      // place, with the line and the column where the literal starts.
+      {"infinite number", edit(s, "\"young\": 1e9", "\"young\": 1e999"), "materials.rock.young",
+       {"1e999", "too large", "line 7, column 60", "finite"}},
+      {"infinite list element", edit(s, "[0.5, -9.0]", "[0.5, -1e999]"), "gravity[1]",
+       {"too large", "line 3, column 20"}},
+      {"density zero", edit(s, "\"density\": 2700", "\"density\": 0"), "materials.rock.density",
+       {"must be positive, got 0"}},
+      {"young negative", edit(s, "\"young\": 1e9", "\"young\": -1"), "materials.rock.young",
+       {"must be positive, got -1"}},
+      {"poisson 0.5", edit(s, "\"poisson\": 0.25", "\"poisson\": 0.5"), "materials.rock.poisson",
+       {"greater than -1 and less than 0.5", "got 0.5"}},
+      {"poisson -1", edit(s, "\"poisson\": 0.4", "\"poisson\": -1"), "materials.clay.poisson",
+       {"greater than -1 and less than 0.5", "got -1"}},
+      {"time step zero", edit(s, "[0.01, 0.02]", "[0.01, 0]"), "control.time_step[1]",
+       {"must be positive"}},
+      {"time step list empty", edit(s, "[0.01, 0.02]", "[]"), "control.time_step",
+       {"must not be empty"}},
+      {"steps zero", edit(s, "\"steps\": 40", "\"steps\": 0"), "control.steps",
+       {"at least 1, got 0"}},
+      {"end time negative", edit(s, "\"steps\": 40", "\"end_time\": -2"), "control.end_time",
+       {"must be positive, got -2"}},
+      {"displacement ratio above 1", edit(s, "0.005", "1.5"), "control.max_displacement_ratio",
+       {"greater than 0 and at most 1", "got 1.5"}},
+      {"dynamic coefficient below 0", edit(s, "\"dynamic_coefficient\": 0.5", "\"dynamic_coefficient\": -0.1"),
+       "control.dynamic_coefficient", {"between 0 and 1"}},
+      {"output_every zero", edit(s, "\"output_every\": 5", "\"output_every\": 0"),
+       "control.output_every", {"at least 1"}},
+      {"penalty negative", edit(s, "2.5e10", "-5"), "control.penalty", {"must be positive"}},
+      {"penalty unknown word", edit(s, "2.5e10", "\"big\""), "control.penalty",
+       {"positive number", "\"auto\""}},
+      // ---- run length ----
+      {"both steps and end_time", edit(s, "\"steps\": 40", "\"steps\": 40, \"end_time\": 1"),
+       "control", {"not both", "steps", "end_time"}},
+      {"neither steps nor end_time", edit(s, "\"steps\": 40, ", ""), "control",
+       {"steps", "end_time"}},
+      // ---- names ----
+      {"unknown material", edit(s, "\"material\": \"clay\"", "\"material\": \"granite\""),
+       "blocks[1].material", {"unknown material \"granite\"", "\"clay\", \"rock\""}},
+      {"unknown material model", edit(s, "\"model\": \"elastic\", \"density\": 1800",
+                                      "\"model\": \"plastic\", \"density\": 1800"),
+       "materials.clay.model", {"unknown material model \"plastic\"", "\"elastic\""}},
+      {"unknown plane mode", edit(s, "\"plane\": \"stress\"", "\"plane\": \"3d\""), "plane",
+       {"unknown plane mode \"3d\"", "\"strain\", \"stress\""}},
+      {"reserved rotation update", edit(s, "\"original\"", "\"second_order\""),
+       "control.rotation_update", {"\"second_order\" is not implemented yet (issue 4)"}},
+      {"unknown rotation update", edit(s, "\"original\"", "\"quaternion\""),
+       "control.rotation_update", {"unknown rotation update \"quaternion\"", "\"original\"",
+                                   "\"finite_rotation\""}},
+      // ---- pins and loads ----
+      {"pin outside every block", edit(s, "{\"point\": [1.5, 1.5]}", "{\"point\": [10, 10]}"),
+       "pins[0].point", {"(10, 10) is outside every block"}},
+      {"point load outside every block", edit(s, "\"point\": [1, 1]", "\"point\": [-5, 3]"),
+       "point_loads[0].point", {"(-5, 3) is outside every block"}},
+  };
+}
+
+// Every message starts with the source name, then the place.
+std::string reader_error(const std::string& text, const std::string& source) {
+  try {
+    (void)dda::parse_scene_text(text, source);
+  } catch (const dda::InputError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+// ---- running the command line ----
+
+struct CommandResult {
+  int exit_code = -1;  // -1 when the program did not exit normally (crashed)
+  std::string output;  // stdout and stderr together
+};
+
+CommandResult run_command(const std::string& command) {
+  CommandResult result;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) throw std::runtime_error("popen failed: " + command);
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
+  const int status = pclose(pipe);
+  if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  return result;
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// A fresh directory for this test process's files, removed at the end.
+struct TempDir {
+  fs::path path;
+  TempDir() : path(fs::temp_directory_path() / ("dda_scene_input_" + std::to_string(getpid()))) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+};
+
+void write_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+CommandResult run_dda(const fs::path& scene, const fs::path& out_dir) {
+  return run_command(shell_quote(DDA_EXE) + " run " + shell_quote(scene.string()) + " --out " +
+                     shell_quote(out_dir.string()));
+}
+
+std::string expected_prefix(const std::string& source, const std::string& place) {
+  return source + ": " + place + ": ";
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------
+// Valid input
+
+// Numbers are compared exactly: each is read from a decimal literal by the same conversion
+// the test's literal goes through, so the doubles are identical.
+TEST_CASE("a valid scene lands in the Scene struct field by field", "[scene][input]") {
+  const dda::Scene scene = dda::parse_scene_text(kValidScene, "valid.json");
+  CHECK(scene.source == "valid.json");
+  CHECK(scene.gravity == dda::Vec2(0.5, -9.0));
+  CHECK(scene.plane == dda::PlaneMode::Stress);
+
+  const dda::ControlSettings& c = scene.control;
+  CHECK(c.time_steps == std::vector<double>{0.01, 0.02});
+  REQUIRE(c.steps.has_value());
+  CHECK(*c.steps == 40);
+  CHECK_FALSE(c.end_time.has_value());
+  CHECK(c.max_displacement_ratio == 0.005);
+  CHECK(c.dynamic_coefficient == 0.5);
+  CHECK(c.rotation_update == dda::RotationUpdate::Original);
+  REQUIRE(c.penalty.has_value());
+  CHECK(*c.penalty == 2.5e10);
+  CHECK(c.output_every == 5);
+
+  REQUIRE(scene.materials.size() == 2);
+  REQUIRE(scene.blocks.size() == 2);
+  const dda::Material& rock = scene.materials[scene.blocks[0].material];
+  const dda::Material& clay = scene.materials[scene.blocks[1].material];
+  CHECK(rock.name == "rock");
+  CHECK(rock.density == 2700.0);
+  CHECK(rock.young == 1e9);
+  CHECK(rock.poisson == 0.25);
+  CHECK(clay.name == "clay");
+  CHECK(clay.density == 1800.0);
+  CHECK(clay.young == 5e7);
+  CHECK(clay.poisson == 0.4);
+
+  const dda::BlockSpec& base = scene.blocks[0];
+  CHECK(base.vertices == dda::Polygon{{0, 0}, {4, 0}, {4, 1}, {0, 1}});
+  CHECK(base.fixed);
+  CHECK(base.velocity == dda::Vec3::Zero());
+  CHECK(base.initial_stress == dda::Vec3::Zero());
+  const dda::BlockSpec& top = scene.blocks[1];
+  CHECK(top.vertices == dda::Polygon{{1, 1}, {2, 1}, {1.5, 2}});
+  CHECK_FALSE(top.fixed);
+  CHECK(top.velocity == dda::Vec3(0.1, -0.2, 0.3));
+  CHECK(top.initial_stress == dda::Vec3(-1e5, -2e5, 3e4));
+
+  REQUIRE(scene.pins.size() == 1);
+  CHECK(scene.pins[0].point == dda::Vec2(1.5, 1.5));
+  CHECK(scene.pins[0].block == 1);
+  REQUIRE(scene.point_loads.size() == 1);
+  CHECK(scene.point_loads[0].point == dda::Vec2(1, 1));
+  CHECK(scene.point_loads[0].force == dda::Vec2(10, -20));
+  // (1, 1) is on the edge both blocks share: the first block in the list takes it.
+  CHECK(scene.point_loads[0].block == 0);
+}
+
+TEST_CASE("optional keys take their documented defaults", "[scene][input]") {
+  const std::string minimal = R"json({
+    "control": {"time_step": 0.01, "end_time": 2.5},
+    "materials": {"rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}},
+    "blocks": [{"vertices": [[0, 0], [1, 0], [0, 1]], "material": "rock"}]
+  })json";
+  const dda::Scene scene = dda::parse_scene_text(minimal, "minimal.json");
+  CHECK(scene.gravity == dda::Vec2(0.0, -9.81));
+  CHECK(scene.plane == dda::PlaneMode::Strain);
+  CHECK(scene.control.time_steps == std::vector<double>{0.01});
+  CHECK_FALSE(scene.control.steps.has_value());
+  REQUIRE(scene.control.end_time.has_value());
+  CHECK(*scene.control.end_time == 2.5);
+  CHECK(scene.control.max_displacement_ratio == 0.01);
+  CHECK(scene.control.dynamic_coefficient == 1.0);
+  CHECK(scene.control.rotation_update == dda::RotationUpdate::Original);
+  CHECK_FALSE(scene.control.penalty.has_value());  // "auto"
+  CHECK(scene.control.output_every == 10);
+  CHECK_FALSE(scene.blocks[0].fixed);
+  CHECK(scene.blocks[0].velocity == dda::Vec3::Zero());
+  CHECK(scene.blocks[0].initial_stress == dda::Vec3::Zero());
+  CHECK(scene.pins.empty());
+  CHECK(scene.point_loads.empty());
+}
+
+TEST_CASE("penalty auto and whole numbers written as floats are accepted", "[scene][input]") {
+  std::string text = edit(kValidScene, "2.5e10", "\"auto\"");
+  text = edit(text, "\"steps\": 40", "\"steps\": 4e1");
+  const dda::Scene scene = dda::parse_scene_text(text, "auto.json");
+  CHECK_FALSE(scene.control.penalty.has_value());
+  CHECK(scene.control.steps == 40);
+}
+
+TEST_CASE("read_scene_file names the scene by its path", "[scene][input]") {
+  TempDir dir;
+  const fs::path file = dir.path / "scene.json";
+  write_file(file, kValidScene);
+  CHECK(dda::read_scene_file(file.string()).source == file.string());
+}
+
+// ---------------------------------------------------------------------------------------
+// Bad input, through the reader
+
+TEST_CASE("every bad scene is rejected by the reader with its place and reason",
+          "[scene][input]") {
+  for (const BadScene& bad : bad_scenes()) {
+    INFO("case: " << bad.name);
+    const std::string message = reader_error(bad.text, "bad.json");
+    INFO("message: " << message);
+    CHECK(message.rfind(expected_prefix("bad.json", bad.place), 0) == 0);
+    for (const std::string& word : bad.words) CHECK(message.find(word) != std::string::npos);
+  }
+}
+
+TEST_CASE("distinct bad scenes give distinct messages", "[scene][input]") {
+  std::vector<std::string> messages;
+  for (const BadScene& bad : bad_scenes()) messages.push_back(reader_error(bad.text, "bad.json"));
+  std::sort(messages.begin(), messages.end());
+  const auto repeated = std::adjacent_find(messages.begin(), messages.end());
+  INFO("repeated message: " << (repeated == messages.end() ? "" : *repeated));
+  CHECK(repeated == messages.end());
+}
+
+TEST_CASE("a sliver far thinner than the block's size counts as zero area", "[scene][input]") {
+  // Height 1e-13 over a base of 1: |area| = 5e-14 <= 1e-12 x diagonal^2 (about 1.25), the
+  // reader's zero-area tolerance; a height of 1e-6 is a (thin) real block.
+  const std::string triangle = "[[1, 1], [2, 1], [1.5, 2]]";
+  const std::string sliver = edit(kValidScene, triangle, "[[1, 1], [2, 1], [1.5, 1.0000000000001]]");
+  CHECK_THAT(reader_error(sliver, "bad.json"),
+             Catch::StartsWith("bad.json: blocks[1].vertices: ") && Catch::Contains("zero area"));
+  const std::string thin = edit(kValidScene, triangle, "[[1, 1], [2, 1], [1.5, 1.000001]]");
+  CHECK_NOTHROW(dda::parse_scene_text(edit(thin, "{\"point\": [1.5, 1.5]}", "{\"point\": [1.5, 1]}"),
+                                      "thin.json"));
+}
+
+TEST_CASE("an unreadable scene file is an input error naming the path", "[scene][input]") {
+  TempDir dir;
+  const std::string missing = (dir.path / "no_such_scene.json").string();
+  CHECK_THROWS_WITH(dda::read_scene_file(missing),
+                    Catch::StartsWith(missing + ": cannot open file") &&
+                        Catch::Contains("No such file"));
+  CHECK_THROWS_WITH(dda::read_scene_file(dir.path.string()),
+                    Catch::StartsWith(dir.path.string() + ": cannot open") &&
+                        Catch::Contains("directory"));
+}
+
+TEST_CASE("JSON error positions are lines and columns as an editor shows them",
+          "[scene][input]") {
+  // Byte positions are 1-based (nlohmann's convention): byte 1 is the first character.
+  const std::string text = "ab\ncd\n\xC3\xA9x";  // line 3 starts with a two-byte character
+  CHECK(dda::input::position_of_byte(text, 1).line == 1);
+  CHECK(dda::input::position_of_byte(text, 1).column == 1);
+  CHECK(dda::input::position_of_byte(text, 5).line == 2);
+  CHECK(dda::input::position_of_byte(text, 5).column == 2);
+  CHECK(dda::input::position_of_byte(text, 9).line == 3);
+  CHECK(dda::input::position_of_byte(text, 9).column == 2);  // the 'x' after the e-acute
+}
+
+// ---------------------------------------------------------------------------------------
+// Bad input, through the command line: exit code 2 and the message on stderr
+
+TEST_CASE("dda run exits with code 2 and names the place for every bad scene", "[scene][cli]") {
+  TempDir dir;
+  int index = 0;
+  for (const BadScene& bad : bad_scenes()) {
+    const fs::path file = dir.path / ("bad_" + std::to_string(index++) + ".json");
+    write_file(file, bad.text);
+    const CommandResult result = run_dda(file, dir.path / "out");
+    INFO("case: " << bad.name);
+    INFO("output: " << result.output);
+    CHECK(result.exit_code == 2);
+    const std::string prefix = "dda: error: " + expected_prefix(file.string(), bad.place);
+    CHECK(result.output.find(prefix) != std::string::npos);
+    for (const std::string& word : bad.words) CHECK(result.output.find(word) != std::string::npos);
+  }
+}
+
+TEST_CASE("dda run exits with code 2 when the scene file cannot be opened", "[scene][cli]") {
+  TempDir dir;
+  const fs::path missing = dir.path / "no_such_scene.json";
+  const CommandResult result = run_dda(missing, dir.path / "out");
+  INFO("output: " << result.output);
+  CHECK(result.exit_code == 2);
+  CHECK(result.output.find("dda: error: " + missing.string() + ": cannot open file") !=
+        std::string::npos);
+
+  const CommandResult on_dir = run_dda(dir.path, dir.path / "out");
+  INFO("output: " << on_dir.output);
+  CHECK(on_dir.exit_code == 2);
+  CHECK(on_dir.output.find("is a directory") != std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------
+// The shipped scenes
+
+TEST_CASE("the built-in default scene parses and is scenes/default.json", "[scene][input]") {
+  const dda::Scene scene = dda::parse_scene_text(dda::default_scene_text(), dda::kDefaultSceneName);
+  CHECK(scene.source == dda::kDefaultSceneName);
+  REQUIRE(scene.blocks.size() == 2);
+  REQUIRE(scene.pins.size() == 1);
+  CHECK(scene.pins[0].block == 0);  // the pendulum
+  CHECK(scene.blocks[1].velocity == dda::Vec3(1, 3, 2));
+  CHECK(scene.control.time_steps == std::vector<double>{0.005});
+  CHECK(scene.control.end_time == 3.0);
+
+  // The two blocks do not overlap: their bounding boxes are apart.
+  const dda::Box pendulum = dda::bounding_box({scene.blocks[0].vertices});
+  const dda::Box octagon = dda::bounding_box({scene.blocks[1].vertices});
+  CHECK(octagon.max.x() < pendulum.min.x());
+
+  // Same content as the shipped file (compared as JSON, so layout does not matter).
+  const std::string file = read_file(fs::path(DDA_SOURCE_DIR) / "scenes" / "default.json");
+  CHECK(nlohmann::json::parse(file) == nlohmann::json::parse(dda::default_scene_text()));
+}
+
+TEST_CASE("every scene in scenes/ parses", "[scene][input]") {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(DDA_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    INFO("scene: " << entry.path());
+    CHECK_NOTHROW(dda::read_scene_file(entry.path().string()));
+    ++count;
+  }
+  CHECK(count >= 4);
+}
+
