@@ -30,6 +30,10 @@ double max_vertex_displacement(const World& world, const Eigen::VectorXd& d) {
 }
 
 void update_configuration(World& world, const Eigen::VectorXd& d) {
+  switch (world.control.rotation_update) {
+    case RotationUpdate::Original:
+      break;  // the only treatment so far; the paper's others arrive with issue 4
+  }
   const LinearT t = shi_t();
   // Pins and loads first: they need each block's reference point from the step's start.
   for (Pin& pin : world.pins) {
