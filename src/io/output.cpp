@@ -95,8 +95,13 @@ void write_points_and_polys(std::string& s, const World& w) {
   std::string connectivity, offsets;
   int next = 0;
   for (const Block& b : w.blocks) {
-    for (std::size_t k = 0; k < b.vertices.size(); ++k) connectivity += " " + std::to_string(next++);
-    offsets += " " + std::to_string(next);
+    // Appended piecewise: GCC 12 warns (-Wrestrict, a false positive) on " " + to_string.
+    for (std::size_t k = 0; k < b.vertices.size(); ++k) {
+      connectivity += ' ';
+      connectivity += std::to_string(next++);
+    }
+    offsets += ' ';
+    offsets += std::to_string(next);
   }
   s += "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n         " +
        connectivity + "\n        </DataArray>\n";

@@ -14,6 +14,12 @@ struct RunStats {
   int cut_steps = 0;       // attempts thrown away by the displacement-ratio control
   long iterations = 0;     // linear solves (assemble + solve passes) in all
   double wall_time_s = 0;  // whole run, seconds
+  long open_close_total = 0;  // open-close iterations of accepted steps, summed
+  int open_close_max = 0;     // the most any accepted step needed
+  long contacts_total = 0;    // closed contacts at the end of each step, summed
+  int contacts_max = 0;
+  int contacts_final = 0;     // closed contacts at the end of the run
+  int penalty_raises = 0;     // times the penalty was doubled to respect allowed_penetration
   bool diverged = false;
   std::string message;     // why the run stopped early, empty otherwise
 };

@@ -23,6 +23,23 @@ struct Material {
   double poisson = 0.0;  // (-1, 0.5)
 };
 
+// Mohr-Coulomb joint between blocks (Shi 1988): friction, cohesion and tensile strength.
+// Cohesion and tensile strength act only on contacts that exist (closed) at the start; once
+// such a bonded contact fails in tension or shear it is broken for good.
+struct JointMaterial {
+  std::string name;
+  double friction_angle = 0.0;    // degrees, [0, 90)
+  double cohesion = 0.0;          // Pa, >= 0
+  double tensile_strength = 0.0;  // Pa, >= 0
+};
+
+// A pair of blocks whose contacts use a named joint material instead of "default".
+struct JointSpec {
+  int block_a = -1;
+  int block_b = -1;
+  int material = 0;  // index into Scene::joint_materials
+};
+
 struct BlockSpec {
   Polygon vertices;              // counter-clockwise, simple, non-zero area
   int material = 0;              // index into Scene::materials
@@ -62,6 +79,12 @@ struct ControlSettings {
   std::optional<double> penalty;
   // Write history rows and a VTK frame every this many steps (and at the start and end).
   int output_every = 10;
+  // Open-close iterations allowed per step before the step is cut (dt x 0.3) and redone
+  // (Shi's usual limit; verification catalogue). Range >= 2.
+  int max_open_close = 8;
+  // Largest penetration allowed at a contact after a step (m); nullopt means "auto":
+  // 4e-4 x w0 (Shi's usual value). A step exceeding it is cut and redone.
+  std::optional<double> allowed_penetration;
 };
 
 struct Scene {
@@ -70,9 +93,14 @@ struct Scene {
   PlaneMode plane = PlaneMode::Strain;
   ControlSettings control;
   std::vector<Material> materials;
+  // Joint materials; index 0 is always "default", used by every pair not in `joints`.
+  std::vector<JointMaterial> joint_materials{JointMaterial{"default", 0.0, 0.0, 0.0}};
+  std::vector<JointSpec> joints;
   std::vector<BlockSpec> blocks;
   std::vector<PinSpec> pins;
   std::vector<PointLoadSpec> point_loads;
+  // Things worth telling the user that do not stop the run (e.g. an unused joint material).
+  std::vector<std::string> warnings;
 };
 
 }  // namespace dda

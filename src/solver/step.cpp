@@ -6,15 +6,24 @@
 
 #include "solver/assembly.hpp"
 #include "solver/configuration_update.hpp"
+#include "solver/contact_assembly.hpp"
+#include "solver/contact_detection.hpp"
 
 namespace dda {
 namespace {
 
-// A cut step retries with dt scaled by 0.9 * allowed / moved, kept within [0.1, 0.9]:
-// the step's motion is roughly proportional to dt, so one cut usually suffices.
+// A step whose motion exceeds the displacement ratio retries with dt scaled by
+// 0.9 * allowed / moved, kept within [0.1, 0.9]: the motion is roughly proportional to dt,
+// so one cut usually suffices.
 constexpr double kCutSafety = 0.9;
 constexpr double kCutMin = 0.1;
 constexpr double kCutMax = 0.9;
+// Shi's cut when the open-close loop does not settle, or a contact penetrates too far.
+constexpr double kContactCut = 0.3;
+// Penetration cuts per step before the penalty is doubled instead (a static penetration
+// does not shrink with dt), and how often the penalty may be doubled in a run.
+constexpr int kPenetrationCutsBeforeRaise = 3;
+constexpr int kMaxPenaltyRaises = 10;
 // Below this share of the scheduled step the run is declared diverged.
 constexpr double kSmallestStepShare = 1e-9;
 // Times closer than this share of a step count as equal (end_time reached).
@@ -37,6 +46,21 @@ std::string describe_failure(const World& world, const std::string& what) {
   return out.str();
 }
 
+int closed_contacts(const std::vector<Contact>& contacts) {
+  return static_cast<int>(std::count_if(contacts.begin(), contacts.end(), [](const Contact& c) {
+    return c.mode != ContactMode::Open;
+  }));
+}
+
+void count_step(const StepWorkspace& ws, int open_close, RunStats& stats) {
+  stats.open_close_total += open_close;
+  stats.open_close_max = std::max(stats.open_close_max, open_close);
+  const int closed = closed_contacts(ws.contacts);
+  stats.contacts_total += closed;
+  stats.contacts_max = std::max(stats.contacts_max, closed);
+  stats.contacts_final = closed;
+}
+
 }  // namespace
 
 double scheduled_time_step(const World& world) {
@@ -54,40 +78,80 @@ bool is_finished(const World& world) {
 }
 
 StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
-  // 1. Choose dt and build the step context.
+  // 1. Choose dt.
   double dt = scheduled_time_step(world);
-  for (int attempt = 0;; ++attempt) {
-    const StepContext ctx = make_step_context(world, dt, attempt);
+  // 2. Contact detection on the configuration at the step's start; contacts keep the state
+  //    they had last step. A redone attempt starts again from these.
+  detect_contacts(world, ws.contacts);
+  const std::vector<Contact> contacts_at_start = ws.contacts;
+  int penetration_cuts = 0;
 
-    // 2. Contact detection: none yet (issue 3).
-    // 3. Assemble and solve (the open-close loop will wrap this with contacts).
-    assemble(world, ctx, ws.system);
-    const std::optional<Eigen::VectorXd> d = ws.solver.solve(ws.system);
-    ++stats.iterations;
-    if (!d || !d->allFinite()) {
-      return {false, describe_failure(world, "the global system could not be solved "
-                                             "(not positive definite or not finite)")};
+  for (int attempt = 0;; ++attempt) {
+    if (dt < kSmallestStepShare * scheduled_time_step(world)) {
+      return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
+                                             "the contacts or the motion do not settle")};
+    }
+    const StepContext ctx = make_step_context(world, dt, attempt);
+    if (attempt > 0) ws.contacts = contacts_at_start;
+
+    // 3. Open-close loop: assemble, solve, let every contact choose its next mode, until
+    //    no contact changes.
+    assemble(world, ctx, ws.block_terms);
+    Eigen::VectorXd d;
+    int open_close = 0;
+    int changed = 0;
+    do {
+      ws.system = ws.block_terms;
+      add_contact_terms(world, ws.contacts, ctx, ws.system);
+      const std::optional<Eigen::VectorXd> solved = ws.solver.solve(ws.system);
+      ++stats.iterations;
+      ++open_close;
+      if (!solved || !solved->allFinite()) {
+        return {false, describe_failure(world, "the global system could not be solved "
+                                               "(not positive definite or not finite)")};
+      }
+      d = *solved;
+      changed = update_contact_modes(world, ws.contacts, d, ctx);
+    } while (changed > 0 && open_close < world.control.max_open_close);
+    if (changed > 0) {
+      ++stats.cut_steps;
+      dt *= kContactCut;
+      continue;
     }
 
     // 4. Displacement-ratio check: too large a motion cuts dt and redoes the step.
-    const double moved = max_vertex_displacement(world, *d);
+    const double moved = max_vertex_displacement(world, d);
     if (moved > ctx.allowed_displacement) {
       ++stats.cut_steps;
       dt *= std::clamp(kCutSafety * ctx.allowed_displacement / moved, kCutMin, kCutMax);
-      if (dt < kSmallestStepShare * ctx.scheduled_dt) {
-        return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled "
-                                               "one; the motion does not settle")};
+      continue;
+    }
+    //    Penetration check: an impact is cut; a penetration that cutting does not cure
+    //    (a static load) doubles the penalty for the rest of the run.
+    if (max_penetration(ws.contacts) > world.allowed_penetration) {
+      ++stats.cut_steps;
+      if (++penetration_cuts <= kPenetrationCutsBeforeRaise) {
+        dt *= kContactCut;
+      } else if (stats.penalty_raises < kMaxPenaltyRaises) {
+        world.penalty *= 2.0;
+        ++stats.penalty_raises;
+        penetration_cuts = 0;
+        dt = scheduled_time_step(world);
+      } else {
+        return {false, describe_failure(world, "contacts penetrate more than allowed_penetration "
+                                               "even with the penalty raised 1024-fold")};
       }
       continue;
     }
 
     // 5. Configuration update by the chosen rotation treatment.
-    update_configuration(world, *d);
+    update_configuration(world, d);
     // 6. Strains, stresses and velocities.
     update_stresses(world);
-    update_velocities(world, *d, ctx);
+    update_velocities(world, d, ctx);
     world.time += ctx.dt;
     ++world.step;
+    count_step(ws, open_close, stats);
     return {};
   }
 }

@@ -2,6 +2,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "contact/contact.hpp"
 
 #include "solver/block_system.hpp"
 #include "solver/linear_solver.hpp"
@@ -12,8 +15,10 @@ namespace dda {
 
 // What the step loop keeps between steps: buffers and the factorisation's analysis.
 struct StepWorkspace {
-  BlockSystem system;
+  BlockSystem block_terms;        // the blocks' own terms, assembled once per attempt
+  BlockSystem system;             // block terms plus the contacts of one open-close iteration
   CholmodSolver solver;
+  std::vector<Contact> contacts;  // the contacts and the state they carry between steps
 };
 
 struct StepOutcome {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 #include "kinematics/block_matrices.hpp"
 #include "materials/elastic.hpp"
@@ -12,6 +13,11 @@ namespace {
 // Shi's usual penalty: about 50 times the largest Young's modulus (per metre of thickness);
 // see the verification catalogue ("Shi's usual controls").
 constexpr double kAutoPenaltyFactor = 50.0;
+// Shi's usual allowed penetration, as a share of w0 (verification catalogue).
+constexpr double kAutoPenetrationShare = 4e-4;
+// Contact search distance as a multiple of the largest step motion (ratio x w0): a vertex
+// cannot travel farther than that in a step, so contacts it could make are all found.
+constexpr double kSearchDistanceFactor = 2.5;
 
 double resolve_penalty(const Scene& scene) {
   if (scene.control.penalty) return *scene.control.penalty;
@@ -56,6 +62,15 @@ World make_world(const Scene& scene) {
   const Box box = bounding_box(polygons);
   world.w0 = 0.5 * (box.max - box.min).maxCoeff();
 
+  world.allowed_penetration =
+      scene.control.allowed_penetration.value_or(kAutoPenetrationShare * world.w0);
+  world.search_distance = kSearchDistanceFactor * scene.control.max_displacement_ratio * world.w0;
+  for (const JointMaterial& j : scene.joint_materials) {
+    world.joint_laws.push_back(
+        JointLaw{std::tan(j.friction_angle * M_PI / 180.0), j.cohesion, j.tensile_strength});
+  }
+  for (const JointSpec& j : scene.joints) world.pair_joint[pair_key(j.block_a, j.block_b)] = j.material;
+
   for (const PinSpec& pin : scene.pins) {
     world.pins.push_back(Pin{pin.block, pin.point, pin.point});
   }
@@ -63,6 +78,11 @@ World make_world(const Scene& scene) {
     world.loads.push_back(PointLoad{load.block, load.point, load.force});
   }
   return world;
+}
+
+int joint_of_pair(const World& world, int i, int j) {
+  const auto it = world.pair_joint.find(pair_key(i, j));
+  return it == world.pair_joint.end() ? 0 : it->second;
 }
 
 double kinetic_energy(const Block& block) {

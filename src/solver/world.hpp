@@ -2,9 +2,12 @@
 // time. Built once from a validated Scene (make_world), then owned by the step loop.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
+#include "contact/joint_law.hpp"
 #include "kinematics/polygon.hpp"
 #include "kinematics/types.hpp"
 #include "solver/scene.hpp"
@@ -51,13 +54,29 @@ struct World {
   Vec2 gravity = Vec2::Zero();
   PlaneMode plane = PlaneMode::Strain;
   ControlSettings control;
-  double penalty = 0.0;  // resolved pin stiffness (N/m)
+  double penalty = 0.0;  // resolved stiffness of pins and contact normal springs (N/m)
   double w0 = 0.0;       // half the larger extent of the scene at the start (m)
+  double allowed_penetration = 0.0;  // resolved (m)
+  double search_distance = 0.0;      // contact search distance 2.5 x ratio x w0 (m)
+
+  // Joint laws: index 0 "default", used by every block pair not in `pair_joint`.
+  std::vector<JointLaw> joint_laws;
+  std::unordered_map<std::uint64_t, int> pair_joint;  // key pair_key(i, j), i < j
   int dof_count = 0;     // unknowns in the global system (6 per free block)
 
   double time = 0.0;  // s
   int step = 0;       // completed steps
 };
+
+// Key of an unordered block pair in World::pair_joint.
+inline std::uint64_t pair_key(int i, int j) {
+  const auto lo = static_cast<std::uint64_t>(i < j ? i : j);
+  const auto hi = static_cast<std::uint64_t>(i < j ? j : i);
+  return (hi << 32) | lo;
+}
+
+// The joint law index for contacts between blocks i and j.
+int joint_of_pair(const World& world, int i, int j);
 
 // Builds the world from a validated scene: geometry, elastic matrices, dof numbering,
 // resolved penalty and w0.

@@ -1,0 +1,49 @@
+// One vertex-to-edge contact: its identity, its geometry at the start of the step, and the
+// state it carries across steps (open, sliding or locked; the shear spring's anchor; bond).
+#pragma once
+
+#include <cstdint>
+
+#include "kinematics/types.hpp"
+
+namespace dda {
+
+enum class ContactMode : std::uint8_t { Open, Slide, Lock };
+
+struct ContactKey {
+  int vertex_block = -1;
+  int vertex = -1;
+  int edge_block = -1;
+  int edge = -1;
+  friend bool operator==(const ContactKey&, const ContactKey&) = default;
+};
+
+struct Contact {
+  ContactKey key;
+  int joint = 0;  // index into the scene's joint materials
+
+  // ---- geometry at the start of the step ----
+  Vec2 vertex = Vec2::Zero();   // the entering vertex
+  Vec2 edge_start = Vec2::Zero();
+  Vec2 edge_end = Vec2::Zero();
+  Vec2 tangent = Vec2::Zero();  // unit, along the edge
+  Vec2 normal = Vec2::Zero();   // unit, out of the edge's block towards the vertex
+  double gap = 0.0;             // signed normal distance, > 0 open, < 0 penetrating (m)
+  double t = 0.0;               // projection of the vertex on the edge, 0..1 along it
+  double length = 0.0;          // share of a face-to-face contact this vertex carries (m)
+
+  // ---- state carried from step to step ----
+  ContactMode mode = ContactMode::Open;
+  int slide_sign = 0;     // +1 or -1: slip direction along `tangent` while sliding
+  double t_lock = 0.0;    // edge parameter of the shear spring's anchor while locked
+  bool bonded = false;    // cohesion and tensile strength act while bonded
+
+  // ---- results of the latest open-close iteration ----
+  double new_gap = 0.0;       // normal gap after the step's increments (m)
+  double normal_force = 0.0;  // compression positive (N per metre)
+  double shear_force = 0.0;   // along `tangent`, on the vertex (N per metre)
+
+  Vec2 edge_point(double s) const { return edge_start + s * (edge_end - edge_start); }
+};
+
+}  // namespace dda

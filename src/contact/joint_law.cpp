@@ -1,0 +1,46 @@
+#include "contact/joint_law.hpp"
+
+#include <cmath>
+
+namespace dda {
+namespace {
+
+// The shear spring force on the vertex opposes its slip: slip direction = -sign(force).
+int slip_sign_of_force(double shear_force) { return shear_force > 0.0 ? -1 : 1; }
+
+ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const JointLaw& law) {
+  if (trial.new_gap > 0.0) return {ContactMode::Open, 0, false, false};
+  switch (c.mode) {
+    case ContactMode::Open:
+      return {ContactMode::Lock, 0, false, true};
+    case ContactMode::Lock:
+      if (std::abs(trial.shear_force) > law.tan_phi * trial.normal_force) {
+        return {ContactMode::Slide, slip_sign_of_force(trial.shear_force), false, false};
+      }
+      return {ContactMode::Lock, 0, false, false};
+    case ContactMode::Slide:
+      if (trial.slip * c.slide_sign < 0.0) return {ContactMode::Lock, 0, false, true};
+      return {ContactMode::Slide, c.slide_sign, false, false};
+  }
+  return {};
+}
+
+}  // namespace
+
+ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
+                                    const JointLaw& law) {
+  if (c.bonded) {
+    const bool tension_fails = trial.tension > law.tensile_strength * c.length;
+    const bool shear_fails = std::abs(trial.shear_force) >
+                             law.cohesion * c.length + law.tan_phi * trial.normal_force;
+    if (!tension_fails && !shear_fails) return {ContactMode::Lock, 0, true, false};
+    // Broken for good: continue as an unbonded contact that was locked.
+    Contact broken = c;
+    broken.bonded = false;
+    broken.mode = ContactMode::Lock;
+    return unbonded(broken, trial, {law.tan_phi, 0.0, 0.0});
+  }
+  return unbonded(c, trial, law);
+}
+
+}  // namespace dda

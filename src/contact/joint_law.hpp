@@ -1,0 +1,42 @@
+// The Mohr-Coulomb joint law of a contact as a pure decision: given what the latest solve
+// says about a contact, which mode it takes next (Shi 1988, open-close iteration).
+#pragma once
+
+#include "contact/contact.hpp"
+
+namespace dda {
+
+struct JointLaw {
+  double tan_phi = 0.0;           // tan(friction angle)
+  double cohesion = 0.0;          // Pa
+  double tensile_strength = 0.0;  // Pa
+};
+
+// What the latest solve says about one contact.
+struct ContactTrial {
+  double new_gap = 0.0;       // normal gap after the increments (m), < 0 closed
+  double shear_force = 0.0;   // locked: shear spring force on the vertex along the tangent (N)
+  double slip = 0.0;          // the step's relative tangential displacement along the tangent (m)
+  double normal_force = 0.0;  // p * max(0, -new_gap) (N)
+  double tension = 0.0;       // p * max(0, new_gap): what a bonded contact must carry (N)
+};
+
+struct ContactDecision {
+  ContactMode mode = ContactMode::Open;
+  int slide_sign = 0;
+  bool bonded = false;
+  bool relock = false;  // the shear spring's anchor must move to the vertex's present place
+};
+
+// Transition rules:
+//  - bonded: holds (locked) until tension > tensile_strength * length or
+//    |shear| > cohesion * length + tan_phi * N; then the bond is broken for good and the
+//    contact continues as an unbonded one (open if separated, sliding if closed);
+//  - unbonded, separated (new_gap > 0): open;
+//  - unbonded, closed: an open contact locks; a locked one slides when
+//    |shear| > tan_phi * N (towards the shear force's opposite, i.e. the slip); a sliding
+//    one locks again when its slip turns against its sliding direction.
+ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
+                                    const JointLaw& law);
+
+}  // namespace dda

@@ -1,0 +1,161 @@
+#include "solver/contact_assembly.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "kinematics/block_matrices.hpp"
+
+namespace dda {
+namespace {
+
+// Shi's shear spring is the normal penalty divided by 2.5 (verification catalogue).
+constexpr double kShearSpringRatio = 1.0 / 2.5;
+
+// How a contact sees the unknowns: a scalar measure g = g0 + a.d_v + b.d_e, with d_v the
+// vertex block's increments and d_e the edge block's.
+struct Measure {
+  Vec6 on_vertex_block = Vec6::Zero();
+  Vec6 on_edge_block = Vec6::Zero();
+};
+
+Mat26 t_at(const Block& b, const Vec2& x) { return shi_t().at(x - b.moments.centroid); }
+
+// Relative displacement of the vertex against a material point `x` of the edge block,
+// projected on `dir`.
+Measure relative_along(const World& w, const Contact& c, const Vec2& x, const Vec2& dir) {
+  Measure m;
+  m.on_vertex_block = t_at(w.blocks[c.key.vertex_block], c.vertex).transpose() * dir;
+  m.on_edge_block = -(t_at(w.blocks[c.key.edge_block], x).transpose() * dir);
+  return m;
+}
+
+double evaluate(const World& w, const Contact& c, const Measure& m, const Eigen::VectorXd& d) {
+  double value = 0.0;
+  const Block& bv = w.blocks[c.key.vertex_block];
+  const Block& be = w.blocks[c.key.edge_block];
+  if (!bv.fixed) value += m.on_vertex_block.dot(d.segment<6>(bv.first_dof));
+  if (!be.fixed) value += m.on_edge_block.dot(d.segment<6>(be.first_dof));
+  return value;
+}
+
+// Adds the terms of the energy k/2 (g0 + m.d)^2 (and so the stiffness k m m^T and the
+// force -k g0 m) to the system; fixed blocks carry no unknowns and are left out.
+class ContactAssembler {
+ public:
+  ContactAssembler(const World& w, BlockSystem& s) : world_(w), system_(s) {}
+
+  void add_spring(const Contact& c, const Measure& m, double k, double g0) {
+    const Block& bv = world_.blocks[c.key.vertex_block];
+    const Block& be = world_.blocks[c.key.edge_block];
+    if (!bv.fixed) {
+      system_.diagonal[bv.first_dof / 6] += k * m.on_vertex_block * m.on_vertex_block.transpose();
+      system_.rhs.segment<6>(bv.first_dof) -= k * g0 * m.on_vertex_block;
+    }
+    if (!be.fixed) {
+      system_.diagonal[be.first_dof / 6] += k * m.on_edge_block * m.on_edge_block.transpose();
+      system_.rhs.segment<6>(be.first_dof) -= k * g0 * m.on_edge_block;
+    }
+    if (!bv.fixed && !be.fixed) {
+      const bool vertex_row = bv.first_dof > be.first_dof;  // store below the diagonal
+      const Mat6 k_ve = k * m.on_vertex_block * m.on_edge_block.transpose();
+      coupling(bv.first_dof / 6, be.first_dof / 6) += vertex_row ? k_ve : Mat6(k_ve.transpose());
+    }
+  }
+
+  // A force `f` (N) with measure m: work f (m.d) -> force vector f m.
+  void add_force(const Contact& c, const Measure& m, double f) {
+    const Block& bv = world_.blocks[c.key.vertex_block];
+    const Block& be = world_.blocks[c.key.edge_block];
+    if (!bv.fixed) system_.rhs.segment<6>(bv.first_dof) += f * m.on_vertex_block;
+    if (!be.fixed) system_.rhs.segment<6>(be.first_dof) += f * m.on_edge_block;
+  }
+
+  // Reserves the coupling block of two free blocks (kept even for open contacts, so that the
+  // sparsity pattern, and CHOLMOD's analysis, stays the same through the open-close loop).
+  void touch(const Contact& c) {
+    const Block& bv = world_.blocks[c.key.vertex_block];
+    const Block& be = world_.blocks[c.key.edge_block];
+    if (!bv.fixed && !be.fixed) coupling(bv.first_dof / 6, be.first_dof / 6);
+  }
+
+ private:
+  Mat6& coupling(int a, int b) {
+    const int row = std::max(a, b), col = std::min(a, b);
+    const auto [it, inserted] = index_.try_emplace(pair_key(row, col), system_.couplings.size());
+    if (inserted) system_.couplings.push_back({row, col, Mat6::Zero()});
+    return system_.couplings[it->second].k;
+  }
+
+  const World& world_;
+  BlockSystem& system_;
+  std::unordered_map<std::uint64_t, std::size_t> index_;
+};
+
+Vec2 projection_point(const Contact& c) { return c.edge_point(c.t); }
+
+}  // namespace
+
+void add_contact_terms(const World& world, std::vector<Contact>& contacts,
+                       const StepContext& ctx, BlockSystem& system) {
+  ContactAssembler assembler(world, system);
+  const double kn = ctx.penalty;
+  const double ks = kShearSpringRatio * ctx.penalty;
+  for (const Contact& c : contacts) {
+    assembler.touch(c);
+    if (c.mode == ContactMode::Open) continue;
+    assembler.add_spring(c, relative_along(world, c, projection_point(c), c.normal), kn, c.gap);
+    if (c.mode == ContactMode::Lock) {
+      const Vec2 anchor = c.edge_point(c.t_lock);
+      assembler.add_spring(c, relative_along(world, c, anchor, c.tangent), ks,
+                           c.tangent.dot(c.vertex - anchor));
+    } else {
+      // Sliding: friction tan(phi) N on the vertex, against its slip direction.
+      const double friction = world.joint_laws[c.joint].tan_phi * c.normal_force;
+      assembler.add_force(c, relative_along(world, c, projection_point(c), c.tangent),
+                          -c.slide_sign * friction);
+    }
+  }
+}
+
+int update_contact_modes(const World& world, std::vector<Contact>& contacts,
+                         const Eigen::VectorXd& d, const StepContext& ctx) {
+  const double kn = ctx.penalty;
+  const double ks = kShearSpringRatio * ctx.penalty;
+  int changed = 0;
+  for (Contact& c : contacts) {
+    const Vec2 p0 = projection_point(c);
+    ContactTrial trial;
+    trial.new_gap = c.gap + evaluate(world, c, relative_along(world, c, p0, c.normal), d);
+    trial.normal_force = kn * std::max(0.0, -trial.new_gap);
+    trial.tension = kn * std::max(0.0, trial.new_gap);
+    trial.slip = evaluate(world, c, relative_along(world, c, p0, c.tangent), d);
+    if (c.mode == ContactMode::Lock) {
+      const Vec2 anchor = c.edge_point(c.t_lock);
+      const double shear = c.tangent.dot(c.vertex - anchor) +
+                           evaluate(world, c, relative_along(world, c, anchor, c.tangent), d);
+      trial.shear_force = -ks * shear;
+    } else if (c.mode == ContactMode::Slide) {
+      trial.shear_force = -c.slide_sign * world.joint_laws[c.joint].tan_phi * c.normal_force;
+    }
+    const ContactDecision next = decide_contact_mode(c, trial, world.joint_laws[c.joint]);
+    if (next.mode != c.mode || next.slide_sign != c.slide_sign || next.bonded != c.bonded) ++changed;
+    c.mode = next.mode;
+    c.slide_sign = next.slide_sign;
+    c.bonded = next.bonded;
+    if (next.relock) c.t_lock = c.t;
+    c.new_gap = trial.new_gap;
+    c.normal_force = c.mode == ContactMode::Open ? 0.0 : trial.normal_force;
+    c.shear_force = trial.shear_force;
+  }
+  return changed;
+}
+
+double max_penetration(const std::vector<Contact>& contacts) {
+  double deepest = 0.0;
+  for (const Contact& c : contacts) {
+    if (c.mode != ContactMode::Open) deepest = std::max(deepest, -c.new_gap);
+  }
+  return deepest;
+}
+
+}  // namespace dda

@@ -1,0 +1,94 @@
+#include "solver/contact_detection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "contact/broad_phase.hpp"
+#include "contact/narrow_phase.hpp"
+
+namespace dda {
+namespace {
+
+struct KeyHash {
+  std::size_t operator()(const ContactKey& k) const {
+    std::size_t h = static_cast<std::size_t>(k.vertex_block);
+    for (int v : {k.vertex, k.edge_block, k.edge}) h = h * 1000003u ^ static_cast<std::size_t>(v);
+    return h;
+  }
+};
+
+// The share of a face-to-face contact this vertex carries: half of each of its two edges
+// that lies along the contact edge (within the entrance tolerance). A vertex meeting the edge
+// at an angle (a point contact) carries no length, so no cohesion or tensile strength.
+double contact_length(const Polygon& vp, int v, const Vec2& edge_normal) {
+  const int n = static_cast<int>(vp.size());
+  double length = 0.0;
+  for (int w : {(v + n - 1) % n, (v + 1) % n}) {
+    const Vec2 a = vp[w] - vp[v];
+    if (std::abs(a.dot(edge_normal)) <= kWedgeTolerance * a.norm()) length += 0.5 * a.norm();
+  }
+  return length;
+}
+
+Contact make_contact(const World& world, const ContactCandidate& c) {
+  const Polygon& vp = world.blocks[c.vertex_block].vertices;
+  const Polygon& ep = world.blocks[c.edge_block].vertices;
+  const EdgeFrame frame = edge_frame(ep, c.edge);
+  const EdgeProjection proj = project_on_edge(vp[c.vertex], frame);
+  Contact k;
+  k.key = {c.vertex_block, c.vertex, c.edge_block, c.edge};
+  k.joint = joint_of_pair(world, c.vertex_block, c.edge_block);
+  k.vertex = vp[c.vertex];
+  k.edge_start = frame.start;
+  k.edge_end = frame.end;
+  k.tangent = frame.tangent;
+  k.normal = frame.normal;
+  k.gap = proj.gap;
+  k.t = std::clamp(proj.t, 0.0, 1.0);  // vertex-to-vertex contacts may project just past an end
+  k.length = contact_length(vp, c.vertex, frame.normal);
+  return k;
+}
+
+}  // namespace
+
+void detect_contacts(const World& world, std::vector<Contact>& contacts) {
+  std::unordered_map<ContactKey, Contact, KeyHash> previous;
+  previous.reserve(contacts.size());
+  for (const Contact& c : contacts) previous.emplace(c.key, c);
+
+  std::vector<Box> boxes;
+  boxes.reserve(world.blocks.size());
+  for (const Block& b : world.blocks) boxes.push_back(grown_box(b.vertices, 0.5 * world.search_distance));
+
+  std::vector<ContactCandidate> candidates;
+  for (const auto& [i, j] : overlapping_pairs(boxes)) {
+    if (world.blocks[i].fixed && world.blocks[j].fixed) continue;  // nothing can move
+    find_contacts(world.blocks[i].vertices, i, world.blocks[j].vertices, j, world.search_distance,
+                  candidates);
+  }
+
+  // Blocks placed face to face are "closed" although round-off may leave a gap of a few ulps.
+  const double touching = 1e-9 * world.w0;
+  contacts.clear();
+  contacts.reserve(candidates.size());
+  for (const ContactCandidate& cand : candidates) {
+    Contact c = make_contact(world, cand);
+    const auto old = previous.find(c.key);
+    if (old != previous.end()) {
+      c.mode = old->second.mode;
+      c.slide_sign = old->second.slide_sign;
+      c.t_lock = old->second.t_lock;
+      c.bonded = old->second.bonded;
+      c.normal_force = old->second.normal_force;
+    } else if (c.gap <= touching) {
+      c.mode = ContactMode::Lock;
+      c.t_lock = c.t;
+      const JointLaw& law = world.joint_laws[c.joint];
+      c.bonded = world.step == 0 && (law.cohesion > 0.0 || law.tensile_strength > 0.0);
+    }
+    contacts.push_back(c);
+  }
+}
+
+}  // namespace dda
