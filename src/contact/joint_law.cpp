@@ -19,7 +19,7 @@ ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const Join
       }
       return {ContactMode::Lock, 0, false, false};
     case ContactMode::Slide:
-      if (trial.slip * c.slide_sign < 0.0) return {ContactMode::Lock, 0, false, true};
+      if (trial.slip * c.slide_sign < -trial.slip_tolerance) return {ContactMode::Lock, 0, false, true};
       return {ContactMode::Slide, c.slide_sign, false, false};
   }
   return {};

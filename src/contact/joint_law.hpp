@@ -19,6 +19,9 @@ struct ContactTrial {
   double slip = 0.0;          // the step's relative tangential displacement along the tangent (m)
   double normal_force = 0.0;  // p * max(0, -new_gap) (N)
   double tension = 0.0;       // p * max(0, new_gap): what a bonded contact must carry (N)
+  // A slip smaller than this (m) is round-off, not a reversal: without it a frictionless
+  // contact at rest flips between sliding and locked forever.
+  double slip_tolerance = 0.0;
 };
 
 struct ContactDecision {
@@ -35,7 +38,8 @@ struct ContactDecision {
 //  - unbonded, separated (new_gap > 0): open;
 //  - unbonded, closed: an open contact locks; a locked one slides when
 //    |shear| > tan_phi * N (towards the shear force's opposite, i.e. the slip); a sliding
-//    one locks again when its slip turns against its sliding direction.
+//    one locks again when its slip turns against its sliding direction
+//    by more than the slip tolerance.
 ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
                                     const JointLaw& law);
 

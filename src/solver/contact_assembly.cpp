@@ -10,6 +10,8 @@ namespace {
 
 // Shi's shear spring is the normal penalty divided by 2.5 (verification catalogue).
 constexpr double kShearSpringRatio = 1.0 / 2.5;
+// Slips below this share of the allowed penetration count as no slip (round-off).
+constexpr double kSlipToleranceShare = 1e-6;
 
 // How a contact sees the unknowns: a scalar measure g = g0 + a.d_v + b.d_e, with d_v the
 // vertex block's increments and d_e the edge block's.
@@ -129,6 +131,7 @@ int update_contact_modes(const World& world, std::vector<Contact>& contacts,
     trial.normal_force = kn * std::max(0.0, -trial.new_gap);
     trial.tension = kn * std::max(0.0, trial.new_gap);
     trial.slip = evaluate(world, c, relative_along(world, c, p0, c.tangent), d);
+    trial.slip_tolerance = kSlipToleranceShare * world.allowed_penetration;
     if (c.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.t_lock);
       const double shear = c.tangent.dot(c.vertex - anchor) +
