@@ -52,9 +52,11 @@ void vertex_to_edge(const Polygon& vp, int vblock, const Polygon& ep, int eblock
   }
 }
 
-// Of the four edges meeting at a vertex pair, the one the other vertex enters most squarely.
-// Ties (within round-off of the score) go to the first in a fixed order, so the choice
-// does not flicker from step to step in face-to-face stacks.
+// Of the four edges meeting at a vertex pair, the one the other vertex meets: among the
+// edges whose wedge test passes, the one across which the vertex lies farthest out (the axis
+// of least penetration, as in a separating-axis test). Ties (within round-off) go to the
+// first in a fixed order, so that the choice does not flicker in face-to-face stacks. If no
+// edge passes the wedge test, the squarest one is taken.
 ContactCandidate resolve_vertex_pair(const Polygon& a, int ia, const Polygon& b, int ib,
                                      const VertexPair& pair) {
   const int na = static_cast<int>(a.size());
@@ -62,22 +64,29 @@ ContactCandidate resolve_vertex_pair(const Polygon& a, int ia, const Polygon& b,
   struct Option {
     ContactCandidate contact;
     double score;
+    double gap;
   };
-  // Vertex of b on the edges of a at va (the edge before and after it), then vertex of a on
-  // the edges of b at vb. Reflex vertices cannot enter (score -inf).
-  auto score = [](const Polygon& vp, int v, const Polygon& ep, int e) {
-    return is_convex_vertex(vp, v) ? wedge_score(vp, v, edge_frame(ep, e).normal) : -INFINITY;
+  auto option = [](const Polygon& vp, int vblock, int v, const Polygon& ep, int eblock, int e) {
+    const EdgeFrame frame = edge_frame(ep, e);
+    // Reflex vertices cannot enter an edge.
+    const double score = is_convex_vertex(vp, v) ? wedge_score(vp, v, frame.normal) : -INFINITY;
+    return Option{{vblock, v, eblock, e, true}, score, project_on_edge(vp[v], frame).gap};
   };
-  const std::array<Option, 4> options = {{
-      {{ib, pair.vb, ia, wrap(pair.va - 1, na), true}, score(b, pair.vb, a, wrap(pair.va - 1, na))},
-      {{ib, pair.vb, ia, pair.va, true}, score(b, pair.vb, a, pair.va)},
-      {{ia, pair.va, ib, wrap(pair.vb - 1, nb), true}, score(a, pair.va, b, wrap(pair.vb - 1, nb))},
-      {{ia, pair.va, ib, pair.vb, true}, score(a, pair.va, b, pair.vb)},
-  }};
-  constexpr double kTie = 1e-9;
-  const Option* best = &options[0];
+  // Vertex of b on the edges of a at va (before and after it), then vertex of a on b's.
+  const std::array<Option, 4> options = {
+      option(b, ib, pair.vb, a, ia, wrap(pair.va - 1, na)), option(b, ib, pair.vb, a, ia, pair.va),
+      option(a, ia, pair.va, b, ib, wrap(pair.vb - 1, nb)), option(a, ia, pair.va, b, ib, pair.vb)};
+  constexpr double kTie = 1e-12;  // m: gaps equal up to the round-off of O(1) coordinates
+  const Option* best = nullptr;
   for (const Option& o : options) {
-    if (o.score > best->score + kTie) best = &o;
+    if (o.score < -kWedgeTolerance) continue;
+    if (best == nullptr || o.gap > best->gap + kTie) best = &o;
+  }
+  if (best == nullptr) {
+    best = &options[0];
+    for (const Option& o : options) {
+      if (o.score > best->score) best = &o;
+    }
   }
   return best->contact;
 }
