@@ -321,3 +321,45 @@ TEST_CASE("a block on an incline follows the Goodman and Bray chart", "[contact]
                 << " (pivot travel " << seen.travel << " m)");
   CHECK(seen.mode == expected);
 }
+
+namespace {
+
+// A 1 m square hanging under a fixed 3 m x 1 m ceiling block, bonded to it by a joint of
+// tensile strength 1e5 Pa (and cohesion 1e5 Pa), pulled down at its centroid by `load` on top
+// of its own weight, in Shi's static analysis (velocities dropped every step, so a suddenly
+// applied load does not overshoot dynamically). Returns how far it has dropped after 500 steps.
+double hanging_block_drop(double load) {
+  Scene s = test::base_scene(500, 0.002);
+  s.control.dynamic_coefficient = 0.0;
+  s.control.max_displacement_ratio = 0.01;
+  s.joint_materials[0] = JointMaterial{"default", 30.0, 1e5, 1e5};
+  BlockSpec ceiling = test::block(test::rectangle(-1.5, 0.0, 3.0, 1.0));
+  ceiling.fixed = true;
+  s.blocks.push_back(ceiling);
+  s.blocks.push_back(test::block(test::rectangle(-0.5, -1.0, 1.0, 1.0)));
+  s.point_loads.push_back(PointLoadSpec{{0.0, -0.5}, {0.0, -load}, 1});
+  World world = make_world(s);
+  const RunStats stats = run(world, [](const World&, const RunStats&) { return true; });
+  REQUIRE_FALSE(stats.diverged);
+  return -0.5 - world.blocks[1].moments.centroid.y();
+}
+
+}  // namespace
+
+TEST_CASE("a bonded joint holds a hanging block until the load exceeds its strength", "[contact]") {
+  // Strength of the 1 m wide joint: tensile_strength x width = 1e5 N per metre, carried by the
+  // block's two top corners (0.5 m each). Its weight is 2700 x 9.81 = 26.5 kN.
+  const double weight = 2700.0 * kG;
+  const double strength = 1e5 * 1.0;
+  // 90 % of the strength: it holds. The centroid drops only by the contact springs' stretch
+  // (45 kN / 5e10 N/m ~ 1e-6 m) and the block's own elastic stretch under the load
+  // (strain ~ 9e-5 over half its height, ~5e-5 m): 1e-4 m bounds both.
+  const double held = hanging_block_drop(0.9 * strength - weight);
+  INFO("drop at 90 % " << held << " m");
+  CHECK(std::abs(held) < 1e-4);
+  // 110 %: the bond breaks for good and the block is pulled away; in static mode it moves
+  // F dt^2 / 2m ~ 8e-5 m per step, about 0.04 m over the 500 steps.
+  const double fell = hanging_block_drop(1.1 * strength - weight);
+  INFO("drop at 110 % " << fell << " m");
+  CHECK(fell > 0.01);
+}
