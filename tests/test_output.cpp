@@ -2,6 +2,8 @@
 // written from a World built by hand (no solver involved) and read back.
 #include <catch2/catch.hpp>
 
+#include "solver/energy.hpp"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -123,10 +125,13 @@ Scene make_test_scene() {
 // What record() wrote for one block, in the CSV's column order.
 std::vector<double> expected_row(const World& w, int i) {
   const Block& b = w.blocks[i];
+  // The energy columns are scene totals (checked against closed forms in test_energy.cpp).
+  const EnergyTotals e = scene_energy(w);
   return {double(w.step),     w.time,          double(i),       b.moments.centroid.x(),
           b.moments.centroid.y(), b.rotation,  b.moments.area,  b.strain[0],
           b.strain[1],        b.strain[2],     b.stress[0],     b.stress[1],
-          b.stress[2],        b.velocity[0],   b.velocity[1],   b.velocity[2]};
+          b.stress[2],        b.velocity[0],   b.velocity[1],   b.velocity[2],
+          e.kinetic,          e.potential,     e.strain_energy};
 }
 
 // Writes three frames (steps 0, 10, 20) and the summary; keeps a copy of each recorded world.
@@ -148,6 +153,12 @@ struct WrittenRun {
     stats.cut_steps = 2;
     stats.iterations = 31;
     stats.wall_time_s = 0.25;
+    stats.open_close_total = 50;
+    stats.open_close_max = 4;
+    stats.contacts_total = 60;
+    stats.contacts_max = 5;
+    stats.contacts_final = 3;
+    stats.penalty_raises = 1;
     out.finish(w, stats);
   }
 };
@@ -159,7 +170,9 @@ TEST_CASE("history.csv has the exact header and one full-precision row per block
   WrittenRun run;
   const auto lines = lines_of(read_text(run.dir.path / "history.csv"));
   REQUIRE(lines.size() == 1 + 3 * 2);  // header + 3 records x 2 blocks
-  CHECK(lines[0] == "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega");
+  CHECK(lines[0] ==
+        "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega,"
+        "kinetic,potential,strain_energy");
 
   // Exact comparison, no tolerance: 17 significant digits identify a double uniquely, so
   // writing with %.17g and reading with strtod must give back the very same double.
@@ -195,6 +208,14 @@ TEST_CASE("summary.json holds the settings, run statistics and final blocks", "[
   CHECK(s["steps"] == 20);
   CHECK(s["cut_steps"] == 2);
   CHECK(s["iterations"] == 31);
+  // Per-step means over the 20 steps: 50 / 20 and 60 / 20, exact in binary to the last bit
+  // that matters here (compared to 1e-15).
+  CHECK(std::abs(s["open_close_iterations"]["mean"].get<double>() - 2.5) < 1e-15);
+  CHECK(s["open_close_iterations"]["max"] == 4);
+  CHECK(std::abs(s["contacts"]["mean"].get<double>() - 3.0) < 1e-15);
+  CHECK(s["contacts"]["max"] == 5);
+  CHECK(s["contacts"]["final"] == 3);
+  CHECK(s["penalty_raises"] == 1);
   CHECK(s["end_time"] == last.time);
   CHECK(s["diverged"] == false);
   CHECK(s["message"] == "");

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "kinematics/frames.hpp"
+#include "solver/energy.hpp"
 
 namespace dda {
 
@@ -18,7 +19,8 @@ namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
 constexpr const char* kHistoryHeader =
-    "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega";
+    "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega,"
+    "kinetic,potential,strain_energy";
 
 // 17 significant digits: enough for every double to read back bit-for-bit.
 std::string num(double x) {
@@ -188,7 +190,16 @@ json settings_json(const World& w) {
       {"penalty_rule", c.penalty ? "user" : "auto"},
       {"output_every", c.output_every},
       {"w0", w.w0},
+      {"max_open_close", c.max_open_close},
+      {"allowed_penetration", w.allowed_penetration},
+      {"allowed_penetration_rule", c.allowed_penetration ? "user" : "auto"},
+      {"search_distance", w.search_distance},
   };
+}
+
+// Per-step means are over accepted steps; a run of zero steps reports zeros.
+json per_step(long total, int max, int steps) {
+  return {{"mean", steps > 0 ? static_cast<double>(total) / steps : 0.0}, {"max", max}};
 }
 
 json block_json(const Block& b, int index) {
@@ -224,13 +235,16 @@ OutputWriter::OutputWriter(std::filesystem::path dir, const Scene& scene)
 }
 
 void OutputWriter::record(const World& world) {
+  // Scene totals, repeated on every block's row of the step (see docs/output-format.md).
+  const EnergyTotals energy = scene_energy(world);
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
     const double values[] = {b.moments.centroid.x(), b.moments.centroid.y(), b.rotation,
                              b.moments.area,         b.strain[0],            b.strain[1],
                              b.strain[2],            b.stress[0],            b.stress[1],
                              b.stress[2],            b.velocity[kU0],        b.velocity[kV0],
-                             b.velocity[kR0]};
+                             b.velocity[kR0],        energy.kinetic,         energy.potential,
+                             energy.strain_energy};
     history_ << world.step << ',' << num(world.time) << ',' << i;
     for (double v : values) history_ << ',' << num(v);
     history_ << '\n';
@@ -261,6 +275,11 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
       {"steps", stats.steps},
       {"cut_steps", stats.cut_steps},
       {"iterations", stats.iterations},
+      {"open_close_iterations", per_step(stats.open_close_total, stats.open_close_max, stats.steps)},
+      {"contacts", {{"final", stats.contacts_final},
+                    {"mean", per_step(stats.contacts_total, stats.contacts_max, stats.steps)["mean"]},
+                    {"max", stats.contacts_max}}},
+      {"penalty_raises", stats.penalty_raises},
       {"end_time", world.time},
       {"diverged", stats.diverged},
       {"message", stats.message},
