@@ -25,24 +25,32 @@ namespace {
 
 // A valid scene that uses every key with a non-default value. Each bad scene below is this
 // text with one edit, so that each test breaks exactly one rule. Block 1 is a triangle
-// resting on block 0; the point load sits on their shared edge.
+// resting on block 0; the point load sits on their shared edge. The joint material
+// "bonded" is listed before "default" (and sorts before it) to show that "default" still
+// lands at index 0.
 const std::string kValidScene = R"json({
   "description": "every key, non-default values",
   "gravity": [0.5, -9.0],
   "plane": "stress",
-  "control": {"time_step": [0.01, 0.02], "steps": 40, "max_displacement_ratio": 0.005, "dynamic_coefficient": 0.5, "rotation_update": "original", "penalty": 2.5e10, "output_every": 5},
+  "control": {"time_step": [0.01, 0.02], "steps": 40, "max_displacement_ratio": 0.005, "dynamic_coefficient": 0.5, "rotation_update": "original", "penalty": 2.5e10, "output_every": 5, "max_open_close": 5, "allowed_penetration": 2e-4},
   "materials": {
     "rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25},
     "clay": {"model": "elastic", "density": 1800, "young": 5e7, "poisson": 0.4}
+  },
+  "joint_materials": {
+    "bonded": {"friction_angle": 35, "cohesion": 1e4, "tensile_strength": 5e3},
+    "default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}
   },
   "blocks": [
     {"vertices": [[0, 0], [4, 0], [4, 1], [0, 1]], "material": "rock", "fixed": true},
     {"vertices": [[1, 1], [2, 1], [1.5, 2]], "material": "clay", "velocity": [0.1, -0.2, 0.3], "initial_stress": [-1e5, -2e5, 3e4]}
   ],
+  "joints": [{"blocks": [1, 0], "material": "bonded"}],
   "pins": [{"point": [1.5, 1.5]}],
   "point_loads": [{"point": [1, 1], "force": [10, -20]}]
 }
 )json";
+
 
 // `text` with the one occurrence of `from` replaced by `to`. More than one occurrence, or
 // none, is a mistake in the test itself.
@@ -52,6 +60,13 @@ std::string edit(const std::string& text, const std::string& from, const std::st
     throw std::logic_error("test edit: \"" + from + "\" must occur exactly once");
   }
   return text.substr(0, at) + to + text.substr(at + from.size());
+}
+
+// A scene (kValidScene or an edit of it) with `extra`, the JSON text of one block, added at
+// the end of its block list.
+std::string with_block(const std::string& text, const std::string& extra) {
+  const std::string last = "\"initial_stress\": [-1e5, -2e5, 3e4]}";
+  return edit(text, last, last + ",\n    " + extra);
 }
 
 // `text` (a JSON document) with the value at `pointer` removed, or replaced by `value`.
@@ -213,6 +228,80 @@ std::vector<BadScene> bad_scenes() {
        "pins[0].point", {"(10, 10) is outside every block"}},
       {"point load outside every block", edit(s, "\"point\": [1, 1]", "\"point\": [-5, 3]"),
        "point_loads[0].point", {"(-5, 3) is outside every block"}},
+      // ---- new in issue 3: control of contacts ----
+      {"max_open_close 1", edit(s, "\"max_open_close\": 5", "\"max_open_close\": 1"),
+       "control.max_open_close", {"at least 2, got 1"}},
+      {"max_open_close not an integer", edit(s, "\"max_open_close\": 5", "\"max_open_close\": 2.5"),
+       "control.max_open_close", {"expected an integer", "2.5"}},
+      {"allowed_penetration zero", edit(s, "2e-4", "0"), "control.allowed_penetration",
+       {"must be positive, got 0"}},
+      {"allowed_penetration unknown word", edit(s, "2e-4", "\"small\""),
+       "control.allowed_penetration", {"positive number (m)", "\"auto\"", "\"small\""}},
+      // ---- joint materials ----
+      {"friction angle 90", edit(s, "\"friction_angle\": 35", "\"friction_angle\": 90"),
+       "joint_materials.bonded.friction_angle",
+       {"must be at least 0 and less than 90 (degrees)", "got 90"}},
+      {"friction angle negative", edit(s, "\"friction_angle\": 30", "\"friction_angle\": -1"),
+       "joint_materials.default.friction_angle",
+       {"must be at least 0 and less than 90 (degrees)", "got -1"}},
+      {"cohesion negative", edit(s, "\"cohesion\": 1e4", "\"cohesion\": -1"),
+       "joint_materials.bonded.cohesion", {"must not be negative, got -1"}},
+      {"tensile strength negative",
+       edit(s, "\"tensile_strength\": 5e3", "\"tensile_strength\": -5"),
+       "joint_materials.bonded.tensile_strength", {"must not be negative, got -5"}},
+      {"missing friction angle", without(s, "/joint_materials/bonded/friction_angle"),
+       "joint_materials.bonded.friction_angle", {"required key is missing"}},
+      {"missing cohesion", without(s, "/joint_materials/default/cohesion"),
+       "joint_materials.default.cohesion", {"required key is missing"}},
+      {"missing tensile strength", without(s, "/joint_materials/bonded/tensile_strength"),
+       "joint_materials.bonded.tensile_strength", {"required key is missing"}},
+      {"unknown joint material key",
+       edit(s, "\"cohesion\": 0,", "\"cohesion\": 0, \"dilation\": 5,"),
+       "joint_materials.default.dilation",
+       {"unknown key", "friction_angle, cohesion, tensile_strength"}},
+      {"joint material not an object",
+       edit(s, "\"bonded\": {\"friction_angle\": 35, \"cohesion\": 1e4, "
+               "\"tensile_strength\": 5e3}",
+            "\"bonded\": 35"),
+       "joint_materials.bonded", {"expected an object", "the number 35"}},
+      {"missing joint_materials with two blocks", without(s, "/joint_materials"), "joint_materials",
+       {"required key is missing", "2 blocks", "\"default\" joint material"}},
+      {"missing default joint material", without(s, "/joint_materials/default"),
+       "joint_materials.default", {"required key is missing", "\"default\" joint material"}},
+      // ---- joints ----
+      {"unknown joint material in joints",
+       edit(s, "\"material\": \"bonded\"", "\"material\": \"glued\""),
+       "joints[0].material", {"unknown joint material \"glued\"", "\"default\", \"bonded\""}},
+      {"joint block out of range", edit(s, "[1, 0]", "[1, 2]"), "joints[0].blocks[1]",
+       {"block index 2 is out of range", "2 blocks", "from 0 to 1"}},
+      {"joint block negative", edit(s, "[1, 0]", "[-1, 0]"), "joints[0].blocks[0]",
+       {"block index -1 is out of range"}},
+      {"joint block not an integer", edit(s, "[1, 0]", "[1, 0.5]"), "joints[0].blocks[1]",
+       {"expected an integer", "0.5"}},
+      {"joint between a block and itself", edit(s, "[1, 0]", "[1, 1]"), "joints[0].blocks",
+       {"two different blocks", "block 1 twice"}},
+      {"joint with three blocks", edit(s, "[1, 0]", "[1, 0, 1]"), "joints[0].blocks",
+       {"expected a list of 2 block indices [i, j]", "3 element(s)"}},
+      {"joint with one block", edit(s, "[1, 0]", "[1]"), "joints[0].blocks",
+       {"give the two blocks as [i, j]", "got 1"}},
+      {"joint pair listed twice", edit(s, "[{\"blocks\": [1, 0], \"material\": \"bonded\"}]",
+                                       "[{\"blocks\": [1, 0], \"material\": \"bonded\"}, "
+                                       "{\"blocks\": [0, 1], \"material\": \"default\"}]"),
+       "joints[1].blocks", {"pair of blocks 0 and 1 is already given in joints[0].blocks"}},
+      {"unknown joint key",
+       edit(s, "\"material\": \"bonded\"", "\"material\": \"bonded\", \"friction_angle\": 5"),
+       "joints[0].friction_angle", {"unknown key", "known keys: blocks, material"}},
+      {"joints not a list", edit(s, "[{\"blocks\": [1, 0], \"material\": \"bonded\"}]", "{}"),
+       "joints", {"expected a list", "an object"}},
+      // ---- blocks overlapping at the start ----
+      // The triangle pushed 0.5 m down into block 0: its base edge crosses block 0's sides.
+      {"block overlaps another", edit(s, triangle, "[[1, 0.5], [2, 0.5], [1.5, 2]]"), "blocks[1]",
+       {"overlaps blocks[0] at the start", "blocks may touch but not overlap"}},
+      // A third block identical to block 1: no edges cross and no vertex is strictly inside
+      // the other; the coincident edges give it away. Both places are named.
+      {"block identical to another",
+       with_block(s, "{\"vertices\": " + triangle + ", \"material\": \"rock\"}"), "blocks[2]",
+       {"overlaps blocks[1] at the start"}},
   };
 }
 
@@ -311,6 +400,27 @@ TEST_CASE("a valid scene lands in the Scene struct field by field", "[scene][inp
   REQUIRE(c.penalty.has_value());
   CHECK(*c.penalty == 2.5e10);
   CHECK(c.output_every == 5);
+  CHECK(c.max_open_close == 5);
+  REQUIRE(c.allowed_penetration.has_value());
+  CHECK(*c.allowed_penetration == 2e-4);
+
+  // "default" first, whatever the order in the file.
+  REQUIRE(scene.joint_materials.size() == 2);
+  const dda::JointMaterial& normal = scene.joint_materials[0];
+  const dda::JointMaterial& bonded = scene.joint_materials[1];
+  CHECK(normal.name == "default");
+  CHECK(normal.friction_angle == 30.0);
+  CHECK(normal.cohesion == 0.0);
+  CHECK(normal.tensile_strength == 0.0);
+  CHECK(bonded.name == "bonded");
+  CHECK(bonded.friction_angle == 35.0);
+  CHECK(bonded.cohesion == 1e4);
+  CHECK(bonded.tensile_strength == 5e3);
+  REQUIRE(scene.joints.size() == 1);
+  CHECK(scene.joints[0].block_a == 1);
+  CHECK(scene.joints[0].block_b == 0);
+  CHECK(scene.joints[0].material == 1);
+  CHECK(scene.warnings.empty());  // both joint materials are used
 
   REQUIRE(scene.materials.size() == 2);
   REQUIRE(scene.blocks.size() == 2);
@@ -364,6 +474,16 @@ TEST_CASE("optional keys take their documented defaults", "[scene][input]") {
   CHECK(scene.control.rotation_update == dda::RotationUpdate::Original);
   CHECK_FALSE(scene.control.penalty.has_value());  // "auto"
   CHECK(scene.control.output_every == 10);
+  CHECK(scene.control.max_open_close == 8);
+  CHECK_FALSE(scene.control.allowed_penetration.has_value());  // "auto"
+  // One block needs no joint materials: the built-in frictionless, unbonded default stays.
+  REQUIRE(scene.joint_materials.size() == 1);
+  CHECK(scene.joint_materials[0].name == "default");
+  CHECK(scene.joint_materials[0].friction_angle == 0.0);
+  CHECK(scene.joint_materials[0].cohesion == 0.0);
+  CHECK(scene.joint_materials[0].tensile_strength == 0.0);
+  CHECK(scene.joints.empty());
+  CHECK(scene.warnings.empty());
   CHECK_FALSE(scene.blocks[0].fixed);
   CHECK(scene.blocks[0].velocity == dda::Vec3::Zero());
   CHECK(scene.blocks[0].initial_stress == dda::Vec3::Zero());
@@ -374,9 +494,110 @@ TEST_CASE("optional keys take their documented defaults", "[scene][input]") {
 TEST_CASE("penalty auto and whole numbers written as floats are accepted", "[scene][input]") {
   std::string text = edit(kValidScene, "2.5e10", "\"auto\"");
   text = edit(text, "\"steps\": 40", "\"steps\": 4e1");
+  text = edit(text, "2e-4", "\"auto\"");
+  text = edit(text, "[1, 0]", "[1.0, 0e3]");
   const dda::Scene scene = dda::parse_scene_text(text, "auto.json");
   CHECK_FALSE(scene.control.penalty.has_value());
+  CHECK_FALSE(scene.control.allowed_penetration.has_value());
   CHECK(scene.control.steps == 40);
+  REQUIRE(scene.joints.size() == 1);
+  CHECK(scene.joints[0].block_a == 1);
+  CHECK(scene.joints[0].block_b == 0);
+}
+
+TEST_CASE("joint_materials: the edges of the ranges are accepted", "[scene][input]") {
+  // Friction angle 0 (frictionless) and just under 90 degrees, cohesion and tensile
+  // strength 0, are all inside the documented ranges.
+  std::string text = edit(kValidScene, "\"friction_angle\": 35", "\"friction_angle\": 89.999");
+  text = edit(text, "\"friction_angle\": 30", "\"friction_angle\": 0");
+  const dda::Scene scene = dda::parse_scene_text(text, "edges.json");
+  CHECK(scene.joint_materials[0].friction_angle == 0.0);
+  CHECK(scene.joint_materials[1].friction_angle == 89.999);
+  // No "joints": every pair uses "default", and "bonded" is left unused (a warning only).
+  const dda::Scene no_joints = dda::parse_scene_text(without(kValidScene, "/joints"), "nj.json");
+  CHECK(no_joints.joints.empty());
+  REQUIRE(no_joints.warnings.size() == 1);
+  CHECK(no_joints.warnings[0] ==
+        "nj.json: joint_materials.bonded: not used by any pair of blocks (name it in \"joints\")");
+}
+
+TEST_CASE("a joint material no pair of blocks uses is a warning, not an error",
+          "[scene][input]") {
+  const std::string text = edit(
+      kValidScene, "\"default\": {",
+      "\"weak\": {\"friction_angle\": 10, \"cohesion\": 0, \"tensile_strength\": 0},\n    "
+      "\"default\": {");
+  const dda::Scene scene = dda::parse_scene_text(text, "warn.json");
+  REQUIRE(scene.joint_materials.size() == 3);
+  CHECK(scene.joint_materials[0].name == "default");
+  REQUIRE(scene.warnings.size() == 1);
+  CHECK(scene.warnings[0] ==
+        "warn.json: joint_materials.weak: not used by any pair of blocks (name it in \"joints\")");
+
+  // With one block, joint materials are optional; without "default" the built-in one stays
+  // at index 0, and the others (used by no pair, as there is none) are warned about.
+  const std::string one_block = R"json({
+    "control": {"time_step": 0.01, "steps": 1},
+    "materials": {"rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}},
+    "joint_materials": {"weak": {"friction_angle": 10, "cohesion": 0, "tensile_strength": 0}},
+    "blocks": [{"vertices": [[0, 0], [1, 0], [0, 1]], "material": "rock"}]
+  })json";
+  const dda::Scene single = dda::parse_scene_text(one_block, "one.json");
+  REQUIRE(single.joint_materials.size() == 2);
+  CHECK(single.joint_materials[0].name == "default");
+  CHECK(single.joint_materials[0].friction_angle == 0.0);
+  CHECK(single.joint_materials[1].name == "weak");
+  REQUIRE(single.warnings.size() == 1);
+  CHECK(single.warnings[0].find("one.json: joint_materials.weak: not used") == 0);
+}
+
+TEST_CASE("blocks that touch are accepted, wherever they touch", "[scene][input]") {
+  // A third block on block 0 whose left corner is block 1's right corner (2, 1): it shares
+  // a vertex with block 1 and part of an edge with block 0; block 1 also stands on block 0.
+  const dda::Scene scene = dda::parse_scene_text(
+      with_block(kValidScene, R"({"vertices": [[2, 1], [3, 1], [2.5, 2]], "material": "clay"})"),
+      "touch.json");
+  CHECK(scene.blocks.size() == 3);
+  // A square whose bottom-left corner lies on block 1's right side (the segment from (2, 1)
+  // to (1.5, 2)) at its midpoint (1.75, 1.5): a vertex on a sloping edge.
+  CHECK_NOTHROW(dda::parse_scene_text(
+      with_block(kValidScene, R"({"vertices": [[1.75, 1.5], [2.75, 1.5], [2.75, 2.5],
+                                               [1.75, 2.5]], "material": "clay"})"),
+      "vertex_on_edge.json"));
+}
+
+// A 100 x 100 grid of unit squares sharing edges and corners: every neighbour touches,
+// none overlaps. With an all-pairs test this would be 5e7 polygon pairs; the broad phase
+// leaves only the ~4e4 pairs of neighbours. Then one extra square, half a square off the
+// grid, overlaps four of them: the message names it and the first one it overlaps.
+TEST_CASE("the overlap check scales to 10000 touching blocks", "[scene][input]") {
+  constexpr int kSide = 100;
+  std::string blocks;
+  for (int i = 0; i < kSide; ++i) {
+    for (int j = 0; j < kSide; ++j) {
+      const std::string x0 = std::to_string(i), x1 = std::to_string(i + 1);
+      const std::string y0 = std::to_string(j), y1 = std::to_string(j + 1);
+      blocks += std::string(blocks.empty() ? "" : ",\n") + "{\"vertices\": [[" + x0 + ", " + y0 +
+                "], [" + x1 + ", " + y0 + "], [" + x1 + ", " + y1 + "], [" + x0 + ", " + y1 +
+                "]], \"material\": \"rock\"}";
+    }
+  }
+  const auto scene_with = [](const std::string& block_list) {
+    return R"json({
+      "control": {"time_step": 0.01, "steps": 1},
+      "materials": {"rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}},
+      "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
+      "blocks": [)json" + block_list + "]}";
+  };
+  const dda::Scene grid = dda::parse_scene_text(scene_with(blocks), "grid.json");
+  CHECK(grid.blocks.size() == kSide * kSide);
+  // Block index of square (i, j) is i * kSide + j; the extra square [50.5, 51.5] x
+  // [50.5, 51.5] overlaps squares (50, 50), (50, 51), (51, 50), (51, 51), first 5050.
+  const std::string extra = R"({"vertices": [[50.5, 50.5], [51.5, 50.5], [51.5, 51.5],
+                                              [50.5, 51.5]], "material": "rock"})";
+  CHECK(reader_error(scene_with(blocks + ",\n" + extra), "grid.json") ==
+        "grid.json: blocks[10000]: overlaps blocks[5050] at the start (blocks may touch but not "
+        "overlap)");
 }
 
 TEST_CASE("read_scene_file names the scene by its path", "[scene][input]") {
@@ -478,6 +699,32 @@ TEST_CASE("dda run exits with code 2 when the scene file cannot be opened", "[sc
   CHECK(on_dir.output.find("is a directory") != std::string::npos);
 }
 
+TEST_CASE("dda run prints a warning for an unused joint material and runs", "[scene][cli]") {
+  // Two blocks far apart (they never meet in 2 steps), so the run is short and contact-free.
+  const std::string text = R"json({
+    "control": {"time_step": 0.01, "steps": 2},
+    "materials": {"rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}},
+    "joint_materials": {
+      "default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0},
+      "weak": {"friction_angle": 10, "cohesion": 0, "tensile_strength": 0}
+    },
+    "blocks": [
+      {"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock"},
+      {"vertices": [[5, 0], [6, 0], [6, 1], [5, 1]], "material": "rock"}
+    ]
+  })json";
+  TempDir dir;
+  const fs::path file = dir.path / "warn.json";
+  write_file(file, text);
+  const CommandResult result = run_dda(file, dir.path / "out");
+  INFO("output: " << result.output);
+  CHECK(result.exit_code == 0);
+  CHECK(result.output.find("dda: warning: " + file.string() +
+                           ": joint_materials.weak: not used by any pair of blocks (name it in "
+                           "\"joints\")") != std::string::npos);
+  CHECK(fs::exists(dir.path / "out" / "summary.json"));
+}
+
 // ---------------------------------------------------------------------------------------
 // The shipped scenes
 
@@ -490,6 +737,9 @@ TEST_CASE("the built-in default scene parses and is scenes/default.json", "[scen
   CHECK(scene.blocks[1].velocity == dda::Vec3(1, 3, 2));
   CHECK(scene.control.time_steps == std::vector<double>{0.005});
   CHECK(scene.control.end_time == 3.0);
+  REQUIRE(scene.joint_materials.size() == 1);
+  CHECK(scene.joint_materials[0].friction_angle == 30.0);
+  CHECK(scene.warnings.empty());
 
   // The two blocks do not overlap: their bounding boxes are apart.
   const dda::Box pendulum = dda::bounding_box({scene.blocks[0].vertices});

@@ -34,6 +34,9 @@ double run_length(const dda::Scene& scene) {
 
 int run_command(const std::string& scene_path, const std::string& out_dir) {
   const dda::Scene scene = load_scene(scene_path);
+  for (const std::string& warning : scene.warnings) {
+    std::cerr << "dda: warning: " << warning << "\n";
+  }
   dda::World world = dda::make_world(scene);
   dda::OutputWriter writer(out_dir, scene);
   dda::ProgressBar progress(run_length(scene), scene.control.steps ? "steps" : "s");

@@ -25,6 +25,9 @@ const std::string& default_scene_text() {
   "materials": {
     "rock": {"model": "elastic", "density": 2700.0, "young": 1.0e9, "poisson": 0.25}
   },
+  "joint_materials": {
+    "default": {"friction_angle": 30.0, "cohesion": 0.0, "tensile_strength": 0.0}
+  },
   "blocks": [
     {
       "vertices": [[0.0, 0.0], [2.0, 0.0], [2.0, 0.5], [0.0, 0.5]],

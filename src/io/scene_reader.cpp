@@ -8,9 +8,13 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <utility>
 
+#include "contact/broad_phase.hpp"
 #include "io/json_input.hpp"
+#include "kinematics/overlap.hpp"
 #include "kinematics/polygon.hpp"
 
 namespace dda {
@@ -26,6 +30,21 @@ double positive_number(const Field& f) {
   const double x = f.number();
   if (x <= 0.0) f.fail("must be positive, got " + format_number(x));
   return x;
+}
+
+double non_negative_number(const Field& f) {
+  const double x = f.number();
+  if (x < 0.0) f.fail("must not be negative, got " + format_number(x));
+  return x;
+}
+
+// A key that is not there but must be, when the rule is more than "always required" (so the
+// message can say why). Reported at the key's place, like Field::member does.
+[[noreturn]] void fail_missing(const Field& parent, std::string_view key,
+                               const std::string& source, std::string_view why) {
+  static const nlohmann::json kAbsent;
+  Field(kAbsent, input::member_path(parent.path(), key), source)
+      .fail("required key is missing: " + std::string(why));
 }
 
 // lo <= x <= hi, with each end optionally excluded; `range` is the range as the user reads it.
@@ -101,18 +120,21 @@ RotationUpdate read_rotation_update(const Field& f) {
          quoted_list(kReserved) + ")");
 }
 
-std::optional<double> read_penalty(const Field& f) {
+// A positive number, or "auto" (nullopt); `unit` is shown in the message.
+std::optional<double> positive_or_auto(const Field& f, std::string_view unit) {
   if (f.is_string()) {
     const std::string text = f.string();
     if (text == "auto") return std::nullopt;
-    f.fail("expected a positive number (N/m) or \"auto\", got \"" + text + "\"");
+    f.fail("expected a positive number (" + std::string(unit) + ") or \"auto\", got \"" + text +
+           "\"");
   }
   return positive_number(f);
 }
 
 ControlSettings read_control(const Field& f) {
   f.expect_keys({"time_step", "steps", "end_time", "max_displacement_ratio",
-                 "dynamic_coefficient", "rotation_update", "penalty", "output_every"});
+                 "dynamic_coefficient", "rotation_update", "penalty", "output_every",
+                 "max_open_close", "allowed_penetration"});
   ControlSettings c;
   c.time_steps = read_time_steps(f.member("time_step"));
   read_run_length(f, c);
@@ -126,8 +148,14 @@ ControlSettings read_control(const Field& f) {
   if (auto g = f.optional_member("rotation_update")) {
     c.rotation_update = read_rotation_update(*g);
   }
-  if (auto g = f.optional_member("penalty")) c.penalty = read_penalty(*g);
+  if (auto g = f.optional_member("penalty")) c.penalty = positive_or_auto(*g, "N/m");
   if (auto g = f.optional_member("output_every")) c.output_every = integer_at_least(*g, 1);
+  // The open-close loop needs one iteration to change a contact's state and another to
+  // confirm it, so fewer than 2 would cut every step in which a contact opens or closes.
+  if (auto g = f.optional_member("max_open_close")) c.max_open_close = integer_at_least(*g, 2);
+  if (auto g = f.optional_member("allowed_penetration")) {
+    c.allowed_penetration = positive_or_auto(*g, "m");
+  }
   return c;
 }
 
@@ -164,6 +192,122 @@ int material_index(const Field& f, const std::vector<Material>& materials) {
     known += (known.empty() ? "\"" : ", \"") + materials[i].name + "\"";
   }
   f.fail("unknown material \"" + name + "\" (materials defined: " + known + ")");
+}
+
+// ---- joint materials and joints ----
+
+constexpr std::string_view kDefaultJoint = "default";
+
+JointMaterial read_joint_material(const std::string& name, const Field& f) {
+  f.expect_keys({"friction_angle", "cohesion", "tensile_strength"});
+  JointMaterial j;
+  j.name = name;
+  // 90 degrees would make tan(phi), the friction coefficient, infinite.
+  j.friction_angle = number_in_range(f.member("friction_angle"), 0.0, false, 90.0, true,
+                                     "at least 0 and less than 90 (degrees)");
+  j.cohesion = non_negative_number(f.member("cohesion"));
+  j.tensile_strength = non_negative_number(f.member("tensile_strength"));
+  return j;
+}
+
+// "default" first (index 0, the joint of every pair not in "joints"), then the others in
+// order of name (objects are read with their keys sorted, as for materials). Required with
+// two or more blocks, so that the friction between blocks is always the user's choice; with
+// one block the built-in frictionless default stays.
+std::vector<JointMaterial> read_joint_materials(const Field& root, std::size_t block_count,
+                                                const std::string& source) {
+  const bool required = block_count >= 2;
+  const std::string why =
+      "the scene has " + std::to_string(block_count) +
+      " blocks, and the \"default\" joint material is used between every pair of blocks not "
+      "named in \"joints\" (e.g. {\"friction_angle\": 30, \"cohesion\": 0, "
+      "\"tensile_strength\": 0})";
+  std::vector<JointMaterial> joints = Scene{}.joint_materials;  // the built-in default
+  const auto given = root.optional_member("joint_materials");
+  if (!given) {
+    if (required) fail_missing(root, "joint_materials", source, why);
+    return joints;
+  }
+  const auto members = given->members();
+  if (given->has(kDefaultJoint)) {
+    joints.clear();
+    joints.push_back(read_joint_material(std::string(kDefaultJoint),
+                                         given->member(kDefaultJoint)));
+  } else if (required) {
+    fail_missing(*given, kDefaultJoint, source, why);
+  }
+  for (const auto& [name, value] : members) {
+    if (name != kDefaultJoint) joints.push_back(read_joint_material(name, value));
+  }
+  return joints;
+}
+
+int joint_material_index(const Field& f, const std::vector<JointMaterial>& joint_materials) {
+  const std::string name = f.string();
+  std::string known;
+  for (std::size_t i = 0; i < joint_materials.size(); ++i) {
+    if (joint_materials[i].name == name) return static_cast<int>(i);
+    known += (known.empty() ? "\"" : ", \"") + joint_materials[i].name + "\"";
+  }
+  f.fail("unknown joint material \"" + name + "\" (joint materials defined: " + known + ")");
+}
+
+int block_index(const Field& f, std::size_t block_count) {
+  const int i = f.integer();
+  if (i < 0 || static_cast<std::size_t>(i) >= block_count) {
+    f.fail("block index " + std::to_string(i) + " is out of range (the scene has " +
+           std::to_string(block_count) + " blocks, numbered from 0 to " +
+           std::to_string(block_count - 1) + ")");
+  }
+  return i;
+}
+
+std::vector<JointSpec> read_joints(const Field& f, std::size_t block_count,
+                                   const std::vector<JointMaterial>& joint_materials) {
+  std::vector<JointSpec> joints;
+  std::map<std::pair<int, int>, std::string> seen;  // unordered pair -> place given first
+  for (const Field& joint : f.elements(0, "")) {
+    joint.expect_keys({"blocks", "material"});
+    const Field pair = joint.member("blocks");
+    const std::vector<Field> ends = pair.elements(2, "give the two blocks as [i, j]");
+    if (ends.size() != 2) {
+      pair.fail("expected a list of 2 block indices [i, j], got " + pair.describe());
+    }
+    JointSpec spec;
+    spec.block_a = block_index(ends[0], block_count);
+    spec.block_b = block_index(ends[1], block_count);
+    if (spec.block_a == spec.block_b) {
+      pair.fail("a joint is between two different blocks, got block " +
+                std::to_string(spec.block_a) + " twice");
+    }
+    const auto key = std::minmax(spec.block_a, spec.block_b);
+    const auto [first, inserted] = seen.emplace(key, pair.path());
+    if (!inserted) {
+      pair.fail("the pair of blocks " + std::to_string(key.first) + " and " +
+                std::to_string(key.second) + " is already given in " + first->second +
+                "; list each pair once");
+    }
+    spec.material = joint_material_index(joint.member("material"), joint_materials);
+    joints.push_back(spec);
+  }
+  return joints;
+}
+
+// A joint material that no pair of blocks uses is likely a mistake (a pair left out of
+// "joints", or a misspelt name there), but not one that stops the run.
+std::vector<std::string> unused_joint_material_warnings(const Scene& scene,
+                                                        const std::string& source) {
+  std::vector<bool> used(scene.joint_materials.size(), false);
+  used[0] = true;  // "default": every pair not in "joints"
+  for (const JointSpec& j : scene.joints) used[j.material] = true;
+  std::vector<std::string> warnings;
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (used[i]) continue;
+    warnings.push_back(source + ": " +
+                       input::member_path("joint_materials", scene.joint_materials[i].name) +
+                       ": not used by any pair of blocks (name it in \"joints\")");
+  }
+  return warnings;
 }
 
 // ---- block geometry ----
@@ -252,6 +396,38 @@ BlockSpec read_block(const Field& f, const std::vector<Material>& materials) {
   return b;
 }
 
+// Blocks may touch but not overlap at the start: an overlap is a contact penetrated far
+// beyond anything the contact springs allow. The broad phase keeps this near-linear in the
+// number of blocks. Reported at the later block of the first overlapping pair in list order.
+//
+// Touching tolerance of a pair: 1e-9 of the larger block's bounding-box diagonal (scale-free;
+// far below any real overlap, far above rounding in the distances, ~1e-16 relative), plus
+// 1e-13 of the largest coordinate of the two, which covers the rounding of decimal input
+// far from the origin (e.g. map coordinates in the millions of metres, where one unit in the
+// last place is ~1e-9 m).
+void check_no_overlap(const std::vector<Field>& fields, const std::vector<BlockSpec>& blocks) {
+  std::vector<Box> boxes;
+  std::vector<double> size, reach;  // per block: box diagonal, largest |coordinate|
+  boxes.reserve(blocks.size());
+  for (const BlockSpec& b : blocks) {
+    const Box box = bounding_box({b.vertices});
+    boxes.push_back(box);
+    size.push_back((box.max - box.min).norm());
+    reach.push_back(std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff()));
+  }
+  std::vector<std::pair<int, int>> pairs = overlapping_pairs(boxes);
+  std::sort(pairs.begin(), pairs.end(), [](const auto& p, const auto& q) {
+    return std::pair(p.second, p.first) < std::pair(q.second, q.first);
+  });
+  for (const auto& [i, j] : pairs) {
+    const double tol = 1e-9 * std::max(size[i], size[j]) + 1e-13 * std::max(reach[i], reach[j]);
+    if (polygons_overlap(blocks[i].vertices, blocks[j].vertices, tol)) {
+      fields[j].fail("overlaps blocks[" + std::to_string(i) +
+                     "] at the start (blocks may touch but not overlap)");
+    }
+  }
+}
+
 // The first block (in list order) containing the point; boundary points count as inside,
 // so a pin on a shared edge goes to the block listed first.
 int block_containing(const Field& point_field, const Vec2& p,
@@ -283,8 +459,8 @@ PointLoadSpec read_point_load(const Field& f, const std::vector<BlockSpec>& bloc
 }
 
 Scene read_scene(const Field& root, const std::string& source) {
-  root.expect_keys({"description", "gravity", "plane", "control", "materials", "blocks",
-                    "pins", "point_loads"});
+  root.expect_keys({"description", "gravity", "plane", "control", "materials",
+                    "joint_materials", "blocks", "joints", "pins", "point_loads"});
   Scene scene;
   scene.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
@@ -292,8 +468,13 @@ Scene read_scene(const Field& root, const std::string& source) {
   if (auto g = root.optional_member("plane")) scene.plane = read_plane(*g);
   scene.control = read_control(root.member("control"));
   scene.materials = read_materials(root.member("materials"));
-  for (const Field& b : root.member("blocks").elements(1, "list at least one block")) {
-    scene.blocks.push_back(read_block(b, scene.materials));
+  const std::vector<Field> block_fields =
+      root.member("blocks").elements(1, "list at least one block");
+  for (const Field& b : block_fields) scene.blocks.push_back(read_block(b, scene.materials));
+  check_no_overlap(block_fields, scene.blocks);
+  scene.joint_materials = read_joint_materials(root, scene.blocks.size(), source);
+  if (auto joints = root.optional_member("joints")) {
+    scene.joints = read_joints(*joints, scene.blocks.size(), scene.joint_materials);
   }
   if (auto pins = root.optional_member("pins")) {
     for (const Field& p : pins->elements(0, "")) scene.pins.push_back(read_pin(p, scene.blocks));
@@ -303,6 +484,7 @@ Scene read_scene(const Field& root, const std::string& source) {
       scene.point_loads.push_back(read_point_load(p, scene.blocks));
     }
   }
+  scene.warnings = unused_joint_material_warnings(scene, source);
   return scene;
 }
 
