@@ -60,4 +60,4 @@ BENCHMARK(BM_WholeStep)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmar
 
 }  // namespace
 
-BENCHMARK_MAIN();
+

@@ -9,7 +9,8 @@ namespace {
 int slip_sign_of_force(double shear_force) { return shear_force > 0.0 ? -1 : 1; }
 
 ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const JointLaw& law) {
-  if (trial.new_gap > 0.0) return {ContactMode::Open, 0, false, false};
+  const double opens_above = c.mode == ContactMode::Open ? 0.0 : trial.open_tolerance;
+  if (trial.new_gap > opens_above) return {ContactMode::Open, 0, false, false};
   switch (c.mode) {
     case ContactMode::Open:
       return {ContactMode::Lock, 0, false, true};

@@ -22,6 +22,10 @@ struct ContactTrial {
   // A slip smaller than this (m) is round-off, not a reversal: without it a frictionless
   // contact at rest flips between sliding and locked forever.
   double slip_tolerance = 0.0;
+  // A closed contact opens only when its gap exceeds this (m). Without the band, contacts
+  // that carry almost nothing (a brick's side against its neighbour) chatter between open,
+  // locked and sliding at nanometre gaps and the open-close loop never settles.
+  double open_tolerance = 0.0;
 };
 
 struct ContactDecision {
@@ -35,7 +39,8 @@ struct ContactDecision {
 //  - bonded: holds (locked) until tension > tensile_strength * length or
 //    |shear| > cohesion * length + tan_phi * N; then the bond is broken for good and the
 //    contact continues as an unbonded one (open if separated, sliding if closed);
-//  - unbonded, separated (new_gap > 0): open;
+//  - unbonded: an open contact closes when new_gap <= 0; a closed one opens when
+//    new_gap > open_tolerance;
 //  - unbonded, closed: an open contact locks; a locked one slides when
 //    |shear| > tan_phi * N (towards the shear force's opposite, i.e. the slip); a sliding
 //    one locks again when its slip turns against its sliding direction

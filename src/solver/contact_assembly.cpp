@@ -10,8 +10,16 @@ namespace {
 
 // Shi's shear spring is the normal penalty divided by 2.5 (verification catalogue).
 constexpr double kShearSpringRatio = 1.0 / 2.5;
-// Slips below this share of the allowed penetration count as no slip (round-off).
+// Slips below this share of the allowed penetration count as no slip (round-off), and a
+// closed contact opens only beyond this share of it (see ContactTrial::open_tolerance).
 constexpr double kSlipToleranceShare = 1e-6;
+constexpr double kOpenToleranceShare = 1e-6;
+// A contact that has changed mode this many times in one open-close loop is held in its
+// present mode for the rest of the loop: such a contact chatters between states that differ
+// by nanometres (a brick's side against its neighbour), and letting it go on would cut the
+// step for nothing. What it gets wrong is bounded by the chatter's own size; the next step
+// looks at it afresh.
+constexpr int kMaxModeChanges = 2;
 
 // How a contact sees the unknowns: a scalar measure g = g0 + a.d_v + b.d_e, with d_v the
 // vertex block's increments and d_e the edge block's.
@@ -132,6 +140,7 @@ int update_contact_modes(const World& world, std::vector<Contact>& contacts,
     trial.tension = kn * std::max(0.0, trial.new_gap);
     trial.slip = evaluate(world, c, relative_along(world, c, p0, c.tangent), d);
     trial.slip_tolerance = kSlipToleranceShare * world.allowed_penetration;
+    trial.open_tolerance = kOpenToleranceShare * world.allowed_penetration;
     if (c.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.t_lock);
       const double shear = c.tangent.dot(c.vertex - anchor) +
@@ -141,23 +150,27 @@ int update_contact_modes(const World& world, std::vector<Contact>& contacts,
       trial.shear_force = -c.slide_sign * world.joint_laws[c.joint].tan_phi * c.normal_force;
     }
     const ContactDecision next = decide_contact_mode(c, trial, world.joint_laws[c.joint]);
-    if (next.mode != c.mode || next.slide_sign != c.slide_sign || next.bonded != c.bonded) ++changed;
-    c.mode = next.mode;
-    c.slide_sign = next.slide_sign;
-    c.bonded = next.bonded;
-    if (next.relock) c.t_lock = c.t;
+    const bool changes = next.mode != c.mode || next.slide_sign != c.slide_sign || next.bonded != c.bonded;
+    if (changes && c.mode_changes < kMaxModeChanges) {
+      ++changed;
+      ++c.mode_changes;
+      c.mode = next.mode;
+      c.slide_sign = next.slide_sign;
+      c.bonded = next.bonded;
+      if (next.relock) c.t_lock = c.t;
+    }
     c.new_gap = trial.new_gap;
     c.normal_force = c.mode == ContactMode::Open ? 0.0 : trial.normal_force;
+    // (A held contact keeps its mode, but its forces follow the latest solve.)
     c.shear_force = trial.shear_force;
   }
   return changed;
 }
 
 double max_penetration(const std::vector<Contact>& contacts) {
+  // Open contacts count too: one held open by the chatter limit may have closed meanwhile.
   double deepest = 0.0;
-  for (const Contact& c : contacts) {
-    if (c.mode != ContactMode::Open) deepest = std::max(deepest, -c.new_gap);
-  }
+  for (const Contact& c : contacts) deepest = std::max(deepest, -c.new_gap);
   return deepest;
 }
 

@@ -22,7 +22,7 @@ void add_contact_terms(const World& world, std::vector<Contact>& contacts,
 int update_contact_modes(const World& world, std::vector<Contact>& contacts,
                          const Eigen::VectorXd& d, const StepContext& ctx);
 
-// The deepest penetration among closed contacts after the step (m); 0 if none.
+// The deepest penetration of any contact after the step (m); 0 if none.
 double max_penetration(const std::vector<Contact>& contacts);
 
 }  // namespace dda

@@ -9,9 +9,22 @@
 
 namespace dda {
 
+// Wall time spent in each stage of the step (seconds, summed over the run), to show where
+// the time goes (bench/, README "Speed").
+struct StageTimes {
+  double detect = 0;          // broad and narrow phase, state carried over
+  double assemble = 0;        // block terms and, per open-close iteration, contact terms
+  double solve = 0;           // CHOLMOD factorisation and solve
+  double contact_update = 0;  // each contact's next mode after a solve
+  double update = 0;          // configuration, stresses, velocities
+};
+
 struct RunStats {
   int steps = 0;           // completed steps
-  int cut_steps = 0;       // attempts thrown away by the displacement-ratio control
+  int cut_steps = 0;       // attempts thrown away and redone with a shorter dt, for:
+  int cuts_for_displacement = 0;  //   motion above max_displacement_ratio x w0
+  int cuts_for_open_close = 0;    //   open-close loop not settled in max_open_close
+  int cuts_for_penetration = 0;   //   a contact deeper than allowed_penetration
   long iterations = 0;     // linear solves (assemble + solve passes) in all
   double wall_time_s = 0;  // whole run, seconds
   long open_close_total = 0;  // open-close iterations of accepted steps, summed
@@ -20,6 +33,7 @@ struct RunStats {
   int contacts_max = 0;
   int contacts_final = 0;     // closed contacts at the end of the run
   int penalty_raises = 0;     // times the penalty was doubled to respect allowed_penetration
+  StageTimes stage_times;
   bool diverged = false;
   std::string message;     // why the run stopped early, empty otherwise
 };

@@ -1,6 +1,7 @@
 #include "solver/step.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -61,6 +62,20 @@ void count_step(const StepWorkspace& ws, int open_close, RunStats& stats) {
   stats.contacts_final = closed;
 }
 
+// Adds the time since construction (or the last lap) to a stage's total.
+class StageClock {
+ public:
+  StageClock() : last_(std::chrono::steady_clock::now()) {}
+  void lap(double& total) {
+    const auto now = std::chrono::steady_clock::now();
+    total += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_;
+};
+
 }  // namespace
 
 double scheduled_time_step(const World& world) {
@@ -78,12 +93,15 @@ bool is_finished(const World& world) {
 }
 
 StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
+  StageTimes& times = stats.stage_times;
+  StageClock clock;
   // 1. Choose dt.
   double dt = scheduled_time_step(world);
   // 2. Contact detection on the configuration at the step's start; contacts keep the state
   //    they had last step. A redone attempt starts again from these.
   detect_contacts(world, ws.contacts);
   const std::vector<Contact> contacts_at_start = ws.contacts;
+  clock.lap(times.detect);
   int penetration_cuts = 0;
 
   for (int attempt = 0;; ++attempt) {
@@ -92,7 +110,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
                                              "the contacts or the motion do not settle")};
     }
     const StepContext ctx = make_step_context(world, dt, attempt);
-    if (attempt > 0) ws.contacts = contacts_at_start;
+    ws.contacts = contacts_at_start;  // states as they entered the step, no changes counted
 
     // 3. Open-close loop: assemble, solve, let every contact choose its next mode, until
     //    no contact changes.
@@ -103,7 +121,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     do {
       ws.system = ws.block_terms;
       add_contact_terms(world, ws.contacts, ctx, ws.system);
+      clock.lap(times.assemble);
       const std::optional<Eigen::VectorXd> solved = ws.solver.solve(ws.system);
+      clock.lap(times.solve);
       ++stats.iterations;
       ++open_close;
       if (!solved || !solved->allFinite()) {
@@ -112,9 +132,11 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       }
       d = *solved;
       changed = update_contact_modes(world, ws.contacts, d, ctx);
+      clock.lap(times.contact_update);
     } while (changed > 0 && open_close < world.control.max_open_close);
     if (changed > 0) {
       ++stats.cut_steps;
+      ++stats.cuts_for_open_close;
       dt *= kContactCut;
       continue;
     }
@@ -123,6 +145,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     const double moved = max_vertex_displacement(world, d);
     if (moved > ctx.allowed_displacement) {
       ++stats.cut_steps;
+      ++stats.cuts_for_displacement;
       dt *= std::clamp(kCutSafety * ctx.allowed_displacement / moved, kCutMin, kCutMax);
       continue;
     }
@@ -130,6 +153,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     //    (a static load) doubles the penalty for the rest of the run.
     if (max_penetration(ws.contacts) > world.allowed_penetration) {
       ++stats.cut_steps;
+      ++stats.cuts_for_penetration;
       if (++penetration_cuts <= kPenetrationCutsBeforeRaise) {
         dt *= kContactCut;
       } else if (stats.penalty_raises < kMaxPenaltyRaises) {
@@ -149,6 +173,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     // 6. Strains, stresses and velocities.
     update_stresses(world);
     update_velocities(world, d, ctx);
+    clock.lap(times.update);
     world.time += ctx.dt;
     ++world.step;
     count_step(ws, open_close, stats);
