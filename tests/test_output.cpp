@@ -159,6 +159,8 @@ struct WrittenRun {
     stats.contacts_max = 5;
     stats.contacts_final = 3;
     stats.penalty_raises = 1;
+    stats.cuts_for_displacement = 1;
+    stats.cuts_for_penetration = 1;
     out.finish(w, stats);
   }
 };
@@ -216,6 +218,9 @@ TEST_CASE("summary.json holds the settings, run statistics and final blocks", "[
   CHECK(s["contacts"]["max"] == 5);
   CHECK(s["contacts"]["final"] == 3);
   CHECK(s["penalty_raises"] == 1);
+  CHECK(s["cuts"]["displacement"] == 1);
+  CHECK(s["cuts"]["open_close"] == 0);
+  CHECK(s["cuts"]["penetration"] == 1);
   CHECK(s["end_time"] == last.time);
   CHECK(s["diverged"] == false);
   CHECK(s["message"] == "");
