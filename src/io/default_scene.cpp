@@ -2,9 +2,10 @@
 // scenes/default.json; tests/test_scene_input.cpp checks that the two stay identical.
 //
 // Geometry: the pendulum sweeps a disc of radius |(1.75, 0.25)| = 1.77 m about its pin at
-// (0.25, 0.25); the octagon starts centred at (-3, 0) with velocity (1, 3) m/s, and over the
-// 3 s run its centre stays at least 2.6 m from the pin, so the two never touch
-// (2.6 > 1.77 + 0.5).
+// (0.25, 0.25), which stays above the fixed floor (top at y = -2). The octagon starts centred
+// at (-3, 0) with velocity (1, 3) m/s and spin 2 rad/s, lands on the floor near x = -2 after
+// about 1 s, bounces and rolls to the left (its spin wins over its speed), away from the
+// pendulum.
 #include "io/scene_reader.hpp"
 
 namespace dda {
@@ -12,13 +13,13 @@ namespace dda {
 const std::string& default_scene_text() {
   static const std::string text = R"json(
 {
-  "description": "Built-in default scene: a 2 m x 0.5 m rock block pinned near its left end swings down as a pendulum, while a free regular octagon (circumradius 0.5 m) is thrown up and to the right, spinning. The two never meet.",
+  "description": "Built-in default scene: a 2 m x 0.5 m rock block pinned near its left end swings down as a pendulum, while a free regular octagon (circumradius 0.5 m) is thrown up and to the right, spinning, lands on a fixed floor 2 m below and rolls and slides on it (joint friction 30 degrees).",
   "gravity": [0.0, -9.81],
   "plane": "strain",
   "control": {
     "time_step": 0.005,
     "end_time": 3.0,
-    "max_displacement_ratio": 0.05,
+    "max_displacement_ratio": 0.01,
     "dynamic_coefficient": 1.0,
     "output_every": 10
   },
@@ -46,6 +47,11 @@ const std::string& default_scene_text() {
       ],
       "material": "rock",
       "velocity": [1.0, 3.0, 2.0]
+    },
+    {
+      "vertices": [[-6.0, -3.0], [4.0, -3.0], [4.0, -2.0], [-6.0, -2.0]],
+      "material": "rock",
+      "fixed": true
     }
   ],
   "pins": [
