@@ -731,7 +731,8 @@ TEST_CASE("dda run prints a warning for an unused joint material and runs", "[sc
 TEST_CASE("the built-in default scene parses and is scenes/default.json", "[scene][input]") {
   const dda::Scene scene = dda::parse_scene_text(dda::default_scene_text(), dda::kDefaultSceneName);
   CHECK(scene.source == dda::kDefaultSceneName);
-  REQUIRE(scene.blocks.size() == 2);
+  REQUIRE(scene.blocks.size() == 3);
+  CHECK(scene.blocks[2].fixed);  // the floor
   REQUIRE(scene.pins.size() == 1);
   CHECK(scene.pins[0].block == 0);  // the pendulum
   CHECK(scene.blocks[1].velocity == dda::Vec3(1, 3, 2));
@@ -741,7 +742,7 @@ TEST_CASE("the built-in default scene parses and is scenes/default.json", "[scen
   CHECK(scene.joint_materials[0].friction_angle == 30.0);
   CHECK(scene.warnings.empty());
 
-  // The two blocks do not overlap: their bounding boxes are apart.
+  // The two free blocks do not overlap: their bounding boxes are apart.
   const dda::Box pendulum = dda::bounding_box({scene.blocks[0].vertices});
   const dda::Box octagon = dda::bounding_box({scene.blocks[1].vertices});
   CHECK(octagon.max.x() < pendulum.min.x());
