@@ -184,14 +184,21 @@ std::vector<Material> read_materials(const Field& f) {
   return materials;
 }
 
-int material_index(const Field& f, const std::vector<Material>& materials) {
+// Index of the entry named by `f` in `list` (materials or joint materials); `kind` names the
+// list in the message ("material" -> "unknown material ... (materials defined: ...)").
+template <class Named>
+int index_by_name(const Field& f, const std::vector<Named>& list, const std::string& kind) {
   const std::string name = f.string();
   std::string known;
-  for (std::size_t i = 0; i < materials.size(); ++i) {
-    if (materials[i].name == name) return static_cast<int>(i);
-    known += (known.empty() ? "\"" : ", \"") + materials[i].name + "\"";
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    if (list[i].name == name) return static_cast<int>(i);
+    known += (known.empty() ? "\"" : ", \"") + list[i].name + "\"";
   }
-  f.fail("unknown material \"" + name + "\" (materials defined: " + known + ")");
+  f.fail("unknown " + kind + " \"" + name + "\" (" + kind + "s defined: " + known + ")");
+}
+
+int material_index(const Field& f, const std::vector<Material>& materials) {
+  return index_by_name(f, materials, "material");
 }
 
 // ---- joint materials and joints ----
@@ -243,13 +250,7 @@ std::vector<JointMaterial> read_joint_materials(const Field& root, std::size_t b
 }
 
 int joint_material_index(const Field& f, const std::vector<JointMaterial>& joint_materials) {
-  const std::string name = f.string();
-  std::string known;
-  for (std::size_t i = 0; i < joint_materials.size(); ++i) {
-    if (joint_materials[i].name == name) return static_cast<int>(i);
-    known += (known.empty() ? "\"" : ", \"") + joint_materials[i].name + "\"";
-  }
-  f.fail("unknown joint material \"" + name + "\" (joint materials defined: " + known + ")");
+  return index_by_name(f, joint_materials, "joint material");
 }
 
 int block_index(const Field& f, std::size_t block_count) {
