@@ -229,7 +229,7 @@ std::vector<JointMaterial> read_joint_materials(const Field& root, std::size_t b
       " blocks, and the \"default\" joint material is used between every pair of blocks not "
       "named in \"joints\" (e.g. {\"friction_angle\": 30, \"cohesion\": 0, "
       "\"tensile_strength\": 0})";
-  std::vector<JointMaterial> joints = Scene{}.joint_materials;  // the built-in default
+  std::vector<JointMaterial> joints{kBuiltInDefaultJoint};
   const auto given = root.optional_member("joint_materials");
   if (!given) {
     if (required) fail_missing(root, "joint_materials", source, why);

@@ -33,6 +33,9 @@ struct JointMaterial {
   double tensile_strength = 0.0;  // Pa, >= 0
 };
 
+// The joint used when a scene of one block names none: frictionless, no strength.
+inline const JointMaterial kBuiltInDefaultJoint{"default", 0.0, 0.0, 0.0};
+
 // A pair of blocks whose contacts use a named joint material instead of "default".
 struct JointSpec {
   int block_a = -1;
@@ -94,7 +97,7 @@ struct Scene {
   ControlSettings control;
   std::vector<Material> materials;
   // Joint materials; index 0 is always "default", used by every pair not in `joints`.
-  std::vector<JointMaterial> joint_materials{JointMaterial{"default", 0.0, 0.0, 0.0}};
+  std::vector<JointMaterial> joint_materials{kBuiltInDefaultJoint};
   std::vector<JointSpec> joints;
   std::vector<BlockSpec> blocks;
   std::vector<PinSpec> pins;
