@@ -46,6 +46,7 @@ void BM_PackedWall(benchmark::State& state) {
   const int warmup_steps = n >= 10000 ? 1 : 5;  // contacts established
   for (int k = 0; k < warmup_steps; ++k) dda::advance_step(world, ws, warmup);
   dda::RunStats stats;
+  const int factorisations_before = ws.solver.factorisations();
   for (auto _ : state) {
     const dda::StepOutcome outcome = dda::advance_step(world, ws, stats);
     if (!outcome.ok) state.SkipWithError(outcome.message.c_str());
@@ -61,6 +62,7 @@ void BM_PackedWall(benchmark::State& state) {
   state.counters["update_ms"] = 1e3 * t.update / steps;
   state.counters["open_close"] = static_cast<double>(stats.open_close_total) / steps;
   state.counters["contacts"] = stats.contacts_final;
+  state.counters["factorisations"] = (ws.solver.factorisations() - factorisations_before) / steps;
 }
 BENCHMARK(BM_PackedWall)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 // 10000 bricks: a step takes seconds (see README "Speed"), so a few steps only.

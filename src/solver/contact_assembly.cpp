@@ -1,6 +1,8 @@
 #include "solver/contact_assembly.hpp"
 
 #include <algorithm>
+#include <cassert>
+#include <cmath>
 #include <unordered_map>
 
 #include "kinematics/block_matrices.hpp"
@@ -103,7 +105,29 @@ class ContactAssembler {
 
 Vec2 projection_point(const Contact& c) { return c.edge_point(c.t); }
 
+RankOneTerm rank_one(const World& w, const Contact& c, const Measure& m, double k) {
+  RankOneTerm term;
+  const double scale = std::sqrt(k);
+  const Block& bv = w.blocks[c.key.vertex_block];
+  const Block& be = w.blocks[c.key.edge_block];
+  for (int i = 0; i < 6; ++i) {
+    if (!bv.fixed) term.entries.emplace_back(bv.first_dof + i, scale * m.on_vertex_block[i]);
+    if (!be.fixed) term.entries.emplace_back(be.first_dof + i, scale * m.on_edge_block[i]);
+  }
+  return term;
+}
+
 }  // namespace
+
+void contact_spring_terms(const World& world, const Contact& c, const StepContext& ctx,
+                          std::vector<RankOneTerm>& out) {
+  if (c.mode == ContactMode::Open) return;
+  out.push_back(rank_one(world, c, relative_along(world, c, projection_point(c), c.normal), ctx.penalty));
+  if (c.mode == ContactMode::Lock) {
+    out.push_back(rank_one(world, c, relative_along(world, c, c.edge_point(c.t_lock), c.tangent),
+                           kShearSpringRatio * ctx.penalty));
+  }
+}
 
 void add_contact_terms(const World& world, std::vector<Contact>& contacts,
                        const StepContext& ctx, BlockSystem& system) {
@@ -165,6 +189,30 @@ int update_contact_modes(const World& world, std::vector<Contact>& contacts,
     c.shear_force = trial.shear_force;
   }
   return changed;
+}
+
+std::vector<SpringState> spring_states(const std::vector<Contact>& contacts) {
+  std::vector<SpringState> states;
+  states.reserve(contacts.size());
+  for (const Contact& c : contacts) states.push_back({c.mode, c.t_lock});
+  return states;
+}
+
+void spring_changes(const World& world, const std::vector<Contact>& contacts,
+                    const std::vector<SpringState>& before, const StepContext& ctx,
+                    std::vector<RankOneTerm>& added, std::vector<RankOneTerm>& removed) {
+  assert(before.size() == contacts.size());
+  added.clear();
+  removed.clear();
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& now = contacts[i];
+    if (now.mode == before[i].mode && now.t_lock == before[i].t_lock) continue;
+    Contact then = now;
+    then.mode = before[i].mode;
+    then.t_lock = before[i].t_lock;
+    contact_spring_terms(world, then, ctx, removed);
+    contact_spring_terms(world, now, ctx, added);
+  }
 }
 
 double max_penetration(const std::vector<Contact>& contacts) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contact/contact.hpp"
+#include "solver/sparse_cholesky.hpp"
 #include "solver/block_system.hpp"
 #include "solver/step_context.hpp"
 #include "solver/world.hpp"
@@ -21,6 +22,24 @@ void add_contact_terms(const World& world, std::vector<Contact>& contacts,
 // many contacts changed mode (0 means the open-close loop has converged).
 int update_contact_modes(const World& world, std::vector<Contact>& contacts,
                          const Eigen::VectorXd& d, const StepContext& ctx);
+
+// The stiffness a contact adds to K in its present mode, as rank-one terms c c^T with
+// c = sqrt(k) m (normal spring when closed, shear spring when locked); appended to `out`.
+void contact_spring_terms(const World& world, const Contact& c, const StepContext& ctx,
+                          std::vector<RankOneTerm>& out);
+
+// What of a contact's state shapes its springs: the mode and the shear spring's anchor.
+struct SpringState {
+  ContactMode mode = ContactMode::Open;
+  double t_lock = 0.0;
+};
+std::vector<SpringState> spring_states(const std::vector<Contact>& contacts);
+
+// The springs that appeared (`added`) and disappeared (`removed`) since `before`, for the
+// contacts whose mode or anchor changed; the vectors are cleared first.
+void spring_changes(const World& world, const std::vector<Contact>& contacts,
+                    const std::vector<SpringState>& before, const StepContext& ctx,
+                    std::vector<RankOneTerm>& added, std::vector<RankOneTerm>& removed);
 
 // The deepest penetration of any contact after the step (m); 0 if none.
 double max_penetration(const std::vector<Contact>& contacts);

@@ -1,7 +1,5 @@
 #include "solver/linear_solver.hpp"
 
-#include <algorithm>
-
 namespace dda {
 
 std::optional<Eigen::VectorXd> solve_dense(const BlockSystem& system) {
@@ -10,28 +8,49 @@ std::optional<Eigen::VectorXd> solve_dense(const BlockSystem& system) {
   return Eigen::VectorXd(ldlt.solve(system.rhs));
 }
 
-bool CholmodSolver::same_pattern(const Eigen::SparseMatrix<double>& k) const {
-  if (!analysed_ || static_cast<int>(outer_.size()) != k.outerSize() + 1 ||
-      static_cast<long>(inner_.size()) != k.nonZeros()) {
-    return false;
+Eigen::VectorXd multiply(const BlockSystem& system, const Eigen::VectorXd& x) {
+  Eigen::VectorXd y(x.size());
+  for (int b = 0; b < system.block_rows(); ++b) {
+    y.segment<6>(6 * b).noalias() = system.diagonal[b] * x.segment<6>(6 * b);
   }
-  return std::equal(outer_.begin(), outer_.end(), k.outerIndexPtr()) &&
-         std::equal(inner_.begin(), inner_.end(), k.innerIndexPtr());
+  for (const BlockSystem::Coupling& c : system.couplings) {
+    y.segment<6>(6 * c.row).noalias() += c.k * x.segment<6>(6 * c.col);
+    y.segment<6>(6 * c.col).noalias() += c.k.transpose() * x.segment<6>(6 * c.row);
+  }
+  return y;
+}
+
+std::vector<std::pair<int, int>> CholmodSolver::block_pattern(const BlockSystem& system) const {
+  std::vector<std::pair<int, int>> pattern;
+  pattern.reserve(system.couplings.size());
+  for (const BlockSystem::Coupling& c : system.couplings) pattern.emplace_back(c.row, c.col);
+  return pattern;
 }
 
 std::optional<Eigen::VectorXd> CholmodSolver::solve(const BlockSystem& system) {
   Eigen::SparseMatrix<double> k = system.lower_triangle();
   k.makeCompressed();
-  if (!same_pattern(k)) {
-    factor_.analyzePattern(k);
-    outer_.assign(k.outerIndexPtr(), k.outerIndexPtr() + k.outerSize() + 1);
-    inner_.assign(k.innerIndexPtr(), k.innerIndexPtr() + k.nonZeros());
-    analysed_ = true;
+  ++factorisations_;
+  factored_rows_ = -1;
+  if (!factor_.factorize(k)) return std::nullopt;
+  factored_blocks_ = block_pattern(system);
+  factored_rows_ = system.block_rows();
+  return factor_.solve(system.rhs);
+}
+
+std::optional<Eigen::VectorXd> CholmodSolver::solve_modified(const BlockSystem& system,
+                                                             const std::vector<RankOneTerm>& added,
+                                                             const std::vector<RankOneTerm>& removed) {
+  if (!factor_.has_factor() || system.block_rows() != factored_rows_ ||
+      block_pattern(system) != factored_blocks_) {
+    return solve(system);
   }
-  factor_.factorize(k);
-  if (factor_.info() != Eigen::Success) return std::nullopt;
+  ++modifications_;
+  // Updates first: the matrix stays positive definite all along.
+  if (!factor_.modify(added, true) || !factor_.modify(removed, false)) return solve(system);
   Eigen::VectorXd x = factor_.solve(system.rhs);
-  if (factor_.info() != Eigen::Success) return std::nullopt;
+  const double residual = (multiply(system, x) - system.rhs).norm();
+  if (!(residual <= kModifiedResidualTolerance * system.rhs.norm())) return solve(system);
   return x;
 }
 

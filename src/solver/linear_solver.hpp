@@ -1,37 +1,53 @@
-// Linear solves of the assembled system: CHOLMOD (the fast path, via Eigen's CholmodSupport)
-// and a dense LDLT (the simple reference that tests compare it with).
+// Linear solves of the assembled system: CHOLMOD (the fast path) and a dense LDLT (the simple
+// reference that tests compare it with).
 #pragma once
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "solver/block_system.hpp"
+#include "solver/sparse_cholesky.hpp"
 
 namespace dda {
 
 // Dense reference: LDLT of the whole matrix. nullopt when the matrix is not positive definite.
 std::optional<Eigen::VectorXd> solve_dense(const BlockSystem& system);
 
-// Sparse Cholesky with CHOLMOD. Keeps the symbolic analysis while the sparsity pattern is
-// unchanged (a scene without contacts keeps it for the whole run).
+// y = K x for the symmetric block system (diagonal blocks plus couplings both ways).
+Eigen::VectorXd multiply(const BlockSystem& system, const Eigen::VectorXd& x);
+
+// Sparse LDL' with CHOLMOD.
+//  - solve(): factorise and solve; the symbolic analysis is kept while the sparsity pattern
+//    is unchanged (a scene without contacts keeps it for the whole run).
+//  - solve_modified(): the system differs from the one last factorised only by the springs
+//    of contacts that changed mode (`added` now present, `removed` gone): the factor is
+//    updated and downdated in place (rank one per spring) instead of refactorised. The
+//    answer is checked against the assembled system and refactorised if it falls short.
 class CholmodSolver {
  public:
-  // Simplicial LL^T: it fails (rather than pivoting on) a matrix that is not positive
-  // definite, which is how a broken system is detected.
-  CholmodSolver() { factor_.setMode(Eigen::CholmodSimplicialLLt); }
-
-  // nullopt when the factorisation fails (matrix not positive definite).
+  // nullopt when the matrix is not positive definite.
   std::optional<Eigen::VectorXd> solve(const BlockSystem& system);
+  std::optional<Eigen::VectorXd> solve_modified(const BlockSystem& system,
+                                                const std::vector<RankOneTerm>& added,
+                                                const std::vector<RankOneTerm>& removed);
+
+  // A modified factor's answer must leave a residual below this share of |rhs|; a fresh
+  // factorisation leaves ~1e-16 x condition, so 1e-9 only catches a factor gone astray.
+  static constexpr double kModifiedResidualTolerance = 1e-9;
+
+  int factorisations() const { return factorisations_; }
+  int modifications() const { return modifications_; }
 
  private:
-  bool same_pattern(const Eigen::SparseMatrix<double>& k) const;
+  std::vector<std::pair<int, int>> block_pattern(const BlockSystem& system) const;
 
-  Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> factor_;
-  std::vector<int> outer_;
-  std::vector<int> inner_;
-  bool analysed_ = false;
+  SparseCholesky factor_;
+  std::vector<std::pair<int, int>> factored_blocks_;  // couplings of the factorised system
+  int factored_rows_ = -1;
+  int factorisations_ = 0;
+  int modifications_ = 0;
 };
 
 }  // namespace dda

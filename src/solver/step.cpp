@@ -113,7 +113,8 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     ws.contacts = contacts_at_start;  // states as they entered the step, no changes counted
 
     // 3. Open-close loop: assemble, solve, let every contact choose its next mode, until
-    //    no contact changes.
+    //    no contact changes. The first iteration factorises; later ones update the factor by
+    //    the springs of the contacts that changed (CholmodSolver::solve_modified).
     assemble(world, ctx, ws.block_terms);
     Eigen::VectorXd d;
     int open_close = 0;
@@ -122,7 +123,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       ws.system = ws.block_terms;
       add_contact_terms(world, ws.contacts, ctx, ws.system);
       clock.lap(times.assemble);
-      const std::optional<Eigen::VectorXd> solved = ws.solver.solve(ws.system);
+      const std::optional<Eigen::VectorXd> solved =
+          open_close == 0 ? ws.solver.solve(ws.system)
+                          : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
       clock.lap(times.solve);
       ++stats.iterations;
       ++open_close;
@@ -131,7 +134,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
                                                "(not positive definite or not finite)")};
       }
       d = *solved;
+      const std::vector<SpringState> before = spring_states(ws.contacts);
       changed = update_contact_modes(world, ws.contacts, d, ctx);
+      spring_changes(world, ws.contacts, before, ctx, ws.springs_added, ws.springs_removed);
       clock.lap(times.contact_update);
     } while (changed > 0 && open_close < world.control.max_open_close);
     if (changed > 0) {

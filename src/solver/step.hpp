@@ -19,6 +19,8 @@ struct StepWorkspace {
   BlockSystem system;             // block terms plus the contacts of one open-close iteration
   CholmodSolver solver;
   std::vector<Contact> contacts;  // the contacts and the state they carry between steps
+  std::vector<RankOneTerm> springs_added;    // contact springs that appeared in the last
+  std::vector<RankOneTerm> springs_removed;  // open-close iteration, and those that went
 };
 
 struct StepOutcome {
