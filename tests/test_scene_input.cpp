@@ -743,8 +743,8 @@ TEST_CASE("the built-in default scene parses and is scenes/default.json", "[scen
   CHECK(scene.warnings.empty());
 
   // The two free blocks do not overlap: their bounding boxes are apart.
-  const dda::Box pendulum = dda::bounding_box({scene.blocks[0].vertices});
-  const dda::Box octagon = dda::bounding_box({scene.blocks[1].vertices});
+  const dda::Box pendulum = dda::bounding_box(scene.blocks[0].vertices);
+  const dda::Box octagon = dda::bounding_box(scene.blocks[1].vertices);
   CHECK(octagon.max.x() < pendulum.min.x());
 
   // Same content as the shipped file (compared as JSON, so layout does not matter).

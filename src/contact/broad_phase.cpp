@@ -6,7 +6,7 @@
 namespace dda {
 
 Box grown_box(const Polygon& poly, double margin) {
-  Box box = bounding_box({poly});
+  Box box = bounding_box(poly);
   box.min.array() -= margin;
   box.max.array() += margin;
   return box;

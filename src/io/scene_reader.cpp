@@ -314,7 +314,7 @@ std::vector<std::string> unused_joint_material_warnings(const Scene& scene,
 // ---- block geometry ----
 
 double bbox_diagonal(const Polygon& poly) {
-  const Box box = bounding_box({poly});
+  const Box box = bounding_box(poly);
   return (box.max - box.min).norm();
 }
 
@@ -411,7 +411,7 @@ void check_no_overlap(const std::vector<Field>& fields, const std::vector<BlockS
   std::vector<double> size, reach;  // per block: box diagonal, largest |coordinate|
   boxes.reserve(blocks.size());
   for (const BlockSpec& b : blocks) {
-    const Box box = bounding_box({b.vertices});
+    const Box box = bounding_box(b.vertices);
     boxes.push_back(box);
     size.push_back((box.max - box.min).norm());
     reach.push_back(std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff()));

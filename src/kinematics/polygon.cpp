@@ -105,13 +105,21 @@ bool contains_point(const Polygon& poly, const Vec2& p) {
   return inside;
 }
 
+Box bounding_box(const Polygon& poly) {
+  Box box{Vec2::Constant(INFINITY), Vec2::Constant(-INFINITY)};
+  for (const Vec2& v : poly) {
+    box.min = box.min.cwiseMin(v);
+    box.max = box.max.cwiseMax(v);
+  }
+  return box;
+}
+
 Box bounding_box(const std::vector<Polygon>& polys) {
   Box box{Vec2::Constant(INFINITY), Vec2::Constant(-INFINITY)};
   for (const Polygon& poly : polys) {
-    for (const Vec2& v : poly) {
-      box.min = box.min.cwiseMin(v);
-      box.max = box.max.cwiseMax(v);
-    }
+    const Box b = bounding_box(poly);
+    box.min = box.min.cwiseMin(b.min);
+    box.max = box.max.cwiseMax(b.max);
   }
   return box;
 }

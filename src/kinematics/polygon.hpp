@@ -31,11 +31,12 @@ bool is_self_intersecting(const Polygon& poly);
 // Point in polygon (crossing number); points on the boundary count as inside.
 bool contains_point(const Polygon& poly, const Vec2& p);
 
-// Axis-aligned bounding box of all the polygons: {min, max}.
+// Axis-aligned bounding box of a polygon, or of all the polygons: {min, max}.
 struct Box {
   Vec2 min;
   Vec2 max;
 };
+Box bounding_box(const Polygon& poly);
 Box bounding_box(const std::vector<Polygon>& polys);
 
 }  // namespace dda
