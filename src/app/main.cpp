@@ -22,7 +22,7 @@ constexpr int kExitDiverged = 3;
 dda::Scene load_scene(const std::string& path) {
   if (path.empty()) {
     std::cerr << "dda: no scene given; running the " << dda::kDefaultSceneName
-              << " (a swinging pinned bar and a thrown octagon; see scenes/default.json)\n";
+              << " (a swinging pinned bar, and an octagon thrown onto a fixed floor; see scenes/default.json)\n";
     return dda::parse_scene_text(dda::default_scene_text(), dda::kDefaultSceneName);
   }
   return dda::read_scene_file(path);
