@@ -763,3 +763,41 @@ TEST_CASE("every scene in scenes/ parses", "[scene][input]") {
   CHECK(count >= 4);
 }
 
+
+// ---------------------------------------------------------------------------------------
+// A run that diverges
+
+TEST_CASE("a diverging run stops with a message, exit code 3, and keeps what it wrote",
+          "[scene][input]") {
+  // A block resting on a fixed base under gravity compresses its contacts by m g / 2p
+  // (~1e-6 m with the auto penalty); an allowed penetration of 1e-12 m cannot be met: the step
+  // is cut three times, then the penalty doubled ten times, and the run gives up at step 1.
+  TempDir dir;
+  const fs::path scene = dir.path / "diverge.json";
+  write_file(scene, R"({
+    "control": {"time_step": 0.01, "steps": 5, "allowed_penetration": 1e-12},
+    "materials": {"rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}},
+    "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
+    "blocks": [
+      {"vertices": [[-1.5, -1], [1.5, -1], [1.5, 0], [-1.5, 0]], "material": "rock", "fixed": true},
+      {"vertices": [[-0.5, 0], [0.5, 0], [0.5, 1], [-0.5, 1]], "material": "rock"}
+    ]
+  })");
+  const fs::path out = dir.path / "out";
+  const CommandResult r =
+      run_command(std::string(DDA_EXE) + " run " + shell_quote(scene.string()) + " --out " +
+                  shell_quote(out.string()));
+  INFO(r.output);
+  CHECK(r.exit_code == 3);
+  CHECK(r.output.find("dda: error: the run diverged at step 1") != std::string::npos);
+  CHECK(r.output.find("allowed_penetration") != std::string::npos);
+  // What was written is kept: the initial state in the history and a summary saying why.
+  const nlohmann::json summary = nlohmann::json::parse(read_file(out / "summary.json"));
+  CHECK(summary["diverged"] == true);
+  CHECK(summary["penalty_raises"] == 10);
+  CHECK(summary["message"].get<std::string>().find("allowed_penetration") != std::string::npos);
+  CHECK(summary["steps"] == 0);
+  const std::string history = read_file(out / "history.csv");
+  CHECK(std::count(history.begin(), history.end(), '\n') == 1 + 2);  // header + step 0 rows
+  CHECK(fs::exists(out / "blocks.pvd"));
+}
