@@ -148,3 +148,8 @@ TEST_CASE("strain in a turned frame: the tensor rotation", "[kinematics]") {
   const Vec3 g(3e-4, -1e-4, 2e-4);
   CHECK((strain_in_turned_frame(strain_in_turned_frame(g, 0.7), -0.7) - g).norm() <= 1e-19);
 }
+
+TEST_CASE("strain in a frame not turned at all is the strain itself, bit for bit", "[kinematics]") {
+  const Vec3 g(1e-3, -2.5e-4, 3.3e-4);
+  CHECK(strain_in_turned_frame(g, 0.0) == g);
+}
