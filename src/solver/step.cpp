@@ -30,14 +30,12 @@ constexpr double kSmallestStepShare = 1e-9;
 // Times closer than this share of a step count as equal (end_time reached).
 constexpr double kTimeRoundOff = 1e-9;
 
-StepContext make_step_context(const World& world, double dt, int attempt) {
+StepContext make_step_context(const World& world, double dt) {
   StepContext ctx;
   ctx.dt = dt;
-  ctx.scheduled_dt = scheduled_time_step(world);
   ctx.penalty = world.penalty;
   ctx.dynamic_coefficient = world.control.dynamic_coefficient;
   ctx.allowed_displacement = world.control.max_displacement_ratio * world.w0;
-  ctx.attempt = attempt;
   return ctx;
 }
 
@@ -96,7 +94,8 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   StageTimes& times = stats.stage_times;
   StageClock clock;
   // 1. Choose dt.
-  double dt = scheduled_time_step(world);
+  const double scheduled_dt = scheduled_time_step(world);
+  double dt = scheduled_dt;
   // 2. Contact detection on the configuration at the step's start; contacts keep the state
   //    they had last step. A redone attempt starts again from these.
   detect_contacts(world, ws.contacts);
@@ -104,12 +103,12 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   clock.lap(times.detect);
   int penetration_cuts = 0;
 
-  for (int attempt = 0;; ++attempt) {
-    if (dt < kSmallestStepShare * scheduled_time_step(world)) {
+  for (;;) {
+    if (dt < kSmallestStepShare * scheduled_dt) {
       return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
                                              "the contacts or the motion do not settle")};
     }
-    const StepContext ctx = make_step_context(world, dt, attempt);
+    const StepContext ctx = make_step_context(world, dt);
     ws.contacts = contacts_at_start;  // states as they entered the step, no changes counted
 
     // 3. Open-close loop: assemble, solve, let every contact choose its next mode, until
@@ -165,7 +164,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
         world.penalty *= 2.0;
         ++stats.penalty_raises;
         penetration_cuts = 0;
-        dt = scheduled_time_step(world);
+        dt = scheduled_dt;
       } else {
         return {false, describe_failure(world, "contacts penetrate more than allowed_penetration "
                                                "even with the penalty raised 1024-fold")};

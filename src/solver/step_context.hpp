@@ -5,11 +5,9 @@ namespace dda {
 
 struct StepContext {
   double dt = 0.0;                    // this attempt's time step (s)
-  double scheduled_dt = 0.0;          // what the time-step list asked for (s)
-  double penalty = 0.0;               // pin stiffness (N/m)
+  double penalty = 0.0;               // pin and contact normal stiffness (N/m)
   double dynamic_coefficient = 1.0;   // share of last velocity carried in, [0, 1]
   double allowed_displacement = 0.0;  // max_displacement_ratio * w0 (m)
-  int attempt = 0;                    // 0 first try, then one more per cut
 };
 
 }  // namespace dda
