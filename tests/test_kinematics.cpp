@@ -153,3 +153,38 @@ TEST_CASE("strain in a frame not turned at all is the strain itself, bit for bit
   const Vec3 g(1e-3, -2.5e-4, 3.3e-4);
   CHECK(strain_in_turned_frame(g, 0.0) == g);
 }
+
+namespace {
+Mat2 rotation(double r) {
+  return (Mat2() << std::cos(r), -std::sin(r), std::sin(r), std::cos(r)).finished();
+}
+}  // namespace
+
+TEST_CASE("secant and sine rotation columns move points by the exact rotation", "[kinematics]") {
+  // (R(r) - I) x is the exact displacement of a point x (from the reference point) turned
+  // by r. With the secant column and d_r0 = r, or the sine column and d_r0 = sin r, T d must
+  // give it to round-off (a few ulps of |x| = 5).
+  const Vec2 offset(3.0, -4.0);
+  for (const double r : {1e-9, 1e-4, 0.01, 0.3, -0.7, 1.2}) {
+    Vec6 d = Vec6::Zero();
+    d[kR0] = r;
+    const Vec2 exact = (rotation(r) - Mat2::Identity()) * offset;
+    const Vec2 secant = t_with_rotation_column(secant_rotation_column(r)).at(offset) * d;
+    CHECK((secant - exact).norm() < 1e-14 * offset.norm());
+    d[kR0] = std::sin(r);
+    const Vec2 sine = t_with_rotation_column(sine_rotation_column(r)).at(offset) * d;
+    CHECK((sine - exact).norm() < 1e-14 * offset.norm());
+  }
+}
+
+TEST_CASE("the secant column is Shi's column at zero angle and tends to it", "[kinematics]") {
+  // At r = 0 the secant column is J exactly, so finite_rotation starts from Shi's T bit for
+  // bit; near 0 it differs from J by O(r) (diagonal -r/2) and O(r^2) (off-diagonal).
+  CHECK(secant_rotation_column(0.0) == quarter_turn());
+  CHECK(shi_t().dy(0, kR0) == -1.0);
+  CHECK(shi_t().dx(1, kR0) == 1.0);
+  const double r = 1e-3;
+  const Mat2 a = secant_rotation_column(r);
+  CHECK_THAT(a(0, 0), WithinRel(-r / 2.0, 1e-6));    // -(1 - cos r)/r = -r/2 + O(r^3)
+  CHECK_THAT(a(1, 0), WithinRel(1.0 - r * r / 6.0, 1e-12));  // sin r / r
+}

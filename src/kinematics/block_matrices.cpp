@@ -1,14 +1,41 @@
 #include "kinematics/block_matrices.hpp"
 
+#include <cassert>
+#include <cmath>
+
 namespace dda {
 
+Mat2 quarter_turn() { return (Mat2() << 0.0, -1.0, 1.0, 0.0).finished(); }
+
 LinearT shi_t() {
+  static const LinearT t = t_with_rotation_column(quarter_turn());
+  return t;
+}
+
+Mat2 secant_rotation_column(double r) {
+  if (r == 0.0) return quarter_turn();
+  // (cos r - 1)/r written as -2 sin^2(r/2)/r: no cancellation for small r.
+  const double diagonal = -2.0 * std::sin(0.5 * r) * std::sin(0.5 * r) / r;
+  const double off = std::sin(r) / r;
+  return (Mat2() << diagonal, -off, off, diagonal).finished();
+}
+
+Mat2 sine_rotation_column(double r) {
+  assert(std::abs(r) < 0.5 * M_PI);
+  // (cos r - 1)/sin r = -tan(r/2).
+  const double diagonal = -std::tan(0.5 * r);
+  return (Mat2() << diagonal, -1.0, 1.0, diagonal).finished();
+}
+
+LinearT t_with_rotation_column(const Mat2& a) {
   LinearT t;
   t.constant(0, kU0) = 1.0;
   t.constant(1, kV0) = 1.0;
-  // Column r0: (-Y, X).
-  t.dy(0, kR0) = -1.0;
-  t.dx(1, kR0) = 1.0;
+  // Column r0: a (X, Y); Shi's (-Y, X) when a = J.
+  t.dx(0, kR0) = a(0, 0);
+  t.dx(1, kR0) = a(1, 0);
+  t.dy(0, kR0) = a(0, 1);
+  t.dy(1, kR0) = a(1, 1);
   // Strains: u = X ex + Y gxy/2, v = Y ey + X gxy/2.
   t.dx(0, kEx) = 1.0;
   t.dy(1, kEy) = 1.0;

@@ -26,6 +26,23 @@ struct LinearT {
 //   v = v0 + X r0 + Y ey + X gxy / 2
 LinearT shi_t();
 
+// T with the rotation column a * (X, Y) in place of Shi's (-Y, X) (which is a = J, the
+// quarter turn). Used with the columns below; every other column is Shi's.
+LinearT t_with_rotation_column(const Mat2& a);
+
+// The quarter turn J = [[0, -1], [1, 0]]: Shi's first-order rotation column.
+Mat2 quarter_turn();
+
+// The secant column (R(r) - I) / r: with it, T d moves every point by the exact rotation
+// through d_r0 = r (R(r) the counter-clockwise rotation matrix). Tends to J as r -> 0 and is
+// exactly J at r = 0. finite_rotation iterates r to the step's own r0 (paper-notes item 6).
+Mat2 secant_rotation_column(double r);
+
+// Cheng and Zhang's column (R(r) - I) / sin r (paper Eqs. 9-11): with sin r0 as the unknown,
+// T' d' is the finite-rotation displacement (paper Eq. 8) when r is the step's own r0;
+// sin_variable takes r from the last step. Needs |r| < pi/2.
+Mat2 sine_rotation_column(double r);
+
 // Mass matrix int rho T^T T dA over the block (moments about the reference point).
 Mat6 mass_matrix(const LinearT& t, const Moments& m, double density);
 

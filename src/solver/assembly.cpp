@@ -5,9 +5,10 @@
 namespace dda {
 namespace {
 
-void add_block_terms(const World& world, const Block& b, const StepContext& ctx,
-                     Mat6& k, Eigen::Ref<Vec6> f) {
-  const LinearT t = shi_t();
+void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6& k,
+                     Eigen::Ref<Vec6> f) {
+  const Block& b = world.blocks[static_cast<std::size_t>(index)];
+  const LinearT t = step_t(ctx, index);
   const Mat6 mass = mass_matrix(t, b.moments, b.density);
   const Vec6 v0 = ctx.dynamic_coefficient * b.velocity;
   k += elastic_stiffness(b.moments, b.elastic) + (2.0 / (ctx.dt * ctx.dt)) * mass;
@@ -19,23 +20,24 @@ void add_block_terms(const World& world, const Block& b, const StepContext& ctx,
 
 void assemble(const World& world, const StepContext& ctx, BlockSystem& system) {
   system.reset(world.dof_count / 6);
-  for (const Block& b : world.blocks) {
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
     if (b.fixed) continue;
     const int row = b.first_dof / 6;
-    add_block_terms(world, b, ctx, system.diagonal[row], system.rhs.segment<6>(b.first_dof));
+    add_block_terms(world, static_cast<int>(i), ctx, system.diagonal[row],
+                    system.rhs.segment<6>(b.first_dof));
   }
-  const LinearT t = shi_t();
   for (const Pin& pin : world.pins) {
     const Block& b = world.blocks[pin.block];
     if (b.fixed) continue;  // a pin on a fixed block holds nothing that moves
-    const Mat26 tp = t.at(pin.current - b.moments.centroid);
+    const Mat26 tp = step_t(ctx, pin.block).at(pin.current - b.moments.centroid);
     system.diagonal[b.first_dof / 6] += spring_stiffness(tp, ctx.penalty);
     system.rhs.segment<6>(b.first_dof) += spring_force(tp, ctx.penalty, pin.anchor - pin.current);
   }
   for (const PointLoad& load : world.loads) {
     const Block& b = world.blocks[load.block];
     if (b.fixed) continue;
-    const Mat26 tp = t.at(load.current - b.moments.centroid);
+    const Mat26 tp = step_t(ctx, load.block).at(load.current - b.moments.centroid);
     system.rhs.segment<6>(b.first_dof) += point_force(tp, load.force);
   }
 }

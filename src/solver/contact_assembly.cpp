@@ -33,14 +33,17 @@ struct Measure {
   Vec6 on_edge_block = Vec6::Zero();
 };
 
-Mat26 t_at(const Block& b, const Vec2& x) { return shi_t().at(x - b.moments.centroid); }
+Mat26 t_at(const World& w, const StepContext& ctx, int block, const Vec2& x) {
+  return step_t(ctx, block).at(x - w.blocks[static_cast<std::size_t>(block)].moments.centroid);
+}
 
 // Relative displacement of the vertex against a material point `x` of the edge block,
 // projected on `dir`.
-Measure relative_along(const World& w, const Contact& c, const Vec2& x, const Vec2& dir) {
+Measure relative_along(const World& w, const StepContext& ctx, const Contact& c, const Vec2& x,
+                       const Vec2& dir) {
   Measure m;
-  m.on_vertex_block = t_at(w.blocks[c.key.vertex_block], c.vertex).transpose() * dir;
-  m.on_edge_block = -(t_at(w.blocks[c.key.edge_block], x).transpose() * dir);
+  m.on_vertex_block = t_at(w, ctx, c.key.vertex_block, c.vertex).transpose() * dir;
+  m.on_edge_block = -(t_at(w, ctx, c.key.edge_block, x).transpose() * dir);
   return m;
 }
 
@@ -125,9 +128,9 @@ RankOneTerm rank_one(const World& w, const Contact& c, const Measure& m, double 
 void contact_spring_terms(const World& world, const Contact& c, const StepContext& ctx,
                           std::vector<RankOneTerm>& out) {
   if (c.mode == ContactMode::Open) return;
-  out.push_back(rank_one(world, c, relative_along(world, c, projection_point(c), c.normal), ctx.penalty));
+  out.push_back(rank_one(world, c, relative_along(world, ctx, c, projection_point(c), c.normal), ctx.penalty));
   if (c.mode == ContactMode::Lock) {
-    out.push_back(rank_one(world, c, relative_along(world, c, c.edge_point(c.t_lock), c.tangent),
+    out.push_back(rank_one(world, c, relative_along(world, ctx, c, c.edge_point(c.t_lock), c.tangent),
                            kShearSpringRatio * ctx.penalty));
   }
 }
@@ -140,15 +143,15 @@ void add_contact_terms(const World& world, std::vector<Contact>& contacts,
   for (const Contact& c : contacts) {
     assembler.touch(c);
     if (c.mode == ContactMode::Open) continue;
-    assembler.add_spring(c, relative_along(world, c, projection_point(c), c.normal), kn, c.gap);
+    assembler.add_spring(c, relative_along(world, ctx, c, projection_point(c), c.normal), kn, c.gap);
     if (c.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.t_lock);
-      assembler.add_spring(c, relative_along(world, c, anchor, c.tangent), ks,
+      assembler.add_spring(c, relative_along(world, ctx, c, anchor, c.tangent), ks,
                            c.tangent.dot(c.vertex - anchor));
     } else {
       // Sliding: friction tan(phi) N on the vertex, against its slip direction.
       const double friction = world.joint_laws[c.joint].tan_phi * c.normal_force;
-      assembler.add_force(c, relative_along(world, c, projection_point(c), c.tangent),
+      assembler.add_force(c, relative_along(world, ctx, c, projection_point(c), c.tangent),
                           -c.slide_sign * friction);
     }
   }
@@ -162,16 +165,16 @@ int update_contact_modes(const World& world, std::vector<Contact>& contacts,
   for (Contact& c : contacts) {
     const Vec2 p0 = projection_point(c);
     ContactTrial trial;
-    trial.new_gap = c.gap + evaluate(world, c, relative_along(world, c, p0, c.normal), d);
+    trial.new_gap = c.gap + evaluate(world, c, relative_along(world, ctx, c, p0, c.normal), d);
     trial.normal_force = kn * std::max(0.0, -trial.new_gap);
     trial.tension = kn * std::max(0.0, trial.new_gap);
-    trial.slip = evaluate(world, c, relative_along(world, c, p0, c.tangent), d);
+    trial.slip = evaluate(world, c, relative_along(world, ctx, c, p0, c.tangent), d);
     trial.slip_tolerance = kSlipToleranceShare * world.allowed_penetration;
     trial.open_tolerance = kOpenToleranceShare * world.allowed_penetration;
     if (c.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.t_lock);
       const double shear = c.tangent.dot(c.vertex - anchor) +
-                           evaluate(world, c, relative_along(world, c, anchor, c.tangent), d);
+                           evaluate(world, c, relative_along(world, ctx, c, anchor, c.tangent), d);
       trial.shear_force = -ks * shear;
     } else if (c.mode == ContactMode::Slide) {
       trial.shear_force = -c.slide_sign * world.joint_laws[c.joint].tan_phi * c.normal_force;
