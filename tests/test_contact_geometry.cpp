@@ -678,6 +678,20 @@ TEST_CASE("joint law: open, lock and slide transitions of an unbonded contact",
     CHECK_FALSE(d.bonded);
     CHECK(d.relock);
   }
+  SECTION("open -> slide when a frictionless contact closes") {
+    // No friction: no shear can be held, so it enters sliding along its slip (a lock spring
+    // force -1e-3 on the vertex means it slipped towards +tangent). With friction it locks
+    // (the section above), however large the shear.
+    const JointLaw frictionless{0.0, 0.0, 0.0};
+    ContactDecision d = decide_contact_mode(contact_in(ContactMode::Open), closed(1000, -1e-3),
+                                            frictionless);
+    CHECK(d.mode == ContactMode::Slide);
+    CHECK(d.slide_sign == 1);
+    d = decide_contact_mode(contact_in(ContactMode::Open), closed(1000, 600), frictionless);
+    CHECK(d.slide_sign == -1);
+    d = decide_contact_mode(contact_in(ContactMode::Open), closed(1000, 1e6), law);
+    CHECK(d.mode == ContactMode::Lock);
+  }
   SECTION("open stays open while separated") {
     const ContactDecision d = decide_contact_mode(contact_in(ContactMode::Open), separated(), law);
     CHECK(d.mode == ContactMode::Open);

@@ -15,7 +15,10 @@ struct JointLaw {
 // What the latest solve says about one contact.
 struct ContactTrial {
   double new_gap = 0.0;       // normal gap after the increments (m), < 0 closed
-  double shear_force = 0.0;   // locked: shear spring force on the vertex along the tangent (N)
+  // Locked: the shear spring force on the vertex along the tangent (N). Open: the force a
+  // shear spring anchored where the vertex stood at the step's start would carry after
+  // this trial's slip (-ks slip); its sign says which way a closing frictionless contact slides.
+  double shear_force = 0.0;
   double slip = 0.0;          // the step's relative tangential displacement along the tangent (m)
   double normal_force = 0.0;  // p * max(0, -new_gap) (N)
   double tension = 0.0;       // p * max(0, new_gap): what a bonded contact must carry (N)
@@ -41,7 +44,8 @@ struct ContactDecision {
 //    contact continues as an unbonded one (open if separated, sliding if closed);
 //  - unbonded: an open contact closes when new_gap <= 0; a closed one opens when
 //    new_gap > open_tolerance;
-//  - unbonded, closed: an open contact locks; a locked one slides when
+//  - unbonded, closed: an open contact locks (on a frictionless joint it enters sliding,
+//    along the trial's slip); a locked one slides when
 //    |shear| > tan_phi * N (towards the shear force's opposite, i.e. the slip); a sliding
 //    one locks again when its slip turns against its sliding direction
 //    by more than the slip tolerance.

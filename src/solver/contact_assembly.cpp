@@ -176,11 +176,14 @@ int update_contact_modes(const World& world, std::vector<Contact>& contacts,
       const double shear = c.tangent.dot(c.vertex - anchor) +
                            evaluate(world, c, relative_along(world, ctx, c, anchor, c.tangent), d);
       trial.shear_force = -ks * shear;
+    } else if (c.mode == ContactMode::Open) {
+      trial.shear_force = -ks * trial.slip;
     } else if (c.mode == ContactMode::Slide) {
       trial.shear_force = -c.slide_sign * world.joint_laws[c.joint].tan_phi * c.normal_force;
     }
     const ContactDecision next = decide_contact_mode(c, trial, world.joint_laws[c.joint]);
     const bool changes = next.mode != c.mode || next.slide_sign != c.slide_sign || next.bonded != c.bonded;
+    if (std::getenv("DDA_DEBUG") && (changes || c.mode != ContactMode::Open)) fprintf(stderr, "step %d key %d/%d-%d/%d mode %d -> %d s%d (changes %d) gap %.3e N %.3e S %.3e slip %.3e t %.3f\n", world.step, c.key.vertex_block, c.key.vertex, c.key.edge_block, c.key.edge, (int)c.mode, (int)next.mode, next.slide_sign, c.mode_changes, trial.new_gap, trial.normal_force, trial.shear_force, trial.slip, c.t);
     if (changes && c.mode_changes < kMaxModeChanges) {
       ++changed;
       ++c.mode_changes;
@@ -192,7 +195,7 @@ int update_contact_modes(const World& world, std::vector<Contact>& contacts,
     c.new_gap = trial.new_gap;
     c.normal_force = c.mode == ContactMode::Open ? 0.0 : trial.normal_force;
     // (A held contact keeps its mode, but its forces follow the latest solve.)
-    c.shear_force = trial.shear_force;
+    c.shear_force = c.mode == ContactMode::Open ? 0.0 : trial.shear_force;
   }
   return changed;
 }
