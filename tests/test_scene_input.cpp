@@ -13,6 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/json_input.hpp"
@@ -218,11 +219,13 @@ std::vector<BadScene> bad_scenes() {
        "materials.clay.model", {"unknown material model \"plastic\"", "\"elastic\""}},
       {"unknown plane mode", edit(s, "\"plane\": \"stress\"", "\"plane\": \"3d\""), "plane",
        {"unknown plane mode \"3d\"", "\"strain\", \"stress\""}},
-      {"reserved rotation update", edit(s, "\"original\"", "\"second_order\""),
-       "control.rotation_update", {"\"second_order\" is not implemented yet (issue 4)"}},
+      {"reserved rotation update", edit(s, "\"original\"", "\"sin_variable\""),
+       "control.rotation_update", {"\"sin_variable\" is not implemented yet (issue 4)"}},
+      {"reserved rotation update finite_rotation", edit(s, "\"original\"", "\"finite_rotation\""),
+       "control.rotation_update", {"\"finite_rotation\" is not implemented yet (issue 4)"}},
       {"unknown rotation update", edit(s, "\"original\"", "\"quaternion\""),
        "control.rotation_update", {"unknown rotation update \"quaternion\"", "\"original\"",
-                                   "\"finite_rotation\""}},
+                                   "\"local_frame_as_printed\"", "\"finite_rotation\""}},
       // ---- pins and loads ----
       {"pin outside every block", edit(s, "{\"point\": [1.5, 1.5]}", "{\"point\": [10, 10]}"),
        "pins[0].point", {"(10, 10) is outside every block"}},
@@ -454,6 +457,23 @@ TEST_CASE("a valid scene lands in the Scene struct field by field", "[scene][inp
   CHECK(scene.point_loads[0].force == dda::Vec2(10, -20));
   // (1, 1) is on the edge both blocks share: the first block in the list takes it.
   CHECK(scene.point_loads[0].block == 0);
+}
+
+TEST_CASE("every implemented rotation update is read by its name", "[scene][input]") {
+  const std::pair<const char*, dda::RotationUpdate> names[] = {
+      {"original", dda::RotationUpdate::Original},
+      {"second_order", dda::RotationUpdate::SecondOrder},
+      {"post_adjustment", dda::RotationUpdate::PostAdjustment},
+      {"local_frame", dda::RotationUpdate::LocalFrame},
+      {"local_frame_as_printed", dda::RotationUpdate::LocalFrameAsPrinted}};
+  for (const auto& [name, value] : names) {
+    INFO(name);
+    std::string quoted = "\"";
+    quoted += name;
+    quoted += '"';
+    const std::string text = edit(kValidScene, "\"original\"", quoted);
+    CHECK(dda::parse_scene_text(text, "valid.json").control.rotation_update == value);
+  }
 }
 
 TEST_CASE("optional keys take their documented defaults", "[scene][input]") {

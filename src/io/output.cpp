@@ -7,7 +7,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "kinematics/frames.hpp"
 #include "solver/energy.hpp"
 
 namespace dda {
@@ -184,8 +183,7 @@ json settings_json(const World& w) {
       {"end_time", optional_value(c.end_time)},
       {"max_displacement_ratio", c.max_displacement_ratio},
       {"dynamic_coefficient", c.dynamic_coefficient},
-      // Only Shi's original update exists (RotationUpdate has one value).
-      {"rotation_update", "original"},
+      {"rotation_update", rotation_update_name(c.rotation_update)},
       {"penalty", w.penalty},
       {"penalty_rule", c.penalty ? "user" : "auto"},
       {"output_every", c.output_every},
@@ -213,7 +211,8 @@ json block_json(const Block& b, int index) {
       {"rotation", b.rotation},
       {"area", b.moments.area},
       {"strain", vec(b.strain)},
-      {"local_strain", vec(strain_in_turned_frame(b.strain, b.rotation))},
+      {"local_strain", vec(b.local_strain)},
+      {"frame_angle", b.rotation},  // the block frame is turned by the total rotation
       {"stress", vec(b.stress)},
       {"velocity", json::array({b.velocity[kU0], b.velocity[kV0], b.velocity[kR0]})},
   };

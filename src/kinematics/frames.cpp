@@ -16,4 +16,19 @@ Vec3 strain_in_turned_frame(const Vec3& e, double theta) {
   return Vec3(exx, eyy, 2.0 * exy);
 }
 
+Vec3 strain_from_turned_frame(const Vec3& e_turned, double theta) {
+  return strain_in_turned_frame(e_turned, -theta);
+}
+
+// A stress vector is a strain vector with half the shear: doubling and halving the shear
+// are exact in binary, so the stress maps inherit the strain maps' round-off.
+Vec3 stress_in_turned_frame(const Vec3& s, double theta) {
+  const Vec3 as_strain = strain_in_turned_frame(Vec3(s[0], s[1], 2.0 * s[2]), theta);
+  return Vec3(as_strain[0], as_strain[1], 0.5 * as_strain[2]);
+}
+
+Vec3 stress_from_turned_frame(const Vec3& s_turned, double theta) {
+  return stress_in_turned_frame(s_turned, -theta);
+}
+
 }  // namespace dda

@@ -1,17 +1,99 @@
 #include "solver/configuration_update.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "kinematics/block_matrices.hpp"
+#include "kinematics/frames.hpp"
+#include "kinematics/point_maps.hpp"
 
 namespace dda {
 namespace {
 
 Vec6 increments_of(const Block& b, const Eigen::VectorXd& d) { return d.segment<6>(b.first_dof); }
 
-// Original update (Shi 1988): x += T(x - x0) d with the first-order rotation column.
-void move_point_original(const LinearT& t, const Vec2& reference, const Vec6& db, Vec2& x) {
-  x += t.at(x - reference) * db;
+// ---- treatments that move points by the step's increments (original, second order,
+// post-adjustment): strains added in the global frame (paper Eq. 13) ----
+
+// Every point of every free block moved by displacement(x - x0, db), x0 the block's
+// reference point at the step's start.
+template <class Displacement>
+void move_by_increments(World& world, const Eigen::VectorXd& d, Displacement displacement) {
+  // Pins and loads first: they need each block's reference point from the step's start.
+  for (Pin& pin : world.pins) {
+    const Block& b = world.blocks[pin.block];
+    if (!b.fixed) pin.current += displacement(pin.current - b.moments.centroid, increments_of(b, d));
+  }
+  for (PointLoad& load : world.loads) {
+    const Block& b = world.blocks[load.block];
+    if (!b.fixed) load.current += displacement(load.current - b.moments.centroid, increments_of(b, d));
+  }
+  for (Block& b : world.blocks) {
+    if (b.fixed) continue;
+    const Vec6 db = increments_of(b, d);
+    const Vec2 reference = b.moments.centroid;
+    for (Vec2& v : b.vertices) v += displacement(v - reference, db);
+    b.translation += db.head<2>();
+    b.rotation += db[kR0];
+    b.strain += db.segment<3>(kEx);
+    // Reported only: the global total strain seen from the block frame.
+    b.local_strain = strain_in_turned_frame(b.strain, b.rotation);
+    b.moments = polygon_moments(b.vertices);
+  }
+}
+
+// ---- treatments that keep the strain in the block frame (paper Sections 3 and 4) ----
+
+// The frame angle halfway through the step just taken; valid once the update has added the
+// step's r0 to b.rotation. The step's strain increment is measured while the block turns
+// from r to r + r0; a strain whose local rate is steady over the step averages, in the global
+// frame, to the local increment turned by the mid-step angle (its deviatoric part turns with
+// 2 theta, and the mean of exp(2 i theta) over the step points at the mid angle). The start
+// or the end angle (the paper's Eq. 17 uses the end) is off by r0/2, an error of order
+// r0 x the increment; the mid angle leaves r0^2 x the increment and is symmetric in time.
+double mid_step_frame_angle(const Block& b, const Vec6& db) { return b.rotation - 0.5 * db[kR0]; }
+
+// The step's strain increment in the block frame (paper Eq. 17, sign corrected).
+Vec3 local_increment(const Block& b, const Vec6& db) {
+  return strain_in_turned_frame(db.segment<3>(kEx), mid_step_frame_angle(b, db));
+}
+
+// x = xc + A (X - Xc): the block's map from its initial configuration.
+Vec2 place(const Block& b, const Mat2& a, const Vec2& material_point) {
+  return b.initial_centroid + b.translation + a * (material_point - b.initial_centroid);
+}
+
+// Accumulates translation, rotation (Eqs. 14, 15) and local strain (Eqs. 16, 17), derives the
+// global strain (Eq. 18), then places vertices, pins and loads from their material points by
+// the linear part frame_map(r, e^) (consistent Eq. 19, or as printed). The current centroid
+// of a homogeneously deformed polygon is the image of the initial one, so xc (the reference
+// point of the next step) stays the centroid.
+template <class FrameMap>
+void rebuild_in_frame(World& world, const Eigen::VectorXd& d, FrameMap frame_map) {
+  std::vector<Mat2> maps(world.blocks.size(), Mat2::Identity());
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    Block& b = world.blocks[i];
+    if (b.fixed) continue;
+    const Vec6 db = increments_of(b, d);
+    b.translation += db.head<2>();
+    b.rotation += db[kR0];
+    b.local_strain += local_increment(b, db);
+    b.strain = strain_from_turned_frame(b.local_strain, b.rotation);
+    maps[i] = frame_map(b.rotation, b.local_strain);
+    for (std::size_t k = 0; k < b.vertices.size(); ++k) {
+      b.vertices[k] = place(b, maps[i], b.initial_vertices[k]);
+    }
+    b.moments = polygon_moments(b.vertices);
+  }
+  for (Pin& pin : world.pins) {
+    const Block& b = world.blocks[pin.block];
+    if (!b.fixed) pin.current = place(b, maps[pin.block], pin.anchor);
+  }
+  for (PointLoad& load : world.loads) {
+    const Block& b = world.blocks[load.block];
+    if (!b.fixed) load.current = place(b, maps[load.block], load.initial);
+  }
 }
 
 }  // namespace
@@ -31,41 +113,65 @@ double max_vertex_displacement(const World& world, const Eigen::VectorXd& d) {
 
 void update_configuration(World& world, const Eigen::VectorXd& d) {
   switch (world.control.rotation_update) {
-    case RotationUpdate::Original:
-      break;  // the only treatment so far; the paper's others arrive with issue 4
+    case RotationUpdate::Original: {
+      // Shi 1988: x += T(x - x0) d with the first-order rotation column (paper Eq. 2).
+      const LinearT t = shi_t();
+      move_by_increments(world, d, [&t](const Vec2& offset, const Vec6& db) -> Vec2 {
+        return t.at(offset) * db;
+      });
+      return;
+    }
+    case RotationUpdate::SecondOrder:  // Eq. 8 with cos r0 = 1 - r0^2/2, sin r0 = r0
+      move_by_increments(world, d, second_order_displacement);
+      return;
+    case RotationUpdate::PostAdjustment:  // Eq. 8, exact, after the open-close loop converged
+      move_by_increments(world, d, finite_rotation_displacement);
+      return;
+    case RotationUpdate::LocalFrame:  // Eq. 19, consistent: x = xc + R(r)(I + E^)(X - Xc)
+      rebuild_in_frame(world, d, frame_map);
+      return;
+    case RotationUpdate::LocalFrameAsPrinted:  // Eq. 19 as printed: x = xc + (R + E)(X - Xc)
+      rebuild_in_frame(world, d, frame_map_as_printed);
+      return;
+    case RotationUpdate::SinVariable:
+    case RotationUpdate::FiniteRotation:
+      break;  // they change T inside the step; the scene reader rejects them
   }
-  const LinearT t = shi_t();
-  // Pins and loads first: they need each block's reference point from the step's start.
-  for (Pin& pin : world.pins) {
-    const Block& b = world.blocks[pin.block];
-    if (!b.fixed) move_point_original(t, b.moments.centroid, increments_of(b, d), pin.current);
-  }
-  for (PointLoad& load : world.loads) {
-    const Block& b = world.blocks[load.block];
-    if (!b.fixed) move_point_original(t, b.moments.centroid, increments_of(b, d), load.current);
-  }
-  for (Block& b : world.blocks) {
-    if (b.fixed) continue;
-    const Vec6 db = increments_of(b, d);
-    const Vec2 reference = b.moments.centroid;
-    for (Vec2& v : b.vertices) move_point_original(t, reference, db, v);
-    b.rotation += db[kR0];
-    b.strain += db.segment<3>(kEx);
-    b.moments = polygon_moments(b.vertices);
-  }
+  throw std::logic_error("rotation_update \"" +
+                         std::string(rotation_update_name(world.control.rotation_update)) +
+                         "\" is not implemented yet (issue 4)");
 }
 
 void update_stresses(World& world) {
+  const bool in_block_frame = keeps_block_frame(world.control.rotation_update);
   for (Block& b : world.blocks) {
-    if (!b.fixed) b.stress = b.initial_stress + b.elastic * b.strain;
+    if (b.fixed) continue;
+    if (in_block_frame) {
+      // Paper Eq. (20) in the block frame, from total strain only (never added), with the
+      // initial stress held in that frame; then turned to the global frame.
+      b.stress = stress_from_turned_frame(b.initial_stress + b.elastic * b.local_strain, b.rotation);
+    } else {
+      b.stress = b.initial_stress + b.elastic * b.strain;
+    }
   }
 }
 
 void update_velocities(World& world, const Eigen::VectorXd& d, const StepContext& ctx) {
+  const bool in_block_frame = keeps_block_frame(world.control.rotation_update);
   for (Block& b : world.blocks) {
     if (b.fixed) continue;
+    const Vec6 db = increments_of(b, d);
     const Vec6 v0 = ctx.dynamic_coefficient * b.velocity;
-    b.velocity = 2.0 / ctx.dt * increments_of(b, d) - v0;
+    b.velocity = 2.0 / ctx.dt * db - v0;
+    if (in_block_frame) {
+      // Paper Section 4, steps 6 and 7: the strain rates advance in the block frame with the
+      // local increment; step 8: turned to the global frame for the next step's inertia term.
+      b.local_strain_rate =
+          2.0 / ctx.dt * local_increment(b, db) - ctx.dynamic_coefficient * b.local_strain_rate;
+      b.velocity.segment<3>(kEx) = strain_from_turned_frame(b.local_strain_rate, b.rotation);
+    } else {
+      b.local_strain_rate = strain_in_turned_frame(b.velocity.segment<3>(kEx), b.rotation);
+    }
   }
 }
 

@@ -13,15 +13,27 @@ namespace dda {
 // The largest distance any vertex of a free block would move with increments d (m).
 double max_vertex_displacement(const World& world, const Eigen::VectorXd& d);
 
-// Moves vertices, pins and point loads and accumulates rotation and strain.
-// Original (Shi): every point x += T(x) d with the first-order T; strains added globally.
+// Moves vertices, pins and point loads and accumulates translation, rotation and strain by
+// the treatment in world.control.rotation_update (one switch; paper Sections 2-4):
+//   original, second_order, post_adjustment: every point x += displacement(x - x0, d)
+//     (Eq. 2 with the first-order T; Eq. 8 with cos r = 1 - r^2/2, sin r = r; Eq. 8 exact),
+//     strains added in the global frame (Eq. 13);
+//   local_frame, local_frame_as_printed: strain increments turned into the block frame and
+//     added there (Eqs. 16-17), every point placed from its material point at the start by
+//     x = xc + A (X - Xc) (Eq. 19: A = R(r)(I + E^), or as printed A = R(r) + R E^ R^T).
+// Throws std::logic_error for sin_variable and finite_rotation (not implemented yet; the
+// scene reader rejects them).
 void update_configuration(World& world, const Eigen::VectorXd& d);
 
-// Stress from total strain (elastic): s = s_initial + D e.
+// Stress from total strain (elastic, never added): s = s_initial + D e in the global frame,
+// or, for the local-frame treatments, s_initial + D e^ in the block frame turned to the
+// global frame (Eq. 20). Run after update_configuration.
 void update_stresses(World& world);
 
 // Shi's velocity update v1 = 2 d / dt - v0, with v0 the (dynamic-coefficient scaled)
-// velocity that entered the step.
+// velocity that entered the step. The local-frame treatments advance the strain rates in the
+// block frame instead and turn them to the global frame (paper Section 4, steps 6-8). Run
+// after update_configuration (it reads the frame angle the update reached).
 void update_velocities(World& world, const Eigen::VectorXd& d, const StepContext& ctx);
 
 }  // namespace dda

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kinematics/types.hpp"
@@ -12,9 +13,48 @@
 
 namespace dda {
 
-// How the block configuration is moved at the end of a step (paper Sections 2 and 3).
-// Only Shi's original update exists so far; the paper's treatments come with issue 4.
-enum class RotationUpdate { Original };
+// How the block configuration is moved at the end of a step (paper Sections 2 and 3; the
+// scene names are in kRotationUpdateNames). SinVariable and FiniteRotation change T inside
+// the step and are not implemented yet: the reader rejects them.
+enum class RotationUpdate {
+  Original,             // Shi: x += T d, strains added globally (paper Eqs. 2, 13)
+  SecondOrder,          // MacLaughlin and Sitar: Eq. 8 with cos r = 1 - r^2/2, sin r = r
+  PostAdjustment,       // Ke; Koo and Chern: Eq. 8 with the exact cos r, sin r
+  SinVariable,          // Cheng and Zhang: T' with sin r0 as unknown (Eqs. 9-12); not yet
+  LocalFrame,           // Jiang and Zheng Sections 3-4, x = xc + R(r)(I + E^)(X - Xc)
+  LocalFrameAsPrinted,  // the same with Eq. 19 as printed (global strain on X - Xc)
+  FiniteRotation,       // local frame plus the secant rotation column in T; not yet
+};
+
+struct RotationUpdateName {
+  RotationUpdate value;
+  std::string_view name;
+};
+
+// The scene names of the treatments (the contract of control.rotation_update).
+inline constexpr RotationUpdateName kRotationUpdateNames[] = {
+    {RotationUpdate::Original, "original"},
+    {RotationUpdate::SecondOrder, "second_order"},
+    {RotationUpdate::PostAdjustment, "post_adjustment"},
+    {RotationUpdate::SinVariable, "sin_variable"},
+    {RotationUpdate::LocalFrame, "local_frame"},
+    {RotationUpdate::LocalFrameAsPrinted, "local_frame_as_printed"},
+    {RotationUpdate::FiniteRotation, "finite_rotation"},
+};
+
+inline std::string_view rotation_update_name(RotationUpdate u) {
+  for (const RotationUpdateName& n : kRotationUpdateNames) {
+    if (n.value == u) return n.name;
+  }
+  return "?";  // unreachable: every value has a name
+}
+
+// Treatments that keep total strain, strain rates and stress in the block's own frame
+// (paper Section 3) rather than adding strain increments in the global frame (Eq. 13).
+inline bool keeps_block_frame(RotationUpdate u) {
+  return u == RotationUpdate::LocalFrame || u == RotationUpdate::LocalFrameAsPrinted ||
+         u == RotationUpdate::FiniteRotation;
+}
 
 struct Material {
   std::string name;

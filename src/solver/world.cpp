@@ -49,6 +49,7 @@ World make_world(const Scene& scene) {
     b.stress = spec.initial_stress;
     b.moments = polygon_moments(b.vertices);
     b.initial_area = b.moments.area;
+    b.initial_centroid = b.moments.centroid;
     assert(b.moments.area > 0.0);
     if (!b.fixed) {
       b.first_dof = world.dof_count;
@@ -75,7 +76,7 @@ World make_world(const Scene& scene) {
     world.pins.push_back(Pin{pin.block, pin.point, pin.point});
   }
   for (const PointLoadSpec& load : scene.point_loads) {
-    world.loads.push_back(PointLoad{load.block, load.point, load.force});
+    world.loads.push_back(PointLoad{load.block, load.point, load.point, load.force});
   }
   return world;
 }

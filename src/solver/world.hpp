@@ -16,33 +16,50 @@ namespace dda {
 
 struct Block {
   // ---- cold: fixed at construction ----
-  Polygon initial_vertices;
+  Polygon initial_vertices;     // X: the material points of the vertices at the start
+  Vec2 initial_centroid = Vec2::Zero();  // Xc: the reference point at the start
   int material = 0;
   bool fixed = false;
   double density = 0.0;   // kg/m^3
   Mat3 elastic = Mat3::Zero();  // D, s = D e (plane strain or stress)
+  // Given in the global frame at the start, where the block frame is the global one; the
+  // local-frame treatments hold it in the block frame (it turns with the block).
   Vec3 initial_stress = Vec3::Zero();
   double initial_area = 0.0;
   int first_dof = -1;  // index of u0 in the global system; -1 for fixed blocks
 
   // ---- hot: advanced every step ----
-  Polygon vertices;               // current configuration
-  Moments moments;                // of `vertices` (reference point = current centroid)
-  double rotation = 0.0;          // total rotation r0 (rad, counter-clockwise)
-  Vec3 strain = Vec3::Zero();     // total strain [exx, eyy, gxy], global frame
-  Vec3 stress = Vec3::Zero();     // [sxx, syy, sxy] (Pa), global frame
-  Vec6 velocity = Vec6::Zero();   // rates of the six unknowns at the end of the last step
+  Polygon vertices;                 // current configuration
+  Moments moments;                  // of `vertices` (reference point = current centroid)
+  Vec2 translation = Vec2::Zero();  // total displacement of the reference point (paper Eq. 14)
+  // Total rotation r0 (rad, counter-clockwise; paper Eq. 15). Also the frame angle: the
+  // block's frame (paper Fig. 1) is the global frame turned by this angle.
+  double rotation = 0.0;
+  Vec3 strain = Vec3::Zero();  // total strain [exx, eyy, gxy], global frame
+  // Total strain in the block frame [e^x, e^y, g^xy]. Accumulated there by the local-frame
+  // treatments (paper Eq. 16); the others accumulate `strain` and derive this from it.
+  Vec3 local_strain = Vec3::Zero();
+  Vec3 stress = Vec3::Zero();  // [sxx, syy, sxy] (Pa), global frame
+  // Rates of the six unknowns at the end of the last step (strain rates in the global frame).
+  Vec6 velocity = Vec6::Zero();
+  // Strain rates in the block frame (paper Section 4, steps 6 to 9): advanced by the
+  // local-frame treatments, which turn them into velocity's strain rates; the others derive
+  // them from velocity.
+  Vec3 local_strain_rate = Vec3::Zero();
 };
 
 // A pin holds a material point of a block at its anchor with a penalty spring.
 struct Pin {
   int block = -1;
-  Vec2 anchor = Vec2::Zero();   // where the point was at the start
+  // Where the point was at the start: also its material point X for the local-frame
+  // treatments, which place it by the block's map from the initial configuration.
+  Vec2 anchor = Vec2::Zero();
   Vec2 current = Vec2::Zero();  // where that material point is now
 };
 
 struct PointLoad {
   int block = -1;
+  Vec2 initial = Vec2::Zero();  // the loaded material point at the start
   Vec2 current = Vec2::Zero();  // present position of the loaded material point
   Vec2 force = Vec2::Zero();    // N per metre of thickness, constant in the global frame
 };
