@@ -1,0 +1,23 @@
+// Minimal CSV and markdown helpers: numbers at full precision in the CSVs (for plots and
+// re-checks), at a few significant digits in the report.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace dda::paper {
+
+// Opens `dir/name` for writing and writes the header line; throws std::runtime_error
+// naming the file when it cannot be opened.
+std::ofstream open_csv(const std::filesystem::path& dir, const std::string& name,
+                       const std::string& header);
+
+// Shortest round-trip form of a double (17 significant digits at most).
+std::string full(double x);
+// `digits` significant digits, scientific when small or large ("1.23e-05").
+std::string sig(double x, int digits = 3);
+// Fixed with `decimals` decimals ("0.707107").
+std::string fixed(double x, int decimals);
+
+}  // namespace dda::paper

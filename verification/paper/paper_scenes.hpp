@@ -1,0 +1,80 @@
+// The scenes of the paper reproduction (Jiang and Zheng 2015, Section 5) and of the
+// speed-against-error sweeps, built in code as plain Scene structs (no JSON), so that the
+// program depends only on the solver's API. Geometry lives here and nowhere else.
+#pragma once
+
+#include <vector>
+
+#include "solver/scene.hpp"
+
+namespace dda::paper {
+
+// Paper Section 5: unit weight 28 kN/m^3 (density = 28e3 / 9.81 kg/m^3), E = 2 GPa, nu = 0.25.
+inline constexpr double kGravity = 9.81;
+inline constexpr double kDensity = 28e3 / kGravity;
+inline constexpr double kYoung = 2e9;
+inline constexpr double kPoisson = 0.25;
+
+// Regular octagon of circumradius `r` about `centre`, counter-clockwise, first vertex at
+// angle `first_angle` (rad) from the +x axis.
+Polygon regular_octagon(const Vec2& centre, double r, double first_angle);
+
+// ---- Table 1: the falling octagon on a staircase of fixed blocks ----
+
+// The staircase: `steps` fixed rectangular blocks going down to the right, each `tread` wide
+// and `riser` lower than the one before, then a flat run-out (top at y = 0) closed by a wall
+// that keeps the rock in the scene; all stand on y = base_y.
+struct Staircase {
+  int steps = 0;
+  double tread = 0.0;    // m
+  double riser = 0.0;    // m
+  double runout = 0.0;   // m, flat floor after the last step
+  double wall_width = 0.0, wall_height = 0.0;  // m, the wall at the end of the run-out
+  double base_y = 0.0;   // m, the bottom of every fixed block
+};
+Staircase table1_staircase();
+std::vector<Polygon> staircase_blocks(const Staircase& s);
+
+// How the rock is launched: its centre, the phase of its first vertex, and its initial
+// velocity [vx, vy, omega] at the centroid.
+struct Launch {
+  Vec2 centre;
+  double first_angle = 0.0;
+  Vec3 velocity = Vec3::Zero();
+};
+Launch table1_launch(const Staircase& s);
+
+// One of the paper's three time-step settings of Table 1.
+struct FallingSetting {
+  const char* name;                // short key used in the CSVs
+  const char* label;               // as the paper's column header
+  std::vector<double> time_steps;  // used cyclically
+  int steps;
+  double max_displacement_ratio;
+};
+std::vector<FallingSetting> table1_settings();
+
+// The whole scene: staircase (fixed), octagon (free, the LAST block), friction and
+// cohesion 0, penalty and allowed penetration "auto".
+Scene falling_octagon_scene(const FallingSetting& setting, int steps, RotationUpdate update);
+
+// ---- Tables 2 and 3: the swinging octagon ----
+
+// Circumscribed diameter 10, vertex A = (0, 0), E = (10, 0); the vertices are A..H
+// counter-clockwise (A, then B below-left of the centre, C = (5, -5) at the bottom, ...).
+Polygon swinging_octagon();
+inline const Vec2 kSwingPin{9.5, 0.0};
+// dt 0.02 s, max displacement ratio 0.1, pinned at (9.5, 0), gravity.
+Scene swinging_octagon_scene(int steps, RotationUpdate update);
+
+// ---- speed against error ----
+
+// A regular octagon of circumradius 1 spinning at `omega` about its centroid, no gravity.
+Scene spinning_block_scene(double dt, int steps, double omega, RotationUpdate update);
+
+// A rigid pendulum: a regular octagon of circumradius 1 centred at the origin, pinned at
+// (arm, 0) so that it starts horizontal (theta0 = -90 degrees from the downward vertical).
+inline constexpr double kPendulumArm = 0.5;
+Scene pendulum_scene(double dt, int steps, RotationUpdate update);
+
+}  // namespace dda::paper

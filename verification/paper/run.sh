@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# The paper reproduction in one command (issue 4): Jiang and Zheng (2015), Section 5, for
+# every rotation treatment. Prints the report and leaves report.md, the CSVs and the PNGs
+# in OUT_DIR.
+#
+#   verification/paper/run.sh OUT_DIR [--smoke]
+#
+# It builds nothing: it runs $DDA_BUILD_DIR/dda_verify_paper (default: build/release of this
+# repository; build it first with `cmake --preset release && cmake --build --preset release`),
+# then draws the PNGs with Debian's /usr/bin/python3 (numpy, matplotlib; the python3 on PATH
+# may be another interpreter without them).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then
+  echo "usage: $0 OUT_DIR [--smoke]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
+  exit 2
+fi
+out="$1"
+shift
+exe="${DDA_BUILD_DIR:-$root/build/release}/dda_verify_paper"
+if [ ! -x "$exe" ]; then
+  echo "$0: $exe not found; build it first (cmake --preset release && cmake --build --preset release)" >&2
+  echo "    or point DDA_BUILD_DIR at a build directory that has it" >&2
+  exit 2
+fi
+"$exe" --out "$out" "$@"
+/usr/bin/python3 "$here/plot_paper.py" "$out"

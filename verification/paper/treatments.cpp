@@ -1,0 +1,73 @@
+#include "treatments.hpp"
+
+#include <chrono>
+#include <exception>
+#include <stdexcept>
+
+#include "solver/step.hpp"
+
+namespace dda::paper {
+
+std::vector<Treatment> treatments_for(bool smoke) {
+  if (!smoke) return all_treatments();
+  std::vector<Treatment> picked;
+  for (const Treatment& t : all_treatments()) {
+    if (t.name == "original" || t.name == "post_adjustment" || t.name == "local_frame") {
+      picked.push_back(t);
+    }
+  }
+  return picked;
+}
+
+std::string_view status_word(RunStatus s) {
+  switch (s) {
+    case RunStatus::Completed: return "completed";
+    case RunStatus::Diverged: return "diverged";
+    case RunStatus::NotAvailable: return "not available yet";
+  }
+  return "?";
+}
+
+RunResult run_world(World& world, const Observer& observe) {
+  RunResult result;
+  StepWorkspace ws;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    observe(world);
+    while (!is_finished(world)) {
+      const StepOutcome outcome = advance_step(world, ws, result.stats);
+      if (!outcome.ok) {
+        result.status = RunStatus::Diverged;
+        result.message = outcome.message;
+        break;
+      }
+      observe(world);
+    }
+  } catch (const std::logic_error& e) {
+    // The library throws logic_error for a treatment it names but does not implement; a run
+    // that already completed steps with it hit something else and counts as diverged.
+    result.status = world.step == 0 ? RunStatus::NotAvailable : RunStatus::Diverged;
+    result.message = e.what();
+  } catch (const std::exception& e) {
+    result.status = RunStatus::Diverged;
+    result.message = e.what();
+  }
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.steps_done = world.step;
+  result.stats.steps = world.step;
+  return result;
+}
+
+std::string describe(const RunResult& r) {
+  switch (r.status) {
+    case RunStatus::Completed: return "completed";
+    case RunStatus::NotAvailable: return "not available yet";
+    case RunStatus::Diverged:
+      // The step's own messages already start "step k (t = ...): ..."; others do not.
+      if (r.message.rfind("step ", 0) == 0) return "diverged at " + r.message;
+      return "diverged at step " + std::to_string(r.steps_done + 1) + ": " + r.message;
+  }
+  return "?";
+}
+
+}  // namespace dda::paper

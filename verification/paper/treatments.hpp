@@ -1,0 +1,65 @@
+// The rotation treatments the reproduction compares, and one way to run a world with any of
+// them that never throws: a treatment the library does not implement yet is reported as
+// "not available yet", a failed step as "diverged at step k".
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "solver/run.hpp"
+#include "solver/scene.hpp"
+#include "solver/world.hpp"
+
+namespace dda::paper {
+
+struct Treatment {
+  std::string_view name;   // the scene name (issue 4's contract)
+  RotationUpdate value;
+  std::string_view paper;  // the paper's row for it, empty if the paper has none
+};
+
+// Adding a treatment is one line here. Every name of issue 4 has an enum value now; whether
+// the library implements it is found out at run time (run_world), so the table need not
+// change as the other engineers finish theirs.
+inline const std::vector<Treatment>& all_treatments() {
+  static const std::vector<Treatment> kAll = {
+      {"original", RotationUpdate::Original, "Original DDA"},
+      {"second_order", RotationUpdate::SecondOrder, ""},
+      {"post_adjustment", RotationUpdate::PostAdjustment, "Ke"},
+      {"sin_variable", RotationUpdate::SinVariable, "Cheng and Zhang"},
+      {"local_frame", RotationUpdate::LocalFrame, "Proposed"},
+      {"local_frame_as_printed", RotationUpdate::LocalFrameAsPrinted, ""},
+      {"finite_rotation", RotationUpdate::FiniteRotation, ""},
+  };
+  return kAll;
+}
+
+// The treatments a run covers: all of them, or in smoke mode three (original and the two the
+// paper recommends), to keep the CI run short.
+std::vector<Treatment> treatments_for(bool smoke);
+
+enum class RunStatus { Completed, Diverged, NotAvailable };
+std::string_view status_word(RunStatus s);
+
+struct RunResult {
+  RunStatus status = RunStatus::Completed;
+  int steps_done = 0;    // completed steps
+  std::string message;   // why it stopped early; empty when completed
+  double wall_s = 0.0;   // wall time of the stepping alone (observer included), steady_clock
+  RunStats stats;        // cuts, solves, open-close iterations
+};
+
+// Called once before the first step (world.step == 0) and after every completed step.
+using Observer = std::function<void(const World&)>;
+
+// Steps `world` until its scene is finished or a step fails. A std::logic_error from the
+// library is how it says "this rotation_update is not implemented yet"; any other exception
+// or a failed step is a divergence at that step.
+RunResult run_world(World& world, const Observer& observe);
+
+// A one-line description of a result for tables: "completed", "diverged at step 123 (...)".
+std::string describe(const RunResult& r);
+
+}  // namespace dda::paper
