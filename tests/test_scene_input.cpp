@@ -219,10 +219,6 @@ std::vector<BadScene> bad_scenes() {
        "materials.clay.model", {"unknown material model \"plastic\"", "\"elastic\""}},
       {"unknown plane mode", edit(s, "\"plane\": \"stress\"", "\"plane\": \"3d\""), "plane",
        {"unknown plane mode \"3d\"", "\"strain\", \"stress\""}},
-      {"reserved rotation update", edit(s, "\"original\"", "\"sin_variable\""),
-       "control.rotation_update", {"\"sin_variable\" is not implemented yet (issue 4)"}},
-      {"reserved rotation update finite_rotation", edit(s, "\"original\"", "\"finite_rotation\""),
-       "control.rotation_update", {"\"finite_rotation\" is not implemented yet (issue 4)"}},
       {"unknown rotation update", edit(s, "\"original\"", "\"quaternion\""),
        "control.rotation_update", {"unknown rotation update \"quaternion\"", "\"original\"",
                                    "\"local_frame_as_printed\"", "\"finite_rotation\""}},
@@ -459,13 +455,15 @@ TEST_CASE("a valid scene lands in the Scene struct field by field", "[scene][inp
   CHECK(scene.point_loads[0].block == 0);
 }
 
-TEST_CASE("every implemented rotation update is read by its name", "[scene][input]") {
+TEST_CASE("every rotation update is read by its name", "[scene][input]") {
   const std::pair<const char*, dda::RotationUpdate> names[] = {
       {"original", dda::RotationUpdate::Original},
       {"second_order", dda::RotationUpdate::SecondOrder},
       {"post_adjustment", dda::RotationUpdate::PostAdjustment},
       {"local_frame", dda::RotationUpdate::LocalFrame},
-      {"local_frame_as_printed", dda::RotationUpdate::LocalFrameAsPrinted}};
+      {"local_frame_as_printed", dda::RotationUpdate::LocalFrameAsPrinted},
+      {"sin_variable", dda::RotationUpdate::SinVariable},
+      {"finite_rotation", dda::RotationUpdate::FiniteRotation}};
   for (const auto& [name, value] : names) {
     INFO(name);
     std::string quoted = "\"";
@@ -491,7 +489,7 @@ TEST_CASE("optional keys take their documented defaults", "[scene][input]") {
   CHECK(*scene.control.end_time == 2.5);
   CHECK(scene.control.max_displacement_ratio == 0.01);
   CHECK(scene.control.dynamic_coefficient == 1.0);
-  CHECK(scene.control.rotation_update == dda::RotationUpdate::Original);
+  CHECK(scene.control.rotation_update == dda::RotationUpdate::FiniteRotation);
   CHECK_FALSE(scene.control.penalty.has_value());  // "auto"
   CHECK(scene.control.output_every == 10);
   CHECK(scene.control.max_open_close == 8);

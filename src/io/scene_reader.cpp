@@ -105,26 +105,14 @@ void read_run_length(const Field& control, ControlSettings& c) {
   if (has_end_time) c.end_time = positive_number(control.member("end_time"));
 }
 
-// sin_variable and finite_rotation change T inside the step and are not implemented yet;
-// their names are reserved so that scenes written for them get a clear "not yet".
-bool is_implemented(RotationUpdate u) {
-  return u != RotationUpdate::SinVariable && u != RotationUpdate::FiniteRotation;
-}
-
 RotationUpdate read_rotation_update(const Field& f) {
   const std::string name = f.string();
-  std::string implemented;
-  std::string not_yet;
+  std::string known_names;
   for (const RotationUpdateName& known : kRotationUpdateNames) {
-    if (name == known.name) {
-      if (!is_implemented(known.value)) f.fail("\"" + name + "\" is not implemented yet (issue 4)");
-      return known.value;
-    }
-    std::string& list = is_implemented(known.value) ? implemented : not_yet;
-    list += (list.empty() ? "\"" : ", \"") + std::string(known.name) + "\"";
+    if (name == known.name) return known.value;
+    known_names += (known_names.empty() ? "\"" : ", \"") + std::string(known.name) + "\"";
   }
-  f.fail("unknown rotation update \"" + name + "\" (known: " + implemented +
-         "; not implemented yet: " + not_yet + ")");
+  f.fail("unknown rotation update \"" + name + "\" (known: " + known_names + ")");
 }
 
 // A positive number, or "auto" (nullopt); `unit` is shown in the message.

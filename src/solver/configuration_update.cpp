@@ -1,8 +1,7 @@
 #include "solver/configuration_update.hpp"
 
 #include <algorithm>
-#include <stdexcept>
-#include <string>
+#include <cmath>
 
 #include "kinematics/block_matrices.hpp"
 #include "kinematics/frames.hpp"
@@ -96,22 +95,45 @@ void rebuild_in_frame(World& world, const Eigen::VectorXd& d, FrameMap frame_map
   }
 }
 
-}  // namespace
 
-double max_vertex_displacement(const World& world, const Eigen::VectorXd& d) {
-  const LinearT t = shi_t();
-  double largest = 0.0;
-  for (const Block& b : world.blocks) {
-    if (b.fixed) continue;
-    const Vec6 db = increments_of(b, d);
-    for (const Vec2& v : b.vertices) {
-      largest = std::max(largest, (t.at(v - b.moments.centroid) * db).norm());
-    }
+// sin_variable (Cheng and Zhang, paper Eqs. 9-12): points move by T' d' with the same T'
+// as the step (the last step's r0 inside it) and d' = (u0, v0, sin r0, ex, ey, gxy); strains
+// are added in the global frame. The T' of a block is taken before its last increment is
+// overwritten.
+void move_by_sine_column(World& world, const Eigen::VectorXd& d) {
+  const auto displacement = [&world, &d](int block, const Vec2& x) -> Vec2 {
+    const Block& b = world.blocks[static_cast<std::size_t>(block)];
+    Vec6 db = increments_of(b, d);
+    db[kR0] = std::sin(db[kR0]);
+    const LinearT t = t_with_rotation_column(sine_rotation_column(b.last_rotation_increment));
+    return t.at(x - b.moments.centroid) * db;
+  };
+  for (Pin& pin : world.pins) {
+    if (!world.blocks[pin.block].fixed) pin.current += displacement(pin.block, pin.current);
   }
-  return largest;
+  for (PointLoad& load : world.loads) {
+    if (!world.blocks[load.block].fixed) load.current += displacement(load.block, load.current);
+  }
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    Block& b = world.blocks[i];
+    if (b.fixed) continue;
+    for (Vec2& v : b.vertices) v += displacement(static_cast<int>(i), v);
+    const Vec6 db = increments_of(b, d);
+    b.translation += db.head<2>();
+    b.rotation += db[kR0];
+    b.strain += db.segment<3>(kEx);
+    b.local_strain = strain_in_turned_frame(b.strain, b.rotation);
+    b.moments = polygon_moments(b.vertices);
+  }
 }
 
-void update_configuration(World& world, const Eigen::VectorXd& d) {
+void remember_rotation_increments(World& world, const Eigen::VectorXd& d) {
+  for (Block& b : world.blocks) {
+    if (!b.fixed) b.last_rotation_increment = d[b.first_dof + kR0];
+  }
+}
+
+void move_blocks(World& world, const Eigen::VectorXd& d) {
   switch (world.control.rotation_update) {
     case RotationUpdate::Original: {
       // Shi 1988: x += T(x - x0) d with the first-order rotation column (paper Eq. 2).
@@ -133,13 +155,33 @@ void update_configuration(World& world, const Eigen::VectorXd& d) {
     case RotationUpdate::LocalFrameAsPrinted:  // Eq. 19 as printed: x = xc + (R + E)(X - Xc)
       rebuild_in_frame(world, d, frame_map_as_printed);
       return;
-    case RotationUpdate::SinVariable:
-    case RotationUpdate::FiniteRotation:
-      break;  // they change T inside the step; the scene reader rejects them
+    case RotationUpdate::SinVariable:  // T' d' with the step's T' (Eqs. 10-12)
+      move_by_sine_column(world, d);
+      return;
+    case RotationUpdate::FiniteRotation:  // local_frame's map; the step used the secant T
+      rebuild_in_frame(world, d, frame_map);
+      return;
   }
-  throw std::logic_error("rotation_update \"" +
-                         std::string(rotation_update_name(world.control.rotation_update)) +
-                         "\" is not implemented yet (issue 4)");
+}
+
+}  // namespace
+
+double max_vertex_displacement(const World& world, const Eigen::VectorXd& d) {
+  const LinearT t = shi_t();
+  double largest = 0.0;
+  for (const Block& b : world.blocks) {
+    if (b.fixed) continue;
+    const Vec6 db = increments_of(b, d);
+    for (const Vec2& v : b.vertices) {
+      largest = std::max(largest, (t.at(v - b.moments.centroid) * db).norm());
+    }
+  }
+  return largest;
+}
+
+void update_configuration(World& world, const Eigen::VectorXd& d) {
+  move_blocks(world, d);
+  remember_rotation_increments(world, d);
 }
 
 void update_stresses(World& world) {

@@ -21,8 +21,10 @@ double max_vertex_displacement(const World& world, const Eigen::VectorXd& d);
 //   local_frame, local_frame_as_printed: strain increments turned into the block frame and
 //     added there (Eqs. 16-17), every point placed from its material point at the start by
 //     x = xc + A (X - Xc) (Eq. 19: A = R(r)(I + E^), or as printed A = R(r) + R E^ R^T).
-// Throws std::logic_error for sin_variable and finite_rotation (not implemented yet; the
-// scene reader rejects them).
+//   sin_variable: points moved by T' d' with the step's T' (Cheng and Zhang, Eqs. 10-12;
+//     d holds r0 = asin of the solved unknown), strains added in the global frame;
+//   finite_rotation: as local_frame (the step itself used the secant rotation column).
+// Every treatment then records each block's r0 as its last_rotation_increment.
 void update_configuration(World& world, const Eigen::VectorXd& d);
 
 // Stress from total strain (elastic, never added): s = s_initial + D e in the global frame,

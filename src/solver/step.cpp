@@ -30,6 +30,14 @@ constexpr double kSmallestStepShare = 1e-9;
 // Times closer than this share of a step count as equal (end_time reached).
 constexpr double kTimeRoundOff = 1e-9;
 
+// finite_rotation iterates each block's secant angle r* to the step's own r0. A secant
+// column at r* instead of r0 moves a point at distance l from the reference point by about
+// l |r0| |r0 - r*| / 2 off the exact rotation (the column's derivative at small angles is
+// -I/2): the iteration stops when that is below this share of w0 for every block, e.g.
+// 1e-12 x 5 m per step on the paper's swinging octagon (5e-9 m over its 5000 steps). A
+// block that barely turns is done after one solve.
+constexpr double kSecantDisplacementShare = 1e-12;
+
 StepContext make_step_context(const World& world, double dt) {
   StepContext ctx;
   ctx.dt = dt;
@@ -37,6 +45,57 @@ StepContext make_step_context(const World& world, double dt) {
   ctx.dynamic_coefficient = world.control.dynamic_coefficient;
   ctx.allowed_displacement = world.control.max_displacement_ratio * world.w0;
   return ctx;
+}
+
+// The treatments that change T inside the step: sin_variable uses Cheng and Zhang's column
+// with the last step's r0 (paper Eq. 11); finite_rotation the secant column at r* (starting
+// from the last step's r0, then following the step's own). The rest keep Shi's column.
+bool changes_t(RotationUpdate u) {
+  return u == RotationUpdate::SinVariable || u == RotationUpdate::FiniteRotation;
+}
+
+void set_rotation_columns(const World& world, const std::vector<double>& angles,
+                          StepContext& ctx) {
+  ctx.rotation_columns.assign(world.blocks.size(), quarter_turn());
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    if (world.blocks[i].fixed) continue;
+    ctx.rotation_columns[i] = world.control.rotation_update == RotationUpdate::SinVariable
+                                  ? sine_rotation_column(angles[i])
+                                  : secant_rotation_column(angles[i]);
+  }
+}
+
+std::vector<double> last_rotation_increments(const World& world) {
+  std::vector<double> angles(world.blocks.size(), 0.0);
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    angles[i] = world.blocks[i].last_rotation_increment;
+  }
+  return angles;
+}
+
+// finite_rotation: moves every block's secant angle to the r0 just solved; returns how many
+// were further from it than the tolerance (0: the step's T is consistent with its r0).
+int follow_secant_angles(const World& world, const Eigen::VectorXd& d,
+                         std::vector<double>& angles) {
+  const double tolerance = kSecantDisplacementShare * world.w0;
+  int moved = 0;
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
+    if (b.fixed) continue;
+    const double r0 = d[b.first_dof + kR0];
+    double reach = 0.0;  // farthest vertex from the reference point
+    for (const Vec2& v : b.vertices) reach = std::max(reach, (v - b.moments.centroid).norm());
+    if (0.5 * reach * std::abs(r0) * std::abs(r0 - angles[i]) > tolerance) ++moved;
+    angles[i] = r0;
+  }
+  return moved;
+}
+
+// sin_variable solves for sin r0 in the rotation slot; the stages after the loop want r0.
+void sine_unknowns_to_angles(const World& world, Eigen::VectorXd& d) {
+  for (const Block& b : world.blocks) {
+    if (!b.fixed) d[b.first_dof + kR0] = std::asin(std::clamp(d[b.first_dof + kR0], -1.0, 1.0));
+  }
 }
 
 std::string describe_failure(const World& world, const std::string& what) {
@@ -108,23 +167,32 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
                                              "the contacts or the motion do not settle")};
     }
-    const StepContext ctx = make_step_context(world, dt);
+    StepContext ctx = make_step_context(world, dt);
+    const RotationUpdate treatment = world.control.rotation_update;
+    std::vector<double> angles;  // per block: the angle inside T's rotation column
+    if (changes_t(treatment)) {
+      angles = last_rotation_increments(world);
+      set_rotation_columns(world, angles, ctx);
+    }
     ws.contacts = contacts_at_start;  // states as they entered the step, no changes counted
 
     // 3. Open-close loop: assemble, solve, let every contact choose its next mode, until
-    //    no contact changes. The first iteration factorises; later ones update the factor by
-    //    the springs of the contacts that changed (CholmodSolver::solve_modified).
+    //    no contact changes (and, for finite_rotation, until each block's secant angle is its
+    //    own r0). The first iteration factorises; later ones update the factor by the springs
+    //    of the contacts that changed (CholmodSolver::solve_modified), unless T changed.
     assemble(world, ctx, ws.block_terms);
     Eigen::VectorXd d;
     int open_close = 0;
     int changed = 0;
+    int secants_moved = 0;
     do {
       ws.system = ws.block_terms;
       add_contact_terms(world, ws.contacts, ctx, ws.system);
       clock.lap(times.assemble);
+      const bool refactor = open_close == 0 || secants_moved > 0;
       const std::optional<Eigen::VectorXd> solved =
-          open_close == 0 ? ws.solver.solve(ws.system)
-                          : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
+          refactor ? ws.solver.solve(ws.system)
+                   : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
       clock.lap(times.solve);
       ++stats.iterations;
       ++open_close;
@@ -136,9 +204,17 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       const std::vector<SpringState> before = spring_states(ws.contacts);
       changed = update_contact_modes(world, ws.contacts, d, ctx);
       spring_changes(world, ws.contacts, before, ctx, ws.springs_added, ws.springs_removed);
+      if (treatment == RotationUpdate::FiniteRotation) {
+        secants_moved = follow_secant_angles(world, d, angles);
+        if (secants_moved > 0) {
+          set_rotation_columns(world, angles, ctx);
+          assemble(world, ctx, ws.block_terms);
+        }
+      }
       clock.lap(times.contact_update);
-    } while (changed > 0 && open_close < world.control.max_open_close);
-    if (changed > 0) {
+    } while ((changed > 0 || secants_moved > 0) && open_close < world.control.max_open_close);
+    if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, d);
+    if (changed > 0 || secants_moved > 0) {
       ++stats.cut_steps;
       ++stats.cuts_for_open_close;
       dt *= kContactCut;

@@ -46,6 +46,9 @@ struct Block {
   // local-frame treatments, which turn them into velocity's strain rates; the others derive
   // them from velocity.
   Vec3 local_strain_rate = Vec3::Zero();
+  // The last step's rotation increment r0 (rad): sin_variable builds T' from it (Cheng and
+  // Zhang), finite_rotation starts its secant iteration from it.
+  double last_rotation_increment = 0.0;
 };
 
 // A pin holds a material point of a block at its anchor with a penalty spring.

@@ -17,7 +17,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: dda_verify_paper --out DIR [--smoke]\n"
     "  --out DIR  write report.md and the CSVs into DIR (created if missing)\n"
-    "  --smoke    a short run for CI (few steps, three treatments)\n";
+    "  --smoke    a short run for CI (few steps; original, local_frame, finite_rotation)\n";
 
 }  // namespace
 

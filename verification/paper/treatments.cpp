@@ -12,7 +12,7 @@ std::vector<Treatment> treatments_for(bool smoke) {
   if (!smoke) return all_treatments();
   std::vector<Treatment> picked;
   for (const Treatment& t : all_treatments()) {
-    if (t.name == "original" || t.name == "post_adjustment" || t.name == "local_frame") {
+    if (t.name == "original" || t.name == "local_frame" || t.name == "finite_rotation") {
       picked.push_back(t);
     }
   }
