@@ -13,16 +13,21 @@ namespace {
 
 dda::World brick_wall(int n) {
   dda::Scene s;
-  s.materials.push_back(dda::Material{"rock", 2700.0, 1e9, 0.25});
+  s.materials.push_back(dda::elastic_material("rock", 2700.0, 1e9, 0.25));
   s.joint_materials[0] = dda::JointMaterial{"default", 30.0, 0.0, 0.0};
   s.control.time_steps = {0.002};
   s.control.steps = 1 << 30;
-  s.control.max_displacement_ratio = 0.01;
   // A settling wall keeps ~7 open-close iterations a step (side contacts near the friction
   // limit); Shi's limit of 8 would cut steps now and then, which measures the cuts, not a step.
   s.control.max_open_close = 30;
   const int cols = static_cast<int>(std::ceil(std::sqrt(2.0 * n)));  // about square in metres
   const int rows = (n + cols - 1) / cols;
+  // The same control in metres at every size: a step may move a vertex 1 cm (2 % of a
+  // brick's height), so the search distance (2.5 x ratio x w0) is 2.5 cm. A fixed ratio
+  // would let w0 = half the wall's width scale it: at 10000 bricks 0.01 w0 is 0.7 m, more
+  // than a brick, and detection would pair every brick with its neighbours' neighbours.
+  const double w0 = 0.5 * (cols + 2.0);  // the base is the widest thing in the scene
+  s.control.max_displacement_ratio = 0.01 / w0;
   dda::BlockSpec base;
   base.vertices = {{-1.0, -1.0}, {cols + 1.0, -1.0}, {cols + 1.0, 0.0}, {-1.0, 0.0}};
   base.fixed = true;

@@ -12,7 +12,7 @@ namespace {
 // N unit squares on a square grid with gaps (so that they could never touch), under gravity.
 dda::World grid_of_blocks(int n) {
   dda::Scene s;
-  s.materials.push_back(dda::Material{"rock", 2700.0, 1e9, 0.25});
+  s.materials.push_back(dda::elastic_material("rock", 2700.0, 1e9, 0.25));
   s.control.time_steps = {0.001};
   s.control.steps = 1 << 30;
   s.control.max_displacement_ratio = 1.0;

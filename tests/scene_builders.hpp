@@ -28,7 +28,7 @@ inline Polygon l_shape() { return {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2
 inline Scene base_scene(int steps, double dt) {
   Scene s;
   s.source = "test";
-  s.materials.push_back(Material{"rock", 2700.0, 1e9, 0.25});
+  s.materials.push_back(elastic_material("rock", 2700.0, 1e9, 0.25));
   s.control.time_steps = {dt};
   s.control.steps = steps;
   s.control.max_displacement_ratio = 1.0;

@@ -22,7 +22,7 @@ constexpr double kPaperDensity = 28e3 / kG;  // unit weight 28 kN/m^3 (paper Sec
 
 Scene paper_material_scene(RotationUpdate treatment, double dt, int steps) {
   Scene s = test::base_scene(steps, dt);
-  s.materials[0] = Material{"rock", kPaperDensity, 2e9, 0.25};
+  s.materials[0] = elastic_material("rock", kPaperDensity, 2e9, 0.25);
   s.gravity = Vec2(0.0, -kG);
   s.control.rotation_update = treatment;
   return s;

@@ -17,7 +17,7 @@ World assorted_world(int n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Scene s = test::base_scene(1, 0.01);
-  s.materials.push_back(Material{"soft", 1800.0, 5e7, 0.3});
+  s.materials.push_back(elastic_material("soft", 1800.0, 5e7, 0.3));
   for (int i = 0; i < n; ++i) {
     const Vec2 c(3.0 * i, 0.0);
     BlockSpec b = test::block(i % 3 == 0   ? test::regular_polygon(5 + i % 4, 0.8, c, u(rng))

@@ -206,7 +206,7 @@ TEST_CASE("pins and point loads follow the same map as the vertices in every tre
                            RotationUpdate::LocalFrameAsPrinted}) {
     INFO(rotation_update_name(u));
     World w = square_world(u);
-    w.pins.push_back(Pin{0, w.blocks[0].vertices[2], w.blocks[0].vertices[2]});
+    w.pins.push_back(Pin{0, w.blocks[0].vertices[2], w.blocks[0].vertices[2], w.blocks[0].vertices[2]});
     w.loads.push_back(PointLoad{0, w.blocks[0].vertices[0], w.blocks[0].vertices[0], Vec2(1, 0)});
     Vec6 db;
     db << 0.01, -0.02, 0.3, 2e-4, -1e-4, 3e-4;

@@ -11,9 +11,18 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
   const LinearT t = step_t(ctx, index);
   const Mat6 mass = mass_matrix(t, b.moments, b.density);
   const Vec6 v0 = ctx.dynamic_coefficient * b.velocity;
-  k += elastic_stiffness(b.moments, b.elastic) + (2.0 / (ctx.dt * ctx.dt)) * mass;
-  f += body_force(t, b.moments, b.density, world.gravity) +
-       initial_stress_force(b.moments, b.stress) + (2.0 / ctx.dt) * (mass * v0);
+  k += (2.0 / (ctx.dt * ctx.dt)) * mass;
+  f += body_force(t, b.moments, b.density, world.gravity) + (2.0 / ctx.dt) * (mass * v0);
+  if (b.plastic && !ctx.material_terms.empty()) {
+    // Newton: the stress at increment de is taken as s + D_t (de - de_k) (the material
+    // linearised at the last solution, solver/material_coupling.hpp).
+    const MaterialLinearization& l = ctx.material_terms[static_cast<std::size_t>(index)];
+    k.block<3, 3>(kEx, kEx) += b.moments.area * l.tangent;
+    f.segment<3>(kEx) -= b.moments.area * (l.stress - l.tangent * l.strain_increment);
+  } else {
+    k += elastic_stiffness(b.moments, b.elastic);
+    f += initial_stress_force(b.moments, b.stress);
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "solver/configuration_update.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "kinematics/block_matrices.hpp"
@@ -87,7 +88,7 @@ void rebuild_in_frame(World& world, const Eigen::VectorXd& d, FrameMap frame_map
   }
   for (Pin& pin : world.pins) {
     const Block& b = world.blocks[pin.block];
-    if (!b.fixed) pin.current = place(b, maps[pin.block], pin.anchor);
+    if (!b.fixed) pin.current = place(b, maps[pin.block], pin.initial);
   }
   for (PointLoad& load : world.loads) {
     const Block& b = world.blocks[load.block];
@@ -188,7 +189,20 @@ void update_stresses(World& world) {
   const bool in_block_frame = keeps_block_frame(world.control.rotation_update);
   for (Block& b : world.blocks) {
     if (b.fixed) continue;
-    if (in_block_frame) {
+    if (b.plastic) {
+      // The material over the total strain the treatment keeps (block frame or global),
+      // from the state at the step's start; the step's Newton iteration has already
+      // evaluated this very strain, so the return converges.
+      const Vec3& strain = in_block_frame ? b.local_strain : b.strain;
+      const MaterialResult r =
+          integrate(b.material_parameters, b.material_state, strain, b.initial_stress_4);
+      assert(r.status.converged);
+      b.material_state = r.state;
+      b.szz = r.stress[kZZ];
+      b.branch = r.branch;
+      b.stress = in_block_frame ? stress_from_turned_frame(in_plane(r.stress), b.rotation)
+                                : in_plane(r.stress);
+    } else if (in_block_frame) {
       // Paper Eq. (20) in the block frame, from total strain only (never added), with the
       // initial stress held in that frame; then turned to the global frame.
       b.stress = stress_from_turned_frame(b.initial_stress + b.elastic * b.local_strain, b.rotation);

@@ -6,10 +6,12 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "kinematics/types.hpp"
 #include "materials/elastic.hpp"
+#include "materials/material.hpp"
 
 namespace dda {
 
@@ -56,12 +58,49 @@ inline bool keeps_block_frame(RotationUpdate u) {
          u == RotationUpdate::FiniteRotation;
 }
 
+// A block material (issue 5): elastic, or a plastic model of src/materials. The plastic
+// parameters are read only for the plastic models (materials/material.hpp documents them).
 struct Material {
   std::string name;
   double density = 0.0;  // kg/m^3, > 0
   double young = 0.0;    // Pa, > 0
   double poisson = 0.0;  // (-1, 0.5)
+  MaterialModel model = MaterialModel::Elastic;
+  double cohesion = 0.0;        // Pa, >= 0
+  double friction_angle = 0.0;  // degrees, [0, 90)
+  double dilation_angle = 0.0;  // degrees, [0, friction_angle]
+  std::optional<double> tensile_strength;  // Pa; Mohr-Coulomb's tension cut-off, absent: none
+  std::vector<HardeningPoint> hardening;   // [[eps_p, cohesion], ...]; empty: constant
+  DruckerPragerMatch match = DruckerPragerMatch::PlaneStrain;
 };
+
+// An elastic material (the common case in code-built scenes and tests).
+inline Material elastic_material(std::string name, double density, double young,
+                                 double poisson) {
+  Material m;
+  m.name = std::move(name);
+  m.density = density;
+  m.young = young;
+  m.poisson = poisson;
+  return m;
+}
+
+// The material library's parameters of a scene material in the scene's plane mode.
+inline MaterialParameters parameters_of(const Material& m, PlaneMode plane) {
+  MaterialParameters p;
+  p.model = m.model;
+  p.young = m.young;
+  p.poisson = m.poisson;
+  p.density = m.density;
+  p.cohesion = m.cohesion;
+  p.friction_angle = m.friction_angle;
+  p.dilation_angle = m.dilation_angle;
+  p.tensile_strength = m.tensile_strength;
+  p.hardening = m.hardening;
+  p.match = m.match;
+  p.plane = plane;
+  return p;
+}
 
 // Mohr-Coulomb joint between blocks (Shi 1988): friction, cohesion and tensile strength.
 // Cohesion and tensile strength act only on contacts that exist (closed) at the start; once

@@ -9,6 +9,7 @@
 #include "solver/configuration_update.hpp"
 #include "solver/contact_assembly.hpp"
 #include "solver/contact_detection.hpp"
+#include "solver/material_coupling.hpp"
 
 namespace dda {
 namespace {
@@ -37,6 +38,10 @@ constexpr double kTimeRoundOff = 1e-9;
 // 1e-12 x 5 m per step on the paper's swinging octagon (5e-9 m over its 5000 steps). A
 // block that barely turns is done after one solve.
 constexpr double kSecantDisplacementShare = 1e-12;
+// A scene with plastic blocks allows this many loop iterations beyond max_open_close: the
+// loop is then also the Newton iteration of the blocks' material equilibrium (quadratic
+// with associated flow, linear with non-associated; solver/material_coupling.hpp).
+constexpr int kExtraNewtonIterations = 20;
 
 StepContext make_step_context(const World& world, double dt) {
   StepContext ctx;
@@ -174,6 +179,10 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       angles = last_rotation_increments(world);
       set_rotation_columns(world, angles, ctx);
     }
+    const bool plastic = has_plastic_blocks(world);
+    if (plastic) ctx.material_terms = start_linearization(world);
+    const int iteration_limit =
+        world.control.max_open_close + (plastic ? kExtraNewtonIterations : 0);
     ws.contacts = contacts_at_start;  // states as they entered the step, no changes counted
 
     // 3. Open-close loop: assemble, solve, let every contact choose its next mode, until
@@ -185,11 +194,12 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     int open_close = 0;
     int changed = 0;
     int secants_moved = 0;
+    MaterialFollowUp materials;
     do {
       ws.system = ws.block_terms;
       add_contact_terms(world, ws.contacts, ctx, ws.system);
       clock.lap(times.assemble);
-      const bool refactor = open_close == 0 || secants_moved > 0;
+      const bool refactor = open_close == 0 || secants_moved > 0 || materials.unconverged > 0;
       const std::optional<Eigen::VectorXd> solved =
           refactor ? ws.solver.solve(ws.system)
                    : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
@@ -206,15 +216,26 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       spring_changes(world, ws.contacts, before, ctx, ws.springs_added, ws.springs_removed);
       if (treatment == RotationUpdate::FiniteRotation) {
         secants_moved = follow_secant_angles(world, d, angles);
-        if (secants_moved > 0) {
-          set_rotation_columns(world, angles, ctx);
-          assemble(world, ctx, ws.block_terms);
-        }
+        if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
       }
+      if (plastic) {
+        materials = follow_materials(world, d, ctx.material_terms);
+        if (materials.failed) break;
+      }
+      if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
       clock.lap(times.contact_update);
-    } while ((changed > 0 || secants_moved > 0) && open_close < world.control.max_open_close);
+    } while ((changed > 0 || secants_moved > 0 || materials.unconverged > 0) &&
+             open_close < iteration_limit);
+    if (materials.failed) {
+      // A return map that fails is cured by a smaller strain increment: cut by the
+      // material's own suggestion, within Shi's usual range.
+      ++stats.cut_steps;
+      ++stats.cuts_for_material;
+      dt *= std::clamp(materials.suggested_fraction, kCutMin, kCutMax);
+      continue;
+    }
     if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, d);
-    if (changed > 0 || secants_moved > 0) {
+    if (changed > 0 || secants_moved > 0 || materials.unconverged > 0) {
       ++stats.cut_steps;
       ++stats.cuts_for_open_close;
       dt *= kContactCut;

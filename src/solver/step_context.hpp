@@ -7,6 +7,14 @@
 
 namespace dda {
 
+// A plastic block's material linearised at a strain increment (global frame): the step
+// equations use stress + tangent (de - strain_increment) for its stress at increment de.
+struct MaterialLinearization {
+  Vec3 strain_increment = Vec3::Zero();  // the step's strain increment it was taken at
+  Vec3 stress = Vec3::Zero();            // (sxx, syy, sxy) there, Pa
+  Mat3 tangent = Mat3::Zero();           // d stress / d strain increment (symmetric part)
+};
+
 struct StepContext {
   double dt = 0.0;                    // this attempt's time step (s)
   double penalty = 0.0;               // pin and contact normal stiffness (N/m)
@@ -15,6 +23,9 @@ struct StepContext {
   // The rotation column of T for each block (by block index), for the treatments that
   // change T inside the step (sin_variable, finite_rotation). Empty: Shi's column for all.
   std::vector<Mat2> rotation_columns;
+  // The plastic blocks' material linearisation (by block index) for the Newton iteration
+  // nested in the open-close loop. Empty when the scene has no plastic block.
+  std::vector<MaterialLinearization> material_terms;
 };
 
 // The T that this step uses for block `block` (everything that builds the step equations

@@ -47,6 +47,13 @@ World make_world(const Scene& scene) {
     b.elastic = elastic_matrix(mat.young, mat.poisson, scene.plane);
     b.initial_stress = spec.initial_stress;
     b.stress = spec.initial_stress;
+    b.plastic = is_plastic(mat.model) && !spec.fixed;
+    if (b.plastic) {
+      b.material_parameters = parameters_of(mat, scene.plane);
+      const Vec3& s0 = spec.initial_stress;
+      b.initial_stress_4 = Vec4(s0[0], s0[1], mat.poisson * (s0[0] + s0[1]), s0[2]);
+      b.szz = b.initial_stress_4[2];
+    }
     b.moments = polygon_moments(b.vertices);
     b.initial_area = b.moments.area;
     b.initial_centroid = b.moments.centroid;
@@ -73,7 +80,7 @@ World make_world(const Scene& scene) {
   for (const JointSpec& j : scene.joints) world.pair_joint[pair_key(j.block_a, j.block_b)] = j.material;
 
   for (const PinSpec& pin : scene.pins) {
-    world.pins.push_back(Pin{pin.block, pin.point, pin.point});
+    world.pins.push_back(Pin{pin.block, pin.point, pin.point, pin.point});
   }
   for (const PointLoadSpec& load : scene.point_loads) {
     world.loads.push_back(PointLoad{load.block, load.point, load.point, load.force});

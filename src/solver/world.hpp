@@ -10,6 +10,7 @@
 #include "contact/joint_law.hpp"
 #include "kinematics/polygon.hpp"
 #include "kinematics/types.hpp"
+#include "materials/material.hpp"
 #include "solver/scene.hpp"
 
 namespace dda {
@@ -27,6 +28,13 @@ struct Block {
   Vec3 initial_stress = Vec3::Zero();
   double initial_area = 0.0;
   int first_dof = -1;  // index of u0 in the global system; -1 for fixed blocks
+  // Plastic blocks (issue 5) take their stress from the material library over the strain
+  // their treatment accumulates (src/solver/material_coupling.hpp); elastic blocks never
+  // touch it. Their initial stress as (sxx, syy, szz, sxy): szz = nu (sxx + syy), the
+  // plane-strain stress an elastic history would have left.
+  bool plastic = false;
+  MaterialParameters material_parameters;
+  Vec4 initial_stress_4 = Vec4::Zero();
 
   // ---- hot: advanced every step ----
   Polygon vertices;                 // current configuration
@@ -49,14 +57,20 @@ struct Block {
   // The last step's rotation increment r0 (rad): sin_variable builds T' from it (Cheng and
   // Zhang), finite_rotation starts its secant iteration from it.
   double last_rotation_increment = 0.0;
+  // Plastic blocks: the material state (plastic strain, eps_p) at the end of the last step,
+  // the out-of-plane stress and the return branch it took.
+  MaterialState material_state;
+  double szz = 0.0;
+  Branch branch = Branch::Elastic;
 };
 
 // A pin holds a material point of a block at its anchor with a penalty spring.
 struct Pin {
   int block = -1;
-  // Where the point was at the start: also its material point X for the local-frame
-  // treatments, which place it by the block's map from the initial configuration.
-  Vec2 anchor = Vec2::Zero();
+  Vec2 anchor = Vec2::Zero();   // where the spring pulls the point (the start, unless moved)
+  // The pinned point at the start: its material point X for the local-frame treatments,
+  // which place it by the block's map from the initial configuration.
+  Vec2 initial = Vec2::Zero();
   Vec2 current = Vec2::Zero();  // where that material point is now
 };
 

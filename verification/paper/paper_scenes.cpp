@@ -14,7 +14,7 @@ Scene paper_base(RotationUpdate update) {
   Scene s;
   s.source = "verification/paper (built in code)";
   s.gravity = Vec2(0.0, -kGravity);
-  s.materials.push_back(Material{"rock", kDensity, kYoung, kPoisson});
+  s.materials.push_back(elastic_material("rock", kDensity, kYoung, kPoisson));
   s.joint_materials = {JointMaterial{"default", 0.0, 0.0, 0.0}};
   s.control.rotation_update = update;
   return s;

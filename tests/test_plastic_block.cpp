@@ -1,0 +1,175 @@
+// Plastic blocks inside the DDA step (issue 5 item 4): a Mohr-Coulomb specimen loaded in
+// plane-strain compression through its contacts levels off at the biaxial strength
+// s1 = N s3 + 2 c sqrt(N) (verification catalogue); one that never yields gives the elastic
+// block's answer.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "scene_builders.hpp"
+#include "solver/material_coupling.hpp"
+#include "solver/run.hpp"
+#include "solver/step.hpp"
+#include "solver/world.hpp"
+
+using namespace dda;
+
+namespace {
+
+constexpr double kCohesion = 1e6;   // Pa
+constexpr double kFriction = 30.0;  // degrees
+constexpr double kConfining = 1e6;  // Pa, lateral compression s3
+
+double flow_factor() {
+  const double s = std::sin(kFriction * M_PI / 180.0);
+  return (1.0 + s) / (1.0 - s);
+}
+
+// Compressive strength under confinement s3: s1 = N s3 + 2 c sqrt(N).
+double biaxial_strength() {
+  const double n = flow_factor();
+  return n * kConfining + 2.0 * kCohesion * std::sqrt(n);
+}
+
+// A fixed base, a unit-square specimen on it and a stiff elastic platen on top; no gravity,
+// frictionless joints (so that the specimen's stress is the loads' alone). The specimen is
+// confined by two opposite point loads at mid-height of its sides (a constant-strain block
+// feels them as sxx = -P / height) and compressed through the platen by a vertical point
+// load that the test grows. Static mode: every step is an equilibrium.
+struct Platen {
+  World world;
+  int specimen = 1;
+  int vertical_load = 2;  // index in world.loads
+};
+
+Platen platen_test(MaterialModel model, bool pinned = false) {
+  Scene s = test::base_scene(1, 0.01);
+  s.gravity = Vec2::Zero();
+  s.control.dynamic_coefficient = 0.0;
+  s.control.max_displacement_ratio = 0.01;
+  s.joint_materials[0].friction_angle = 0.0;
+  // Static mode keeps 2 M / dt^2 in the step's stiffness: each step leaves the share
+  // rho = (2 M / dt^2) / (2 M / dt^2 + k) of its load increment unbalanced. Light blocks
+  // (20 kg/m^3: 2 M/dt^2 = 4e5 N/m against k ~ 1e10 N/m) make rho ~ 4e-5.
+  s.materials[0] = elastic_material("rock", 20.0, 1e10, 0.25);
+  Material specimen = elastic_material("soil", 20.0, 1e10, 0.25);
+  specimen.model = model;
+  specimen.cohesion = kCohesion;
+  specimen.friction_angle = kFriction;
+  specimen.dilation_angle = kFriction;  // associated: the consistent tangent is symmetric
+  s.materials.push_back(specimen);
+  BlockSpec base = test::block(test::rectangle(-1.0, -1.0, 3.0, 1.0));
+  base.fixed = true;
+  s.blocks.push_back(base);
+  BlockSpec sample = test::block(test::rectangle(0.0, 0.0, 1.0, 1.0));
+  sample.material = 1;
+  s.blocks.push_back(sample);
+  s.blocks.push_back(test::block(test::rectangle(0.0, 1.0, 1.0, 0.2)));  // the platen
+  s.point_loads.push_back(PointLoadSpec{Vec2(0.0, 0.5), Vec2(kConfining, 0.0), 1});
+  s.point_loads.push_back(PointLoadSpec{Vec2(1.0, 0.5), Vec2(-kConfining, 0.0), 1});
+  s.point_loads.push_back(PointLoadSpec{Vec2(0.5, 1.2), Vec2::Zero(), 2});
+  if (pinned) s.pins.push_back(PinSpec{Vec2(0.5, 1.2), 2});
+  return {make_world(s)};
+}
+
+// Raises the vertical load linearly to `top` (N per metre) over `steps` static steps and
+// returns the specimen's vertical stress after each, against the stress the load makes on
+// its present width (-load / width).
+struct LoadedStress {
+  std::vector<double> syy;
+  std::vector<double> expected;
+};
+LoadedStress load_up(Platen& p, double top, int steps) {
+  StepWorkspace ws;
+  RunStats stats;
+  LoadedStress out;
+  for (int k = 1; k <= steps; ++k) {
+    const double load = top * k / steps;
+    p.world.loads[p.vertical_load].force = Vec2(0.0, -load);
+    const StepOutcome outcome = advance_step(p.world, ws, stats);
+    INFO(outcome.message);
+    REQUIRE(outcome.ok);
+    const Block& b = p.world.blocks[p.specimen];
+    out.syy.push_back(b.stress[1]);
+    out.expected.push_back(-load / (b.vertices[1].x() - b.vertices[0].x()));
+  }
+  return out;
+}
+
+// Pushes the platen down by `per_step` (m) each step through a pin at its top whose anchor
+// the test moves (displacement control: past the strength a growing load has no
+// equilibrium, and the specimen would collapse); returns the specimen's vertical stress.
+std::vector<double> push_down(Platen& p, double per_step, int steps) {
+  StepWorkspace ws;
+  RunStats stats;
+  std::vector<double> syy;
+  for (int k = 1; k <= steps; ++k) {
+    p.world.pins[0].anchor.y() -= per_step;
+    const StepOutcome outcome = advance_step(p.world, ws, stats);
+    INFO(outcome.message);
+    REQUIRE(outcome.ok);
+    syy.push_back(p.world.blocks[p.specimen].stress[1]);
+  }
+  return syy;
+}
+
+}  // namespace
+
+TEST_CASE("a Mohr-Coulomb block compressed through its contacts levels off at the biaxial "
+          "strength", "[plastic]") {
+  const double strength = biaxial_strength();  // 6.46 MPa
+  SECTION("load control up to 95 % of the strength: elastic, carrying the load") {
+    Platen p = platen_test(MaterialModel::MohrCoulomb);
+    REQUIRE(has_plastic_blocks(p.world));
+    const LoadedStress loaded = load_up(p, 0.95 * strength, 95);
+    // Static equilibrium through frictionless contacts: the specimen carries the platen's
+    // load, short by rho / (1 - rho) ~ 4e-5 of a ramp increment (1 % of the strength) in
+    // the steady ramp: 4e-7 of the strength; 1e-5 allows the platen and the contact springs
+    // in series (a softer chain, a larger rho) with room.
+    for (int k : {49, 94}) CHECK(std::abs(loaded.syy[k] - loaded.expected[k]) <= 1e-5 * strength);
+    CHECK(p.world.blocks[p.specimen].branch == Branch::Elastic);
+  }
+  SECTION("pushed past it: the vertical stress levels off at N s3 + 2 c sqrt(N)") {
+    Platen p = platen_test(MaterialModel::MohrCoulomb, true);
+    // Yield needs a vertical strain of about (s1 - nu/(1 - nu) s3) / E' ~ 6e-4; push to
+    // 2e-3 in 200 steps of 1e-5 m.
+    const std::vector<double> syy = push_down(p, 1e-5, 200);
+    const Block& b = p.world.blocks[p.specimen];
+    INFO("final syy " << syy.back() << " Pa, strength " << strength << " Pa, sxx " << b.stress[0]
+                      << ", szz " << b.szz << ", eps_p " << b.material_state.eps_p);
+    // On the yield surface the vertical stress is N s3 + 2 c sqrt(N) with s3 the confining
+    // stress; the specimen's growing width changes s3 = P / height by its plastic strain
+    // (~1e-3), well inside the issue's 2 %.
+    CHECK(std::abs(-syy.back() - strength) <= 0.02 * strength);
+    CHECK(std::abs(b.stress[0] + kConfining) <= 0.02 * kConfining);
+    CHECK(b.branch != Branch::Elastic);
+    CHECK(b.material_state.eps_p > 0.0);
+    // szz is the intermediate stress (the closed form's premise).
+    CHECK(b.szz < -kConfining);
+    CHECK(b.szz > -strength);
+    // Levelled off: the last 50 steps (a quarter of the push) raise it by less than 0.5 %.
+    CHECK(std::abs(syy.back() - syy[syy.size() - 50]) <= 5e-3 * strength);
+  }
+}
+
+TEST_CASE("a Mohr-Coulomb block that never yields gives the elastic block's results",
+          "[plastic]") {
+  // The same test at 60 % of the strength, once with the specimen elastic and once
+  // Mohr-Coulomb: the Newton iteration starts from the elastic predictor and stops after
+  // one solve, so both runs solve the same systems; 1e-10 relative leaves room for the
+  // round-off of the return's elastic branch (s0 + D (e - ep) against Shi's s + D de).
+  Platen elastic = platen_test(MaterialModel::Elastic);
+  Platen plastic = platen_test(MaterialModel::MohrCoulomb);
+  const double top = 0.6 * biaxial_strength();
+  load_up(elastic, top, 60);
+  load_up(plastic, top, 60);
+  for (std::size_t i = 0; i < elastic.world.blocks.size(); ++i) {
+    const Block& e = elastic.world.blocks[i];
+    const Block& q = plastic.world.blocks[i];
+    INFO("block " << i);
+    CHECK((e.stress - q.stress).norm() <= 1e-10 * e.stress.norm() + 1e-300);
+    for (std::size_t k = 0; k < e.vertices.size(); ++k) {
+      CHECK((e.vertices[k] - q.vertices[k]).norm() <= 1e-10 * (e.vertices[k] - e.initial_vertices[k]).norm() + 1e-15);
+    }
+  }
+  CHECK(plastic.world.blocks[1].branch == Branch::Elastic);
+}
