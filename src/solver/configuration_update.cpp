@@ -191,8 +191,9 @@ void update_stresses(World& world) {
     if (b.fixed) continue;
     if (b.plastic) {
       // The material over the total strain the treatment keeps (block frame or global),
-      // from the state at the step's start; the step's Newton iteration has already
-      // evaluated this very strain, so the return converges.
+      // from the state at the step's start. The step's Newton iteration evaluated this
+      // strain up to the increment's turn by r0/2 (material_coupling.cpp), so the return
+      // converges as it did there.
       const Vec3& strain = in_block_frame ? b.local_strain : b.strain;
       const MaterialResult r =
           integrate(b.material_parameters, b.material_state, strain, b.initial_stress_4);

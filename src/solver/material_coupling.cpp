@@ -7,20 +7,6 @@
 namespace dda {
 namespace {
 
-// Angles of the block frame over the step, written exactly as configuration_update.cpp
-// writes them, so that the converged Newton stress and the stress of the update agree to
-// the last bit: the strain increment enters the frame at the mid-step angle, the stress
-// leaves it at the end angle.
-struct StepAngles {
-  double mid = 0.0;
-  double end = 0.0;
-};
-
-StepAngles angles_of(const Block& b, const Vec6& db) {
-  const double end = b.rotation + db[kR0];
-  return {end - 0.5 * db[kR0], end};
-}
-
 struct Evaluation {
   MaterialResult result;
   Vec3 stress = Vec3::Zero();   // global
@@ -38,15 +24,18 @@ Evaluation evaluate(const World& world, const Block& b, const Vec6& db) {
     e.tangent = e.result.tangent;
     return e;
   }
-  // d(global stress)/d(global increment) = S(end) D_t E(mid), with E the strain turn into
-  // the frame and S the stress turn out of it (both linear; their matrices column by
-  // column). The angles' own dependence on r0 is left out of the tangent.
-  const StepAngles a = angles_of(b, db);
-  e.stress = stress_from_turned_frame(local_stress, a.end);
+  // The step's equations see the stress in the frame the block has at the step's start,
+  // as they see an elastic block's (Shi's step does not turn the stress it starts with):
+  // global stress = S(r) s_local, increment into the frame by E(r), r the start angle. For
+  // an isotropic elastic response S D E = D, so a plastic block that does not yield solves
+  // exactly the elastic block's equations and its Newton iteration stops after one solve.
+  // The update then turns the committed stress by the end angle, for both.
+  const double r = b.rotation;
+  e.stress = stress_from_turned_frame(local_stress, r);
   Mat3 into = Mat3::Zero(), out = Mat3::Zero();
   for (int k = 0; k < 3; ++k) {
-    into.col(k) = strain_in_turned_frame(Vec3::Unit(k), a.mid);
-    out.col(k) = stress_from_turned_frame(Vec3::Unit(k), a.end);
+    into.col(k) = strain_in_turned_frame(Vec3::Unit(k), r);
+    out.col(k) = stress_from_turned_frame(Vec3::Unit(k), r);
   }
   e.tangent = out * e.result.tangent * into;
   return e;
@@ -79,7 +68,9 @@ std::vector<MaterialLinearization> start_linearization(const World& world) {
 Vec3 material_strain_after(const World& world, const Block& b, const Vec6& db) {
   const Vec3 increment = db.segment<3>(kEx);
   if (!keeps_block_frame(world.control.rotation_update)) return b.strain + increment;
-  return b.local_strain + strain_in_turned_frame(increment, angles_of(b, db).mid);
+  // The start angle, as in evaluate(); the update adds the same increment at the mid-step
+  // angle, a difference of r0/2 of the increment's turn, second order in the step.
+  return b.local_strain + strain_in_turned_frame(increment, b.rotation);
 }
 
 MaterialFollowUp follow_materials(const World& world, const Eigen::VectorXd& d,

@@ -26,7 +26,8 @@ bool has_plastic_blocks(const World& world);
 // step's start (an elastic predictor).
 std::vector<MaterialLinearization> start_linearization(const World& world);
 
-// The strain the material of block b sees at the end of the step with increments db.
+// The strain the material of block b sees at the end of the step with increments db, as the
+// step's Newton iteration takes it (increment turned into the frame at the start angle).
 Vec3 material_strain_after(const World& world, const Block& b, const Vec6& db);
 
 struct MaterialFollowUp {
