@@ -1,9 +1,6 @@
 // Scene input (io/scene_reader): a valid scene lands in the Scene struct field by field, and
 // every kind of bad input is rejected with one message naming the file and the place in it,
 // both by the reader and by the real command line (`dda run FILE` exits with code 2).
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdio>
@@ -16,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli_helpers.hpp"
 #include "io/json_input.hpp"
 #include "io/scene_reader.hpp"
 #include "kinematics/polygon.hpp"
@@ -52,6 +50,30 @@ const std::string kValidScene = R"json({
 }
 )json";
 
+
+// A valid plane-strain scene with both plastic models, every plastic key given (not at its
+// default). The bad plastic materials below are edits of it; kValidScene is plane stress,
+// where plastic models are refused.
+const std::string kPlasticScene = R"json({
+  "plane": "strain",
+  "control": {"time_step": 0.01, "steps": 1},
+  "materials": {
+    "soil": {"model": "mohr_coulomb", "density": 2000, "young": 5e7, "poisson": 0.3,
+             "cohesion": 2e4, "friction_angle": 32, "dilation_angle": 8,
+             "tensile_strength": 1e4, "hardening": [[0, 2e4], [0.01, 3e4], [0.05, 1e4]]},
+    "clay": {"model": "drucker_prager", "density": 1800, "young": 2e7, "poisson": 0.35,
+             "cohesion": 1e4, "friction_angle": 22, "dilation_angle": 22, "match": "inner",
+             "hardening": [[0, 1e4], [0.02, 5e3]]},
+    "rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}
+  },
+  "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
+  "blocks": [
+    {"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "soil"},
+    {"vertices": [[1, 0], [2, 0], [2, 1], [1, 1]], "material": "clay"},
+    {"vertices": [[0, -1], [2, -1], [2, 0], [0, 0]], "material": "rock", "fixed": true}
+  ]
+}
+)json";
 
 // `text` with the one occurrence of `from` replaced by `to`. More than one occurrence, or
 // none, is a mistake in the test itself.
@@ -97,6 +119,7 @@ struct BadScene {
 
 std::vector<BadScene> bad_scenes() {
   const std::string& s = kValidScene;
+  const std::string& p = kPlasticScene;
   const std::string triangle = "[[1, 1], [2, 1], [1.5, 2]]";
   return {
       // ---- not JSON, or not the right kind of document ----
@@ -133,8 +156,13 @@ std::vector<BadScene> bad_scenes() {
        {"unknown key", "did you mean \"time_step\"", "output_every"}},
       {"unknown block key", edit(s, "\"fixed\": true", "\"fixed\": true, \"colour\": \"red\""),
        "blocks[0].colour", {"unknown key", "known keys: vertices, material"}},
-      {"unknown material key", edit(s, "\"poisson\": 0.25}", "\"poisson\": 0.25, \"cohesion\": 1}"),
-       "materials.rock.cohesion", {"unknown key"}},
+      {"unknown material key", edit(s, "\"poisson\": 0.25}", "\"poisson\": 0.25, \"colour\": 1}"),
+       "materials.rock.colour", {"unknown key", "known keys: model, density, young, poisson"}},
+      {"plastic key in an elastic material",
+       edit(s, "\"poisson\": 0.25}", "\"poisson\": 0.25, \"cohesion\": 1}"),
+       "materials.rock.cohesion",
+       {"not a key of the \"elastic\" model", "\"drucker_prager\" and \"mohr_coulomb\"",
+        "keys of \"elastic\": model, density, young, poisson)"}},
       {"unknown pin key", edit(s, "{\"point\": [1.5, 1.5]}", "{\"point\": [1.5, 1.5], \"block\": 1}"),
        "pins[0].block", {"unknown key", "known keys: point"}},
       // ---- missing required fields ----
@@ -216,7 +244,8 @@ std::vector<BadScene> bad_scenes() {
        "blocks[1].material", {"unknown material \"granite\"", "\"clay\", \"rock\""}},
       {"unknown material model", edit(s, "\"model\": \"elastic\", \"density\": 1800",
                                       "\"model\": \"plastic\", \"density\": 1800"),
-       "materials.clay.model", {"unknown material model \"plastic\"", "\"elastic\""}},
+       "materials.clay.model",
+       {"unknown model \"plastic\"", "\"elastic\", \"drucker_prager\" or \"mohr_coulomb\""}},
       {"unknown plane mode", edit(s, "\"plane\": \"stress\"", "\"plane\": \"3d\""), "plane",
        {"unknown plane mode \"3d\"", "\"strain\", \"stress\""}},
       {"unknown rotation update", edit(s, "\"original\"", "\"quaternion\""),
@@ -292,6 +321,63 @@ std::vector<BadScene> bad_scenes() {
        "joints[0].friction_angle", {"unknown key", "known keys: blocks, material"}},
       {"joints not a list", edit(s, "[{\"blocks\": [1, 0], \"material\": \"bonded\"}]", "{}"),
        "joints", {"expected a list", "an object"}},
+      // ---- plastic materials (issue 5): the key set of each model ----
+      {"misspelt plastic key", with(p, "/materials/soil/friction_angel", 30),
+       "materials.soil.friction_angel", {"unknown key", "did you mean \"friction_angle\""}},
+      {"tension cut-off in Drucker-Prager", with(p, "/materials/clay/tensile_strength", 0),
+       "materials.clay.tensile_strength",
+       {"not a key of the \"drucker_prager\" model", "it belongs to \"mohr_coulomb\""}},
+      {"match in Mohr-Coulomb", with(p, "/materials/soil/match", "outer"), "materials.soil.match",
+       {"not a key of the \"mohr_coulomb\" model", "it belongs to \"drucker_prager\""}},
+      {"match in an elastic material", with(p, "/materials/rock/match", "outer"),
+       "materials.rock.match", {"not a key of the \"elastic\" model"}},
+      {"hardening in an elastic material", with(p, "/materials/rock/hardening", nlohmann::json::parse("[[0, 1]]")),
+       "materials.rock.hardening", {"not a key of the \"elastic\" model"}},
+      {"missing cohesion", without(p, "/materials/soil/cohesion"), "materials.soil.cohesion",
+       {"required key is missing"}},
+      {"missing friction angle (plastic)", without(p, "/materials/clay/friction_angle"),
+       "materials.clay.friction_angle", {"required key is missing"}},
+      {"plastic cohesion not a number", with(p, "/materials/soil/cohesion", "20 kPa"),
+       "materials.soil.cohesion", {"expected a number", "a string (\"20 kPa\")"}},
+      // ---- plastic materials: validate_material's rules, at the key they concern ----
+      {"plastic friction angle 90", with(p, "/materials/soil/friction_angle", 90),
+       "materials.soil.friction_angle", {"must be in [0, 90) degrees, got 90"}},
+      {"plastic friction angle negative", with(p, "/materials/clay/friction_angle", -5),
+       "materials.clay.friction_angle", {"must be in [0, 90) degrees, got -5"}},
+      {"dilation above friction", with(p, "/materials/soil/dilation_angle", 40),
+       "materials.soil.dilation_angle", {"must not exceed the friction angle (32 degrees)", "got 40"}},
+      {"dilation negative", with(p, "/materials/clay/dilation_angle", -1),
+       "materials.clay.dilation_angle", {"must be >= 0 degrees, got -1"}},
+      {"plastic cohesion negative", with(p, "/materials/soil/cohesion", -1),
+       "materials.soil.cohesion", {"must be >= 0 Pa, got -1"}},
+      {"no cohesion and no friction",
+       with(with(with(without(p, "/materials/clay/hardening"), "/materials/clay/cohesion", 0),
+                 "/materials/clay/friction_angle", 0),
+            "/materials/clay/dilation_angle", 0),
+       "materials.clay.cohesion", {"needs cohesion > 0 or friction_angle > 0"}},
+      {"tensile strength negative (plastic)", with(p, "/materials/soil/tensile_strength", -1),
+       "materials.soil.tensile_strength", {"must be >= 0 Pa, got -1"}},
+      {"unknown match", with(p, "/materials/clay/match", "middle"), "materials.clay.match",
+       {"unknown match \"middle\"", "\"outer\", \"inner\" or \"plane_strain\""}},
+      {"hardening eps_p not increasing",
+       with(p, "/materials/soil/hardening", nlohmann::json::parse("[[0, 2e4], [0.01, 3e4], [0.01, 1e4]]")),
+       "materials.soil.hardening[2]", {"eps_p must increase along the table", "got 0.01 after 0.01"}},
+      {"hardening eps_p negative",
+       with(p, "/materials/clay/hardening", nlohmann::json::parse("[[-0.01, 1e4], [0.02, 5e3]]")),
+       "materials.clay.hardening[0]", {"eps_p must be >= 0, got -0.01"}},
+      {"hardening cohesion negative",
+       with(p, "/materials/clay/hardening", nlohmann::json::parse("[[0, 1e4], [0.02, -5]]")),
+       "materials.clay.hardening[1]", {"cohesion must be >= 0 Pa, got -5"}},
+      {"hardening not starting at the cohesion",
+       with(p, "/materials/soil/hardening", nlohmann::json::parse("[[0, 1.5e4], [0.01, 3e4]]")),
+       "materials.soil.cohesion", {"is 20000 Pa but the hardening table gives 15000 Pa at eps_p = 0"}},
+      {"hardening row of 3 numbers",
+       with(p, "/materials/soil/hardening", nlohmann::json::parse("[[0, 2e4, 1]]")),
+       "materials.soil.hardening[0]", {"expected a list of 2 numbers [eps_p, cohesion]"}},
+      {"hardening empty", with(p, "/materials/soil/hardening", nlohmann::json::array()),
+       "materials.soil.hardening", {"at least one [eps_p, cohesion] row", "got 0"}},
+      {"plastic model in plane stress", with(p, "/plane", "stress"), "materials.clay.model",
+       {"need plane strain", "plane stress"}},
       // ---- blocks overlapping at the start ----
       // The triangle pushed 0.5 m down into block 0: its base edge crosses block 0's sides.
       {"block overlaps another", edit(s, triangle, "[[1, 0.5], [2, 0.5], [1.5, 2]]"), "blocks[1]",
@@ -316,55 +402,16 @@ std::string reader_error(const std::string& text, const std::string& source) {
 
 // ---- running the command line ----
 
-struct CommandResult {
-  int exit_code = -1;  // -1 when the program did not exit normally (crashed)
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult run_command(const std::string& command) {
-  CommandResult result;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) throw std::runtime_error("popen failed: " + command);
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
-  const int status = pclose(pipe);
-  if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  return result;
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+using dda::test::CommandResult;
+using dda::test::read_file;
+using dda::test::run_command;
+using dda::test::shell_quote;
+using dda::test::write_file;
 
 // A fresh directory for this test process's files, removed at the end.
-struct TempDir {
-  fs::path path;
-  TempDir() : path(fs::temp_directory_path() / ("dda_scene_input_" + std::to_string(getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
+struct TempDir : dda::test::TempDir {
+  TempDir() : dda::test::TempDir("dda_scene_input_") {}
 };
-
-void write_file(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 CommandResult run_dda(const fs::path& scene, const fs::path& out_dir) {
   return run_command(shell_quote(DDA_EXE) + " run " + shell_quote(scene.string()) + " --out " +
@@ -453,6 +500,60 @@ TEST_CASE("a valid scene lands in the Scene struct field by field", "[scene][inp
   CHECK(scene.point_loads[0].force == dda::Vec2(10, -20));
   // (1, 1) is on the edge both blocks share: the first block in the list takes it.
   CHECK(scene.point_loads[0].block == 0);
+}
+
+TEST_CASE("plastic materials land in the Material struct, defaults where left out",
+          "[scene][input]") {
+  const dda::Scene scene = dda::parse_scene_text(kPlasticScene, "plastic.json");
+  REQUIRE(scene.materials.size() == 3);
+  // Materials are read in order of name: clay, rock, soil.
+  const dda::Material& clay = scene.materials[0];
+  const dda::Material& rock = scene.materials[1];
+  const dda::Material& soil = scene.materials[2];
+  CHECK(soil.name == "soil");
+  CHECK(soil.model == dda::MaterialModel::MohrCoulomb);
+  CHECK(soil.density == 2000.0);
+  CHECK(soil.young == 5e7);
+  CHECK(soil.poisson == 0.3);
+  CHECK(soil.cohesion == 2e4);
+  CHECK(soil.friction_angle == 32.0);
+  CHECK(soil.dilation_angle == 8.0);
+  REQUIRE(soil.tensile_strength.has_value());
+  CHECK(*soil.tensile_strength == 1e4);
+  REQUIRE(soil.hardening.size() == 3);
+  CHECK(soil.hardening[1].eps_p == 0.01);
+  CHECK(soil.hardening[1].cohesion == 3e4);
+  CHECK(soil.hardening[2].cohesion == 1e4);
+  CHECK(clay.model == dda::MaterialModel::DruckerPrager);
+  CHECK(clay.match == dda::DruckerPragerMatch::Inner);
+  CHECK(clay.dilation_angle == 22.0);
+  CHECK_FALSE(clay.tensile_strength.has_value());
+  CHECK(rock.model == dda::MaterialModel::Elastic);
+  CHECK(rock.hardening.empty());
+  CHECK(scene.blocks[0].material == 2);
+
+  // Left out: dilation_angle 0, match "plane_strain", no tension cut-off, no hardening.
+  std::string minimal = without(kPlasticScene, "/materials/soil/dilation_angle");
+  minimal = without(minimal, "/materials/soil/tensile_strength");
+  minimal = without(minimal, "/materials/soil/hardening");
+  minimal = without(minimal, "/materials/clay/match");
+  const dda::Scene defaults = dda::parse_scene_text(minimal, "minimal.json");
+  CHECK(defaults.materials[2].dilation_angle == 0.0);
+  CHECK_FALSE(defaults.materials[2].tensile_strength.has_value());
+  CHECK(defaults.materials[2].hardening.empty());
+  CHECK(defaults.materials[0].match == dda::DruckerPragerMatch::PlaneStrain);
+  // Every match is read by its name; a tension cut-off of 0 (no tension) is allowed.
+  for (const auto& [name, value] : {std::pair{"outer", dda::DruckerPragerMatch::Outer},
+                                    std::pair{"inner", dda::DruckerPragerMatch::Inner},
+                                    std::pair{"plane_strain", dda::DruckerPragerMatch::PlaneStrain}}) {
+    INFO(name);
+    CHECK(dda::parse_scene_text(with(kPlasticScene, "/materials/clay/match", name), "m.json")
+              .materials[0]
+              .match == value);
+  }
+  CHECK(*dda::parse_scene_text(with(kPlasticScene, "/materials/soil/tensile_strength", 0), "t.json")
+             .materials[2]
+             .tensile_strength == 0.0);
 }
 
 TEST_CASE("every rotation update is read by its name", "[scene][input]") {

@@ -1,12 +1,16 @@
 // dda: the command line. Thin: parse arguments, read the scene (io), run (solver), write
 // results (io), show progress. Exit codes: 0 done, 1 could not write results,
 // 2 bad input (message names the place in the file), 3 the run diverged (results so far kept).
+// `dda material-point` does the same for one material point on a strain/stress path
+// (materials), with 3 for a path that could not be followed.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 #include <string>
 
 #include "app/progress.hpp"
+#include "io/material_point_output.hpp"
+#include "io/material_point_reader.hpp"
 #include "io/output.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
@@ -60,6 +64,30 @@ int run_command(const std::string& scene_path, const std::string& out_dir) {
   return kExitOk;
 }
 
+int material_point_command(const std::string& spec_path, const std::string& out_file) {
+  if (spec_path.empty()) {
+    // There is no built-in default spec; said here rather than by CLI11 so that it is an
+    // input error (exit code 2) like every other.
+    throw dda::InputError(
+        "material-point: no spec file given (dda material-point SPEC.json --out FILE.csv; "
+        "see docs/material-point-format.md)");
+  }
+  const dda::MaterialPointSpec spec = dda::read_material_point_file(spec_path);
+  dda::MaterialPointCsv csv(out_file);  // before the run: an unwritable path fails early
+  const dda::MaterialPointRun result =
+      dda::run_material_point(spec.parameters(), spec.initial_stress, spec.path);
+  csv.write(result.rows);
+  const std::size_t increments = result.rows.empty() ? 0 : result.rows.size() - 1;
+  if (!result.ok) {
+    std::cerr << "dda: error: " << spec_path << ": the path stopped at " << result.message
+              << "; the " << increments << " increments before it are in " << out_file << "\n";
+    return kExitDiverged;
+  }
+  std::cerr << "dda: material point: " << increments << " increments; results in " << out_file
+            << "\n";
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -71,10 +99,19 @@ int main(int argc, char** argv) {
   run->add_option("scene", scene_path, "Scene file (JSON, see docs/scene-format.md)");
   run->add_option("--out", out_dir, "Directory for summary.json, history.csv and VTK files")
       ->capture_default_str();
+
+  std::string spec_path;
+  std::string csv_file = "material-point.csv";
+  CLI::App* point = app.add_subcommand(
+      "material-point", "Drive one material point along a strain/stress path (CSV out)");
+  point->add_option("spec", spec_path, "Spec file (JSON, see docs/material-point-format.md)");
+  point->add_option("--out", csv_file, "CSV file: step,exx,eyy,gxy,sxx,syy,szz,sxy,eps_p,branch")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try {
     if (run->parsed()) return run_command(scene_path, out_dir);
+    if (point->parsed()) return material_point_command(spec_path, csv_file);
   } catch (const dda::InputError& e) {
     std::cerr << "dda: error: " << e.what() << "\n";
     return kExitInputError;

@@ -2,9 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace dda::input {
 
@@ -297,6 +302,12 @@ Field Field::member(std::string_view key) const {
   return Field(*it, member_path(path_, key), *source_);
 }
 
+Field Field::place(std::string_view key) const {
+  static const json kAbsent;
+  if (has(key)) return member(key);
+  return Field(kAbsent, member_path(path_, key), *source_);
+}
+
 std::optional<Field> Field::optional_member(std::string_view key) const {
   if (!has(key)) return std::nullopt;
   return member(key);
@@ -374,6 +385,63 @@ Vec2 Field::vec2(std::string_view shape) const {
 Vec3 Field::vec3(std::string_view shape) const {
   const std::vector<double> v = numbers(3, shape);
   return Vec3(v[0], v[1], v[2]);
+}
+
+Eigen::Vector4d Field::vec4(std::string_view shape) const {
+  const std::vector<double> v = numbers(4, shape);
+  return Eigen::Vector4d(v[0], v[1], v[2], v[3]);
+}
+
+// ---------------------------------------------------------------------------------------
+// Numbers with a range
+
+double positive_number(const Field& f) {
+  const double x = f.number();
+  if (x <= 0.0) f.fail("must be positive, got " + format_number(x));
+  return x;
+}
+
+double non_negative_number(const Field& f) {
+  const double x = f.number();
+  if (x < 0.0) f.fail("must not be negative, got " + format_number(x));
+  return x;
+}
+
+double number_in_range(const Field& f, double lo, bool lo_open, double hi, bool hi_open,
+                       std::string_view range) {
+  const double x = f.number();
+  const bool above_lo = lo_open ? x > lo : x >= lo;
+  const bool below_hi = hi_open ? x < hi : x <= hi;
+  if (!above_lo || !below_hi) {
+    f.fail("must be " + std::string(range) + ", got " + format_number(x));
+  }
+  return x;
+}
+
+int integer_at_least(const Field& f, int lo) {
+  const int n = f.integer();
+  if (n < lo) f.fail("must be at least " + std::to_string(lo) + ", got " + std::to_string(n));
+  return n;
+}
+
+std::string quoted_list(std::initializer_list<std::string_view> names) {
+  std::string out;
+  for (std::string_view n : names) out += (out.empty() ? "\"" : ", \"") + std::string(n) + "\"";
+  return out;
+}
+
+std::string read_input_file(const std::string& path, std::string_view kind) {
+  const std::string name = path.empty() ? "(empty file name)" : path;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(name + ": cannot open: it is a directory, not " + std::string(kind));
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(name + ": cannot open file (" + std::strerror(errno) + ")");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(name + ": cannot read file (" + std::strerror(errno) + ")");
+  return text.str();
 }
 
 }  // namespace dda::input

@@ -58,6 +58,9 @@ class Field {
   void expect_keys(std::initializer_list<std::string_view> known) const;
   bool has(std::string_view key) const;
   Field member(std::string_view key) const;  // required key
+  // The place of `key` in this object whether it is there or not, for a message about a key
+  // the user left out (its value reads as null).
+  Field place(std::string_view key) const;
   std::optional<Field> optional_member(std::string_view key) const;
   std::vector<std::pair<std::string, Field>> members() const;  // requires an object
 
@@ -76,6 +79,7 @@ class Field {
   // Fixed-length lists of numbers; `shape` is shown in messages, e.g. "[x, y]".
   Vec2 vec2(std::string_view shape) const;
   Vec3 vec3(std::string_view shape) const;
+  Eigen::Vector4d vec4(std::string_view shape) const;
 
   // "a string (\"abc\")", "a list", "the number -1", ... for "expected X, got Y".
   std::string describe() const;
@@ -88,5 +92,21 @@ class Field {
   std::string path_;
   const std::string* source_;
 };
+
+// ---- numbers with a range: one wording for every reader ----
+double positive_number(const Field& f);      // > 0
+double non_negative_number(const Field& f);  // >= 0
+// lo <= x <= hi, with each end optionally excluded; `range` is the range as the user reads
+// it ("greater than -1 and less than 0.5").
+double number_in_range(const Field& f, double lo, bool lo_open, double hi, bool hi_open,
+                       std::string_view range);
+int integer_at_least(const Field& f, int lo);
+
+// `"a", "b"` for the "known: ..." part of a message.
+std::string quoted_list(std::initializer_list<std::string_view> names);
+
+// The whole text of an input file. Throws InputError "<path>: cannot open ..." naming the
+// path; `kind` says what the file should have been ("a scene file") when it is a directory.
+std::string read_input_file(const std::string& path, std::string_view kind);
 
 }  // namespace dda::input

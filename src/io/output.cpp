@@ -11,6 +11,13 @@
 
 namespace dda {
 
+// 17 significant digits: enough for every double to read back bit-for-bit.
+std::string format_full_precision(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -21,12 +28,7 @@ constexpr const char* kHistoryHeader =
     "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega,"
     "kinetic,potential,strain_energy";
 
-// 17 significant digits: enough for every double to read back bit-for-bit.
-std::string num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
+std::string num(double x) { return format_full_precision(x); }
 
 [[noreturn]] void fail(const std::string& what, const fs::path& path) {
   throw std::runtime_error("output: " + what + " " + path.string());

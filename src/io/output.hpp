@@ -13,6 +13,10 @@
 
 namespace dda {
 
+// A number as the CSV files write it: 17 significant digits ("%.17g"), which reads back as
+// the same double.
+std::string format_full_precision(double x);
+
 class OutputWriter {
  public:
   // Creates `dir` (and dir/vtk) if needed and opens history.csv. Throws std::runtime_error

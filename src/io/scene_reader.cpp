@@ -3,17 +3,13 @@
 #include "io/scene_reader.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <utility>
 
 #include "contact/broad_phase.hpp"
 #include "io/json_input.hpp"
+#include "io/material_reader.hpp"
 #include "kinematics/overlap.hpp"
 #include "kinematics/polygon.hpp"
 
@@ -23,63 +19,18 @@ namespace {
 
 using input::Field;
 using input::format_number;
-
-// ---- numbers with a range ----
-
-double positive_number(const Field& f) {
-  const double x = f.number();
-  if (x <= 0.0) f.fail("must be positive, got " + format_number(x));
-  return x;
-}
-
-double non_negative_number(const Field& f) {
-  const double x = f.number();
-  if (x < 0.0) f.fail("must not be negative, got " + format_number(x));
-  return x;
-}
+using input::integer_at_least;
+using input::non_negative_number;
+using input::number_in_range;
+using input::positive_number;
 
 // A key that is not there but must be, when the rule is more than "always required" (so the
 // message can say why). Reported at the key's place, like Field::member does.
-[[noreturn]] void fail_missing(const Field& parent, std::string_view key,
-                               const std::string& source, std::string_view why) {
-  static const nlohmann::json kAbsent;
-  Field(kAbsent, input::member_path(parent.path(), key), source)
-      .fail("required key is missing: " + std::string(why));
-}
-
-// lo <= x <= hi, with each end optionally excluded; `range` is the range as the user reads it.
-double number_in_range(const Field& f, double lo, bool lo_open, double hi, bool hi_open,
-                       std::string_view range) {
-  const double x = f.number();
-  const bool above_lo = lo_open ? x > lo : x >= lo;
-  const bool below_hi = hi_open ? x < hi : x <= hi;
-  if (!above_lo || !below_hi) {
-    f.fail("must be " + std::string(range) + ", got " + format_number(x));
-  }
-  return x;
-}
-
-int integer_at_least(const Field& f, int lo) {
-  const int n = f.integer();
-  if (n < lo) f.fail("must be at least " + std::to_string(lo) + ", got " + std::to_string(n));
-  return n;
-}
-
-std::string quoted_list(std::initializer_list<std::string_view> names) {
-  std::string out;
-  for (std::string_view n : names) out += (out.empty() ? "\"" : ", \"") + std::string(n) + "\"";
-  return out;
+[[noreturn]] void fail_missing(const Field& parent, std::string_view key, std::string_view why) {
+  parent.place(key).fail("required key is missing: " + std::string(why));
 }
 
 // ---- top level and control ----
-
-PlaneMode read_plane(const Field& f) {
-  const std::string name = f.string();
-  if (name == "strain") return PlaneMode::Strain;
-  if (name == "stress") return PlaneMode::Stress;
-  f.fail("unknown plane mode \"" + name + "\" (known: " + quoted_list({"strain", "stress"}) +
-         ")");
-}
 
 std::vector<double> read_time_steps(const Field& f) {
   if (!f.is_list()) return {positive_number(f)};
@@ -156,25 +107,12 @@ ControlSettings read_control(const Field& f) {
 
 // ---- materials ----
 
-Material read_material(const std::string& name, const Field& f) {
-  f.expect_keys({"model", "density", "young", "poisson"});
-  const Field model = f.member("model");
-  if (model.string() != "elastic") {
-    model.fail("unknown material model \"" + model.string() + "\" (known models: \"elastic\")");
-  }
-  Material m;
-  m.name = name;
-  m.density = positive_number(f.member("density"));
-  m.young = positive_number(f.member("young"));
-  // The bounds keep the elastic matrix positive definite (bulk and shear moduli positive).
-  m.poisson = number_in_range(f.member("poisson"), -1.0, true, 0.5, true,
-                              "greater than -1 and less than 0.5");
-  return m;
-}
-
-std::vector<Material> read_materials(const Field& f) {
+// `plane` is the scene's: the plastic models are plane strain only.
+std::vector<Material> read_materials(const Field& f, PlaneMode plane) {
   std::vector<Material> materials;
-  for (const auto& [name, value] : f.members()) materials.push_back(read_material(name, value));
+  for (const auto& [name, value] : f.members()) {
+    materials.push_back(input::read_material(name, value, plane));
+  }
   if (materials.empty()) f.fail("define at least one material");
   return materials;
 }
@@ -216,8 +154,7 @@ JointMaterial read_joint_material(const std::string& name, const Field& f) {
 // order of name (objects are read with their keys sorted, as for materials). Required with
 // two or more blocks, so that the friction between blocks is always the user's choice; with
 // one block the built-in frictionless default stays.
-std::vector<JointMaterial> read_joint_materials(const Field& root, std::size_t block_count,
-                                                const std::string& source) {
+std::vector<JointMaterial> read_joint_materials(const Field& root, std::size_t block_count) {
   const bool required = block_count >= 2;
   const std::string why =
       "the scene has " + std::to_string(block_count) +
@@ -227,7 +164,7 @@ std::vector<JointMaterial> read_joint_materials(const Field& root, std::size_t b
   std::vector<JointMaterial> joints{kBuiltInDefaultJoint};
   const auto given = root.optional_member("joint_materials");
   if (!given) {
-    if (required) fail_missing(root, "joint_materials", source, why);
+    if (required) fail_missing(root, "joint_materials", why);
     return joints;
   }
   const auto members = given->members();
@@ -236,7 +173,7 @@ std::vector<JointMaterial> read_joint_materials(const Field& root, std::size_t b
     joints.push_back(read_joint_material(std::string(kDefaultJoint),
                                          given->member(kDefaultJoint)));
   } else if (required) {
-    fail_missing(*given, kDefaultJoint, source, why);
+    fail_missing(*given, kDefaultJoint, why);
   }
   for (const auto& [name, value] : members) {
     if (name != kDefaultJoint) joints.push_back(read_joint_material(name, value));
@@ -461,14 +398,14 @@ Scene read_scene(const Field& root, const std::string& source) {
   scene.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
   if (auto g = root.optional_member("gravity")) scene.gravity = g->vec2("[gx, gy]");
-  if (auto g = root.optional_member("plane")) scene.plane = read_plane(*g);
+  if (auto g = root.optional_member("plane")) scene.plane = input::read_plane(*g);
   scene.control = read_control(root.member("control"));
-  scene.materials = read_materials(root.member("materials"));
+  scene.materials = read_materials(root.member("materials"), scene.plane);
   const std::vector<Field> block_fields =
       root.member("blocks").elements(1, "list at least one block");
   for (const Field& b : block_fields) scene.blocks.push_back(read_block(b, scene.materials));
   check_no_overlap(block_fields, scene.blocks);
-  scene.joint_materials = read_joint_materials(root, scene.blocks.size(), source);
+  scene.joint_materials = read_joint_materials(root, scene.blocks.size());
   if (auto joints = root.optional_member("joints")) {
     scene.joints = read_joints(*joints, scene.blocks.size(), scene.joint_materials);
   }
@@ -492,17 +429,7 @@ Scene parse_scene_text(const std::string& text, const std::string& source) {
 }
 
 Scene read_scene_file(const std::string& path) {
-  const std::string name = path.empty() ? "(empty file name)" : path;
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError(name + ": cannot open: it is a directory, not a scene file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(name + ": cannot open file (" + std::strerror(errno) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(name + ": cannot read file (" + std::strerror(errno) + ")");
-  return parse_scene_text(text.str(), path);
+  return parse_scene_text(input::read_input_file(path, "a scene file"), path);
 }
 
 }  // namespace dda
