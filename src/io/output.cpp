@@ -205,7 +205,7 @@ json per_step(long total, int max, int steps) {
 json block_json(const Block& b, int index) {
   json vertices = json::array();
   for (const Vec2& p : b.vertices) vertices.push_back(vec(p));
-  return {
+  json out = {
       {"index", index},
       {"fixed", b.fixed},
       {"vertices", vertices},
@@ -218,6 +218,16 @@ json block_json(const Block& b, int index) {
       {"stress", vec(b.stress)},
       {"velocity", json::array({b.velocity[kU0], b.velocity[kV0], b.velocity[kR0]})},
   };
+  if (b.plastic) {
+    out["plastic"] = {{"szz", b.szz},
+                      {"eps_p", b.material_state.eps_p},
+                      {"plastic_strain", json::array({b.material_state.plastic_strain[0],
+                                                      b.material_state.plastic_strain[1],
+                                                      b.material_state.plastic_strain[2],
+                                                      b.material_state.plastic_strain[3]})},
+                      {"branch", branch_name(b.branch)}};
+  }
+  return out;
 }
 
 }  // namespace
@@ -277,7 +287,8 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
       {"cut_steps", stats.cut_steps},
       {"cuts", {{"displacement", stats.cuts_for_displacement},
                 {"open_close", stats.cuts_for_open_close},
-                {"penetration", stats.cuts_for_penetration}}},
+                {"penetration", stats.cuts_for_penetration},
+                {"material", stats.cuts_for_material}}},
       {"iterations", stats.iterations},
       {"open_close_iterations", per_step(stats.open_close_total, stats.open_close_max, stats.steps)},
       {"contacts", {{"final", stats.contacts_final},
