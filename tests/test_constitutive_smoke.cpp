@@ -1,0 +1,112 @@
+// The iso-error maps' smoke run (verification/constitutive, issue 5):
+// `dda_verify_constitutive --smoke` exits 0, prints the report and writes report.md, maps.csv
+// and one CSV per map with every grid point, no failed return, and the start on the surface
+// (error 0 at the zero increment); bad arguments exit 2. The accuracy of the returns is what
+// the maps report, not something this test bounds; it guards the one-command run.
+#include <sys/wait.h>
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Command {
+  int exit_code = -1;  // -1 when the program did not exit normally
+  std::string output;  // stdout and stderr together
+};
+
+Command run(const std::string& command) {
+  Command result;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) throw std::runtime_error("popen failed: " + command);
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
+  const int status = pclose(pipe);
+  if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  return result;
+}
+
+std::vector<std::string> lines_of(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> fields(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream in(line);
+  for (std::string f; std::getline(in, f, ',');) out.push_back(f);
+  return out;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("iso-error maps: the smoke run writes the report and every map", "[constitutive]") {
+  const fs::path out = DDA_CONSTITUTIVE_SMOKE_DIR;
+  fs::remove_all(out);
+  const Command c =
+      run(std::string("'") + DDA_CONSTITUTIVE_EXE + "' --smoke --out '" + out.string() + "'");
+  INFO(c.output);
+  REQUIRE(c.exit_code == 0);
+  CHECK(contains(c.output, "# Iso-error maps of the return maps"));
+
+  std::ifstream report_file(out / "report.md");
+  std::stringstream report;
+  report << report_file.rdbuf();
+  for (const char* section : {"## Maximum errors", "## What the maps show",
+                              "## Shrinking the worst increment", "## Runtime"}) {
+    CHECK(contains(report.str(), section));
+  }
+
+  // maps.csv names the maps; the first field is the quoted name.
+  const std::vector<std::string> maps = lines_of(out / "maps.csv");
+  REQUIRE(maps.size() >= 2);
+  int mohr_coulomb = 0, drucker_prager = 0;
+  for (std::size_t i = 1; i < maps.size(); ++i) {
+    const std::string quoted = maps[i].substr(0, maps[i].find(','));
+    REQUIRE(quoted.size() > 2);
+    const std::string name = quoted.substr(1, quoted.size() - 2);
+    INFO(name);
+    mohr_coulomb += name.rfind("mc_", 0) == 0;
+    drucker_prager += name.rfind("dp_", 0) == 0;
+    CHECK(contains(report.str(), "`" + name + "`"));
+    // The smoke grid: 5 x 5 points, every one converged, error 0 at the zero increment.
+    const std::vector<std::string> rows = lines_of(out / (name + ".csv"));
+    REQUIRE(rows.size() == 26);
+    CHECK(contains(rows[0], "x,y,exx,eyy,gxy,"));
+    int plastic = 0;
+    for (std::size_t r = 1; r < rows.size(); ++r) {
+      const std::vector<std::string> f = fields(rows[r]);
+      REQUIRE(f.size() == 19);
+      CHECK(f[18] == "ok");
+      const double error = std::stod(f[13]);
+      CHECK(error >= 0.0);
+      CHECK(error < 10.0);
+      if (f[0] == "0" && f[1] == "0") CHECK(error == 0.0);
+      plastic += f[14] != "elastic";
+    }
+    CHECK(plastic > 0);  // each map reaches the surface somewhere
+  }
+  CHECK(mohr_coulomb >= 2);
+  CHECK(drucker_prager >= 2);
+}
+
+TEST_CASE("iso-error maps: bad arguments exit with code 2", "[constitutive]") {
+  CHECK(run(std::string("'") + DDA_CONSTITUTIVE_EXE + "' --smoke").exit_code == 2);
+  CHECK(run(std::string("'") + DDA_CONSTITUTIVE_EXE + "' --out").exit_code == 2);
+  CHECK(run(std::string("'") + DDA_CONSTITUTIVE_EXE + "' --what").exit_code == 2);
+}

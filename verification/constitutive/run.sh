@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The iso-error maps of the material library in one command (issue 5; verification catalogue,
+# "Tangents and convergence"). Prints the report and leaves report.md, the CSVs, the PNGs and
+# projection_check.md in OUT_DIR.
+#
+#   verification/constitutive/run.sh OUT_DIR [--smoke]
+#
+# It builds nothing: it runs $DDA_BUILD_DIR/dda_verify_constitutive (default: build/release of
+# this repository; build it first with `cmake --preset release && cmake --build --preset
+# release`), then draws the PNGs and runs the independent projection check with Debian's
+# /usr/bin/python3 (numpy, matplotlib; the python3 on PATH may be another interpreter without
+# them).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then
+  echo "usage: $0 OUT_DIR [--smoke]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
+  exit 2
+fi
+out="$1"
+shift
+exe="${DDA_BUILD_DIR:-$root/build/release}/dda_verify_constitutive"
+if [ ! -x "$exe" ]; then
+  echo "$0: $exe not found; build it first (cmake --preset release && cmake --build --preset release)" >&2
+  echo "    or point DDA_BUILD_DIR at a build directory that has it" >&2
+  exit 2
+fi
+"$exe" --out "$out" "$@"
+/usr/bin/python3 "$here/plot_constitutive.py" "$out"
+/usr/bin/python3 "$here/check_projection.py" "$out"
