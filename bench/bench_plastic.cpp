@@ -10,13 +10,13 @@
 
 #include <cmath>
 
+#include "brick_wall.hpp"
 #include "solver/step.hpp"
 #include "solver/world.hpp"
 
 namespace {
 
 dda::World wall(int n, int variant) {
-  dda::Scene s;
   dda::Material m = dda::elastic_material("rock", 2700.0, 1e9, 0.25);
   if (variant > 0) {
     m.model = dda::MaterialModel::MohrCoulomb;
@@ -24,25 +24,7 @@ dda::World wall(int n, int variant) {
     m.dilation_angle = 30.0;
     m.cohesion = variant == 1 ? 1e9 : 1e4;
   }
-  s.materials.push_back(m);
-  s.joint_materials[0] = dda::JointMaterial{"default", 30.0, 0.0, 0.0};
-  s.control.time_steps = {0.002};
-  s.control.steps = 1 << 30;
-  s.control.max_open_close = 30;
-  const int cols = static_cast<int>(std::ceil(std::sqrt(2.0 * n)));
-  s.control.max_displacement_ratio = 0.01 / (0.5 * (cols + 2.0));  // 1 cm a step, as BM_PackedWall
-  dda::BlockSpec base;
-  base.vertices = {{-1.0, -1.0}, {cols + 1.0, -1.0}, {cols + 1.0, 0.0}, {-1.0, 0.0}};
-  base.fixed = true;
-  s.blocks.push_back(base);
-  for (int i = 0; i < n; ++i) {
-    const int r = i / cols, c = i % cols;
-    const double x = c + (r % 2 ? 0.5 : 0.0), y = 0.5 * r;
-    dda::BlockSpec b;
-    b.vertices = {{x, y}, {x + 1.0, y}, {x + 1.0, y + 0.5}, {x, y + 0.5}};
-    s.blocks.push_back(b);
-  }
-  return dda::make_world(s);
+  return dda::make_world(dda::bench::brick_wall_scene(n, m));
 }
 
 void BM_PlasticWall(benchmark::State& state) {

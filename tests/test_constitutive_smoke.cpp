@@ -3,8 +3,6 @@
 // and one CSV per map with every grid point, no failed return, and the start on the surface
 // (error 0 at the zero increment); bad arguments exit 2. The accuracy of the returns is what
 // the maps report, not something this test bounds; it guards the one-command run.
-#include <sys/wait.h>
-
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -14,26 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "cli_helpers.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Command {
-  int exit_code = -1;  // -1 when the program did not exit normally
-  std::string output;  // stdout and stderr together
-};
+using dda::test::CommandResult;
 
-Command run(const std::string& command) {
-  Command result;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) throw std::runtime_error("popen failed: " + command);
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
-  const int status = pclose(pipe);
-  if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  return result;
-}
+CommandResult run(const std::string& command) { return dda::test::run_command(command); }
 
 std::vector<std::string> lines_of(const fs::path& path) {
   std::ifstream in(path);
@@ -58,7 +45,7 @@ bool contains(const std::string& text, const std::string& part) {
 TEST_CASE("iso-error maps: the smoke run writes the report and every map", "[constitutive]") {
   const fs::path out = DDA_CONSTITUTIVE_SMOKE_DIR;
   fs::remove_all(out);
-  const Command c =
+  const CommandResult c =
       run(std::string("'") + DDA_CONSTITUTIVE_EXE + "' --smoke --out '" + out.string() + "'");
   INFO(c.output);
   REQUIRE(c.exit_code == 0);
