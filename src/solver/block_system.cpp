@@ -27,6 +27,28 @@ Eigen::SparseMatrix<double> BlockSystem::lower_triangle() const {
   return lower;
 }
 
+Eigen::SparseMatrix<double> BlockSystem::full() const {
+  const int n = 6 * block_rows();
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(36 * (diagonal.size() + 2 * couplings.size()));
+  for (int b = 0; b < block_rows(); ++b) {
+    for (int j = 0; j < 6; ++j) {
+      for (int i = 0; i < 6; ++i) entries.emplace_back(6 * b + i, 6 * b + j, diagonal[b](i, j));
+    }
+  }
+  for (const Coupling& c : couplings) {
+    for (int j = 0; j < 6; ++j) {
+      for (int i = 0; i < 6; ++i) {
+        entries.emplace_back(6 * c.row + i, 6 * c.col + j, c.k(i, j));
+        entries.emplace_back(6 * c.col + j, 6 * c.row + i, c.k(i, j));
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> k(n, n);
+  k.setFromTriplets(entries.begin(), entries.end());  // sums duplicate couplings
+  return k;
+}
+
 Eigen::MatrixXd BlockSystem::dense() const {
   const int n = 6 * block_rows();
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n);

@@ -1,6 +1,8 @@
-// The global system K d = f in 6x6 blocks: one block row per free block. Symmetric; only
-// the diagonal blocks and the couplings below the diagonal are stored. Assembly fills it;
-// the linear solvers (dense reference, CHOLMOD) read it.
+// The global system K d = f in 6x6 blocks: one block row per free block. Symmetric, except
+// that a plastic block with non-associated flow puts its unsymmetric consistent tangent into
+// its own diagonal block; only the diagonal blocks (whole) and the couplings below the
+// diagonal are stored. Assembly fills it; the linear solvers (dense reference, CHOLMOD for
+// the symmetric system, KLU for the unsymmetric one) read it.
 #pragma once
 
 #include <Eigen/Sparse>
@@ -27,7 +29,9 @@ struct BlockSystem {
 
   // The lower triangle as a compressed column matrix (what CHOLMOD reads).
   Eigen::SparseMatrix<double> lower_triangle() const;
-  // The whole symmetric matrix, dense (the reference path in tests).
+  // The whole matrix as a compressed column matrix, diagonal blocks as stored (what KLU reads).
+  Eigen::SparseMatrix<double> full() const;
+  // The whole matrix, dense (the reference path in tests).
   Eigen::MatrixXd dense() const;
 };
 

@@ -15,6 +15,10 @@ namespace dda {
 // Dense reference: LDLT of the whole matrix. nullopt when the matrix is not positive definite.
 std::optional<Eigen::VectorXd> solve_dense(const BlockSystem& system);
 
+// Sparse LU with KLU for the unsymmetric system (a non-associated plastic block's tangent):
+// analysed and factorised at every call. nullopt when the matrix is singular.
+std::optional<Eigen::VectorXd> solve_klu(const BlockSystem& system);
+
 // y = K x for the symmetric block system (diagonal blocks plus couplings both ways).
 Eigen::VectorXd multiply(const BlockSystem& system, const Eigen::VectorXd& x);
 

@@ -41,12 +41,18 @@ Evaluation evaluate(const World& world, const Block& b, const Vec6& db) {
   return e;
 }
 
-// The step's equations are symmetric (CHOLMOD LDL'): a non-associated return's tangent is
-// not, and enters by its symmetric part, which makes the Newton iteration converge linearly
-// instead of quadratically for non-associated flow (associated flow keeps it exact).
-Mat3 symmetric_part(const Mat3& m) { return 0.5 * (m + m.transpose()); }
+// An associated return's tangent is symmetric up to round-off; a non-associated one's is not,
+// and then the step is solved with KLU instead of CHOLMOD (solver/step.cpp). Within this
+// share of its norm the tangent is taken as symmetric and symmetrised exactly, so that
+// CHOLMOD, which reads one triangle, sees the same matrix.
+constexpr double kSymmetryTolerance = 1e-12;
 
 }  // namespace
+
+bool any_unsymmetric(const std::vector<MaterialLinearization>& terms) {
+  return std::any_of(terms.begin(), terms.end(),
+                     [](const MaterialLinearization& l) { return !l.symmetric; });
+}
 
 bool has_plastic_blocks(const World& world) {
   return std::any_of(world.blocks.begin(), world.blocks.end(),
@@ -95,7 +101,9 @@ MaterialFollowUp follow_materials(const World& world, const Eigen::VectorXd& d,
     if ((e.stress - predicted).norm() > kNewtonRelativeTolerance * scale) ++follow.unconverged;
     l.strain_increment = increment;
     l.stress = e.stress;
-    l.tangent = symmetric_part(e.tangent);
+    const Mat3 skew = 0.5 * (e.tangent - e.tangent.transpose());
+    l.symmetric = skew.norm() <= kSymmetryTolerance * e.tangent.norm();
+    l.tangent = l.symmetric ? Mat3(e.tangent - skew) : e.tangent;
   }
   return follow;
 }

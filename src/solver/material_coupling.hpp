@@ -22,6 +22,10 @@ namespace dda {
 
 bool has_plastic_blocks(const World& world);
 
+// True when some plastic block's tangent is unsymmetric (non-associated flow while
+// yielding): the step's system must then be solved by LU (KLU), not LDL'.
+bool any_unsymmetric(const std::vector<MaterialLinearization>& terms);
+
 // The Newton start of a step: the elastic tangent at zero increment, from the stress at the
 // step's start (an elastic predictor).
 std::vector<MaterialLinearization> start_linearization(const World& world);

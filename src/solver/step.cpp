@@ -195,14 +195,21 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     int changed = 0;
     int secants_moved = 0;
     MaterialFollowUp materials;
+    bool factor_stale = false;
     do {
       ws.system = ws.block_terms;
       add_contact_terms(world, ws.contacts, ctx, ws.system);
       clock.lap(times.assemble);
-      const bool refactor = open_close == 0 || secants_moved > 0 || materials.unconverged > 0;
+      // A non-associated plastic block makes the system unsymmetric: KLU then, and CHOLMOD's
+      // factor (which no longer follows the contact springs) is rebuilt when next used.
+      const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
+      const bool refactor = open_close == 0 || secants_moved > 0 || materials.unconverged > 0 ||
+                            factor_stale;
       const std::optional<Eigen::VectorXd> solved =
-          refactor ? ws.solver.solve(ws.system)
-                   : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
+          unsymmetric ? solve_klu(ws.system)
+          : refactor  ? ws.solver.solve(ws.system)
+                      : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
+      factor_stale = unsymmetric;
       clock.lap(times.solve);
       ++stats.iterations;
       ++open_close;

@@ -12,7 +12,8 @@ namespace dda {
 struct MaterialLinearization {
   Vec3 strain_increment = Vec3::Zero();  // the step's strain increment it was taken at
   Vec3 stress = Vec3::Zero();            // (sxx, syy, sxy) there, Pa
-  Mat3 tangent = Mat3::Zero();           // d stress / d strain increment (symmetric part)
+  Mat3 tangent = Mat3::Zero();           // d stress / d strain increment (consistent)
+  bool symmetric = true;                 // false for non-associated flow while yielding
 };
 
 struct StepContext {
