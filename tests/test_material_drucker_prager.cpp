@@ -1,6 +1,8 @@
 // Drucker-Prager closed forms (verification catalogue, "Drucker-Prager"): the matches to
 // Mohr-Coulomb, the cone return formula, the apex, the plane-strain limit load, hardening.
 #include <catch2/catch.hpp>
+
+#include "material_builders.hpp"
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -11,6 +13,7 @@
 #include "materials/yield_mohr_coulomb.hpp"
 
 using namespace dda;
+using test::segment;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
@@ -24,25 +27,11 @@ double rad(double deg) { return deg * kPi / 180.0; }
 constexpr double kDriverTol = 1e-9;
 
 MaterialParameters dp_soil(double dilation_deg, DruckerPragerMatch match) {
-  MaterialParameters p;
-  p.model = MaterialModel::DruckerPrager;
-  p.young = 50e6;
-  p.poisson = 0.3;
-  p.density = 2000.0;
-  p.cohesion = 20e3;
-  p.friction_angle = 30.0;
-  p.dilation_angle = dilation_deg;
+  MaterialParameters p = test::soil(MaterialModel::DruckerPrager, dilation_deg);
   p.match = match;
   return p;
 }
 
-PathSegment segment(int steps, std::optional<ComponentTarget> xx, std::optional<ComponentTarget> yy,
-                    std::optional<ComponentTarget> xy) {
-  PathSegment s;
-  s.steps = steps;
-  s.targets = {xx, yy, xy};
-  return s;
-}
 
 }  // namespace
 

@@ -1,6 +1,8 @@
 // Mohr-Coulomb closed forms (verification catalogue, "Mohr-Coulomb"), driven through the
 // material-point driver (src/materials/material_point.hpp) in plane strain. Tension positive.
 #include <catch2/catch.hpp>
+
+#include "material_builders.hpp"
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -11,6 +13,7 @@
 #include "materials/yield_mohr_coulomb.hpp"
 
 using namespace dda;
+using test::segment;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
@@ -26,27 +29,12 @@ double rad(double deg) { return deg * kPi / 180.0; }
 
 // A soil-like Mohr-Coulomb material: E = 50 MPa, nu = 0.3, c = 20 kPa, phi = 30 degrees.
 MaterialParameters soil(double dilation_deg) {
-  MaterialParameters p;
-  p.model = MaterialModel::MohrCoulomb;
-  p.young = 50e6;
-  p.poisson = 0.3;
-  p.density = 2000.0;
-  p.cohesion = 20e3;
-  p.friction_angle = 30.0;
-  p.dilation_angle = dilation_deg;
-  return p;
+  return test::soil(MaterialModel::MohrCoulomb, dilation_deg);
 }
 
 ComponentTarget strain(double v) { return {Control::Strain, v}; }
 ComponentTarget stress(double v) { return {Control::Stress, v}; }
 
-PathSegment segment(int steps, std::optional<ComponentTarget> xx, std::optional<ComponentTarget> yy,
-                    std::optional<ComponentTarget> xy) {
-  PathSegment s;
-  s.steps = steps;
-  s.targets = {xx, yy, xy};
-  return s;
-}
 
 MaterialPointRun run(const MaterialParameters& p, const Vec4& s0, std::vector<PathSegment> path) {
   MaterialPointRun r = run_material_point(p, s0, path);

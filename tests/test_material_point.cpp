@@ -1,6 +1,8 @@
 // The elastic model through integrate(), the material-point driver's path semantics, and
 // quadratic convergence of its Newton solve with the consistent tangent.
 #include <catch2/catch.hpp>
+
+#include "material_builders.hpp"
 #include <cmath>
 #include <vector>
 
@@ -8,6 +10,7 @@
 #include "materials/material_point.hpp"
 
 using namespace dda;
+using test::segment;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
@@ -23,13 +26,6 @@ MaterialParameters elastic(PlaneMode plane) {
   return p;
 }
 
-PathSegment segment(int steps, std::optional<ComponentTarget> xx, std::optional<ComponentTarget> yy,
-                    std::optional<ComponentTarget> xy) {
-  PathSegment s;
-  s.steps = steps;
-  s.targets = {xx, yy, xy};
-  return s;
-}
 
 // A few flops on numbers ~1e6: 1e-14 relative.
 constexpr double kRoundOff = 1e-14;
@@ -156,14 +152,7 @@ TEST_CASE("the quadratic-convergence check fails for an elastic-tangent Newton",
   // The same kind of solve with the elastic tangent instead of the consistent one: it
   // converges only linearly, and rho_{k+1} <= 10 rho_k^2 is broken. This shows the test
   // above can fail.
-  MaterialParameters p;
-  p.model = MaterialModel::DruckerPrager;
-  p.young = 50e6;
-  p.poisson = 0.3;
-  p.density = 2000.0;
-  p.cohesion = 20e3;
-  p.friction_angle = 30.0;
-  p.dilation_angle = 10.0;
+  const MaterialParameters p = test::soil(MaterialModel::DruckerPrager, 10.0);
   const Vec4 s0{-1e5, -1e5, -0.6e5, 0.0};
   const Mat3 d = elastic_matrix(p.young, p.poisson, PlaneMode::Strain);
   // sxx = -1e5 and sxy = 3e4 by stress at eyy = -5e-3 (on the cone).

@@ -1,23 +1,15 @@
 // Bad material input (issue 5 item 5): each rule names the key at fault.
 #include <catch2/catch.hpp>
 
+#include "material_builders.hpp"
+
 #include "materials/validate_material.hpp"
 
 using namespace dda;
 
 namespace {
 
-MaterialParameters good_mc() {
-  MaterialParameters p;
-  p.model = MaterialModel::MohrCoulomb;
-  p.young = 50e6;
-  p.poisson = 0.3;
-  p.density = 2000.0;
-  p.cohesion = 20e3;
-  p.friction_angle = 30.0;
-  p.dilation_angle = 10.0;
-  return p;
-}
+MaterialParameters good_mc() { return test::soil(MaterialModel::MohrCoulomb, 10.0); }
 
 std::string key_of(const MaterialParameters& p) {
   const auto e = validate_material(p);
