@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include "../common/format.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -10,33 +12,11 @@ namespace dda::constitutive {
 
 namespace {
 
-std::ofstream open_csv(const std::filesystem::path& dir, const std::string& name,
-                       const std::string& header) {
-  const std::filesystem::path path = dir / name;
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-  out << header << '\n';
-  return out;
-}
+using verification::full;
+using verification::open_csv;
 
-// Shortest round-trip form (17 significant digits at most); NaN as "nan".
-std::string full(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
-
-// `digits` significant digits, scientific when small or large.
-std::string sig(double x, int digits = 2) {
-  if (std::isnan(x)) return "-";
-  char buf[32];
-  if (x == 0.0 || (std::abs(x) >= 1e-3 && std::abs(x) < 1e4)) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
-  } else {
-    std::snprintf(buf, sizeof buf, "%.*e", digits - 1, x);
-  }
-  return buf;
-}
+// Two significant digits unless asked otherwise; NaN as "-".
+std::string sig(double x, int digits = 2) { return verification::significant(x, digits); }
 
 // A CSV text field in double quotes (RFC 4180: a quote inside is doubled).
 std::string quoted(const std::string& text) {

@@ -1,23 +1,17 @@
-// Minimal CSV and markdown helpers: numbers at full precision in the CSVs (for plots and
-// re-checks), at a few significant digits in the report.
+// CSV and markdown helpers of the paper reproduction (verification/common/format.hpp).
 #pragma once
 
-#include <filesystem>
-#include <fstream>
 #include <string>
+
+#include "../common/format.hpp"
 
 namespace dda::paper {
 
-// Opens `dir/name` for writing and writes the header line; throws std::runtime_error
-// naming the file when it cannot be opened.
-std::ofstream open_csv(const std::filesystem::path& dir, const std::string& name,
-                       const std::string& header);
+using verification::fixed;
+using verification::full;
+using verification::open_csv;
 
-// Shortest round-trip form of a double (17 significant digits at most).
-std::string full(double x);
-// `digits` significant digits, scientific when small or large ("1.23e-05").
-std::string sig(double x, int digits = 3);
-// Fixed with `decimals` decimals ("0.707107").
-std::string fixed(double x, int decimals);
+// Three significant digits unless asked otherwise.
+inline std::string sig(double x, int digits = 3) { return verification::significant(x, digits); }
 
 }  // namespace dda::paper

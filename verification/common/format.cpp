@@ -1,10 +1,10 @@
-#include "csv.hpp"
+#include "format.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-namespace dda::paper {
+namespace dda::verification {
 
 std::ofstream open_csv(const std::filesystem::path& dir, const std::string& name,
                        const std::string& header) {
@@ -21,7 +21,8 @@ std::string full(double x) {
   return buf;
 }
 
-std::string sig(double x, int digits) {
+std::string significant(double x, int digits) {
+  if (std::isnan(x)) return "-";
   char buf[32];
   if (x == 0.0 || (std::abs(x) >= 1e-3 && std::abs(x) < 1e4)) {
     std::snprintf(buf, sizeof buf, "%.*g", digits, x);
@@ -37,4 +38,4 @@ std::string fixed(double x, int decimals) {
   return buf;
 }
 
-}  // namespace dda::paper
+}  // namespace dda::verification
