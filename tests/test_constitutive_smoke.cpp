@@ -19,25 +19,17 @@ namespace fs = std::filesystem;
 namespace {
 
 using dda::test::CommandResult;
+using dda::test::contains;
+using dda::test::read_file;
+using dda::test::read_lines;
 
 CommandResult run(const std::string& command) { return dda::test::run_command(command); }
-
-std::vector<std::string> lines_of(const fs::path& path) {
-  std::ifstream in(path);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 std::vector<std::string> fields(const std::string& line) {
   std::vector<std::string> out;
   std::stringstream in(line);
   for (std::string f; std::getline(in, f, ',');) out.push_back(f);
   return out;
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
 }
 
 }  // namespace
@@ -51,16 +43,14 @@ TEST_CASE("iso-error maps: the smoke run writes the report and every map", "[con
   REQUIRE(c.exit_code == 0);
   CHECK(contains(c.output, "# Iso-error maps of the return maps"));
 
-  std::ifstream report_file(out / "report.md");
-  std::stringstream report;
-  report << report_file.rdbuf();
+  const std::string report = read_file(out / "report.md");
   for (const char* section : {"## Maximum errors", "## What the maps show",
                               "## Shrinking the worst increment", "## Runtime"}) {
-    CHECK(contains(report.str(), section));
+    CHECK(contains(report, section));
   }
 
   // maps.csv names the maps; the first field is the quoted name.
-  const std::vector<std::string> maps = lines_of(out / "maps.csv");
+  const std::vector<std::string> maps = read_lines(out / "maps.csv");
   REQUIRE(maps.size() >= 2);
   int mohr_coulomb = 0, drucker_prager = 0;
   for (std::size_t i = 1; i < maps.size(); ++i) {
@@ -70,9 +60,9 @@ TEST_CASE("iso-error maps: the smoke run writes the report and every map", "[con
     INFO(name);
     mohr_coulomb += name.rfind("mc_", 0) == 0;
     drucker_prager += name.rfind("dp_", 0) == 0;
-    CHECK(contains(report.str(), "`" + name + "`"));
+    CHECK(contains(report, "`" + name + "`"));
     // The smoke grid: 5 x 5 points, every one converged, error 0 at the zero increment.
-    const std::vector<std::string> rows = lines_of(out / (name + ".csv"));
+    const std::vector<std::string> rows = read_lines(out / (name + ".csv"));
     REQUIRE(rows.size() == 26);
     CHECK(contains(rows[0], "x,y,exx,eyy,gxy,"));
     int plastic = 0;

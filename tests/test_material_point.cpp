@@ -118,14 +118,7 @@ TEST_CASE("material-point Newton converges quadratically with the consistent tan
   // Pairs whose rho_{k+1} is below 1e-12 (round-off of the returns) are not judged.
   const double scale = 1e5;
   for (const MaterialModel model : {MaterialModel::DruckerPrager, MaterialModel::MohrCoulomb}) {
-    MaterialParameters p;
-    p.model = model;
-    p.young = 50e6;
-    p.poisson = 0.3;
-    p.density = 2000.0;
-    p.cohesion = 20e3;
-    p.friction_angle = 30.0;
-    p.dilation_angle = 10.0;
+    MaterialParameters p = test::soil(model, 10.0);
     p.hardening = {{0.0, 20e3}, {0.05, 40e3}};
     const std::vector<PathSegment> path = {segment(10, ComponentTarget{Control::Stress, -1e5},
                                                    ComponentTarget{Control::Strain, -0.02},

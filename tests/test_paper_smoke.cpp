@@ -18,19 +18,11 @@ namespace fs = std::filesystem;
 namespace {
 
 using dda::test::CommandResult;
+using dda::test::contains;
+using dda::test::read_file;
+using dda::test::read_lines;
 
 CommandResult run(const std::string& command) { return dda::test::run_command(command); }
-
-std::vector<std::string> lines_of(const fs::path& path) {
-  std::ifstream in(path);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 }  // namespace
 
@@ -43,13 +35,11 @@ TEST_CASE("paper reproduction: the smoke run writes the report and every CSV", "
   REQUIRE(c.exit_code == 0);
   CHECK(contains(c.output, "# Paper reproduction"));
 
-  std::ifstream report_file(out / "report.md");
-  std::stringstream report;
-  report << report_file.rdbuf();
+  const std::string report = read_file(out / "report.md");
   for (const char* section : {"## Treatments", "## Table 1: the falling octagon",
                               "## Tables 2 and 3: the swinging octagon", "### Energy and swing",
                               "## Speed against error"}) {
-    CHECK(contains(report.str(), section));
+    CHECK(contains(report, section));
   }
   // Every CSV has its header and at least one row.
   for (const char* name : {"falling_scene.csv", "falling_area.csv", "falling_path.csv",
@@ -57,11 +47,11 @@ TEST_CASE("paper reproduction: the smoke run writes the report and every CSV", "
                            "swinging_energy.csv", "swinging_summary.csv", "speed_spin.csv",
                            "speed_pendulum.csv"}) {
     INFO(name);
-    CHECK(lines_of(out / name).size() >= 2);
+    CHECK(read_lines(out / name).size() >= 2);
   }
   // `original` exists from the start: its three Table 1 runs complete.
   int original_completed = 0;
-  for (const std::string& line : lines_of(out / "falling_summary.csv")) {
+  for (const std::string& line : read_lines(out / "falling_summary.csv")) {
     if (line.rfind("original,", 0) == 0 && contains(line, ",completed,")) ++original_completed;
   }
   CHECK(original_completed == 3);
