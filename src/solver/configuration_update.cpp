@@ -16,24 +16,28 @@ Vec6 increments_of(const Block& b, const Eigen::VectorXd& d) { return d.segment<
 // ---- treatments that move points by the step's increments (original, second order,
 // post-adjustment): strains added in the global frame (paper Eq. 13) ----
 
-// Every point of every free block moved by displacement(x - x0, db), x0 the block's
-// reference point at the step's start.
+// Every point of every free block moved by displacement(b, x - x0, db), x0 the block's
+// reference point at the step's start (sin_variable's T' also reads the block).
 template <class Displacement>
 void move_by_increments(World& world, const Eigen::VectorXd& d, Displacement displacement) {
   // Pins and loads first: they need each block's reference point from the step's start.
   for (Pin& pin : world.pins) {
     const Block& b = world.blocks[pin.block];
-    if (!b.fixed) pin.current += displacement(pin.current - b.moments.centroid, increments_of(b, d));
+    if (!b.fixed) {
+      pin.current += displacement(b, pin.current - b.moments.centroid, increments_of(b, d));
+    }
   }
   for (PointLoad& load : world.loads) {
     const Block& b = world.blocks[load.block];
-    if (!b.fixed) load.current += displacement(load.current - b.moments.centroid, increments_of(b, d));
+    if (!b.fixed) {
+      load.current += displacement(b, load.current - b.moments.centroid, increments_of(b, d));
+    }
   }
   for (Block& b : world.blocks) {
     if (b.fixed) continue;
     const Vec6 db = increments_of(b, d);
     const Vec2 reference = b.moments.centroid;
-    for (Vec2& v : b.vertices) v += displacement(v - reference, db);
+    for (Vec2& v : b.vertices) v += displacement(b, v - reference, db);
     b.translation += db.head<2>();
     b.rotation += db[kR0];
     b.strain += db.segment<3>(kEx);
@@ -98,34 +102,12 @@ void rebuild_in_frame(World& world, const Eigen::VectorXd& d, FrameMap frame_map
 
 
 // sin_variable (Cheng and Zhang, paper Eqs. 9-12): points move by T' d' with the same T'
-// as the step (the last step's r0 inside it) and d' = (u0, v0, sin r0, ex, ey, gxy); strains
-// are added in the global frame. The T' of a block is taken before its last increment is
-// overwritten.
-void move_by_sine_column(World& world, const Eigen::VectorXd& d) {
-  const auto displacement = [&world, &d](int block, const Vec2& x) -> Vec2 {
-    const Block& b = world.blocks[static_cast<std::size_t>(block)];
-    Vec6 db = increments_of(b, d);
-    db[kR0] = std::sin(db[kR0]);
-    const LinearT t = t_with_rotation_column(sine_rotation_column(b.last_rotation_increment));
-    return t.at(x - b.moments.centroid) * db;
-  };
-  for (Pin& pin : world.pins) {
-    if (!world.blocks[pin.block].fixed) pin.current += displacement(pin.block, pin.current);
-  }
-  for (PointLoad& load : world.loads) {
-    if (!world.blocks[load.block].fixed) load.current += displacement(load.block, load.current);
-  }
-  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
-    Block& b = world.blocks[i];
-    if (b.fixed) continue;
-    for (Vec2& v : b.vertices) v += displacement(static_cast<int>(i), v);
-    const Vec6 db = increments_of(b, d);
-    b.translation += db.head<2>();
-    b.rotation += db[kR0];
-    b.strain += db.segment<3>(kEx);
-    b.local_strain = strain_in_turned_frame(b.strain, b.rotation);
-    b.moments = polygon_moments(b.vertices);
-  }
+// as the step (the last step's r0 inside it) and d' = (u0, v0, sin r0, ex, ey, gxy).
+Vec2 sine_column_displacement(const Block& b, const Vec2& offset, const Vec6& db) {
+  Vec6 sine_db = db;
+  sine_db[kR0] = std::sin(db[kR0]);
+  return t_with_rotation_column(sine_rotation_column(b.last_rotation_increment)).at(offset) *
+         sine_db;
 }
 
 void remember_rotation_increments(World& world, const Eigen::VectorXd& d) {
@@ -139,16 +121,20 @@ void move_blocks(World& world, const Eigen::VectorXd& d) {
     case RotationUpdate::Original: {
       // Shi 1988: x += T(x - x0) d with the first-order rotation column (paper Eq. 2).
       const LinearT t = shi_t();
-      move_by_increments(world, d, [&t](const Vec2& offset, const Vec6& db) -> Vec2 {
-        return t.at(offset) * db;
+      move_by_increments(world, d, [&t](const Block&, const Vec2& offset, const Vec6& db) {
+        return Vec2(t.at(offset) * db);
       });
       return;
     }
     case RotationUpdate::SecondOrder:  // Eq. 8 with cos r0 = 1 - r0^2/2, sin r0 = r0
-      move_by_increments(world, d, second_order_displacement);
+      move_by_increments(world, d, [](const Block&, const Vec2& offset, const Vec6& db) {
+        return second_order_displacement(offset, db);
+      });
       return;
     case RotationUpdate::PostAdjustment:  // Eq. 8, exact, after the open-close loop converged
-      move_by_increments(world, d, finite_rotation_displacement);
+      move_by_increments(world, d, [](const Block&, const Vec2& offset, const Vec6& db) {
+        return finite_rotation_displacement(offset, db);
+      });
       return;
     case RotationUpdate::LocalFrame:  // Eq. 19, consistent: x = xc + R(r)(I + E^)(X - Xc)
       rebuild_in_frame(world, d, frame_map);
@@ -157,7 +143,7 @@ void move_blocks(World& world, const Eigen::VectorXd& d) {
       rebuild_in_frame(world, d, frame_map_as_printed);
       return;
     case RotationUpdate::SinVariable:  // T' d' with the step's T' (Eqs. 10-12)
-      move_by_sine_column(world, d);
+      move_by_increments(world, d, sine_column_displacement);
       return;
     case RotationUpdate::FiniteRotation:  // local_frame's map; the step used the secant T
       rebuild_in_frame(world, d, frame_map);
