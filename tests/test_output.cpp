@@ -136,7 +136,9 @@ std::vector<double> expected_row(const World& w, int i) {
           b.moments.centroid.y(), b.rotation,  b.moments.area,  b.strain[0],
           b.strain[1],        b.strain[2],     b.stress[0],     b.stress[1],
           b.stress[2],        b.velocity[0],   b.velocity[1],   b.velocity[2],
-          e.kinetic,          e.potential,     e.strain_energy};
+          e.kinetic,          e.potential,     e.strain_energy, e.contact_energy,
+          w.energy.load_work, w.energy.friction_dissipation, w.energy.plastic_dissipation,
+          w.energy.damping_dissipation, w.energy.remainder};
 }
 
 // Writes three frames (steps 0, 10, 20) and the summary; keeps a copy of each recorded world.
@@ -179,7 +181,8 @@ TEST_CASE("history.csv has the exact header and one full-precision row per block
   REQUIRE(lines.size() == 1 + 3 * 2);  // header + 3 records x 2 blocks
   CHECK(lines[0] ==
         "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega,"
-        "kinetic,potential,strain_energy");
+        "kinetic,potential,strain_energy,contact_energy,load_work,friction_dissipation,"
+        "plastic_dissipation,damping_dissipation,energy_remainder");
 
   // Exact comparison, no tolerance: 17 significant digits identify a double uniquely, so
   // writing with %.17g and reading with strtod must give back the very same double.

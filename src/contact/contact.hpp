@@ -42,6 +42,7 @@ struct Contact {
   double new_gap = 0.0;       // normal gap after the step's increments (m)
   double normal_force = 0.0;  // compression positive (N per metre)
   double shear_force = 0.0;   // along `tangent`, on the vertex (N per metre)
+  double slip = 0.0;          // the step's tangential displacement of the vertex against the edge (m)
   int mode_changes = 0;       // within this attempt's open-close loop
 
   Vec2 edge_point(double s) const { return edge_start + s * (edge_end - edge_start); }

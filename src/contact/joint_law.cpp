@@ -55,4 +55,11 @@ ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
   return unbonded(c, trial, law);
 }
 
+bool change_allowed(const Contact& c, const ContactDecision& next, int free_changes) {
+  if (c.mode_changes < free_changes) return true;
+  if (next.bonded != c.bonded) return true;  // a bond breaks for good
+  // ContactMode is ordered Open < Slide < Lock.
+  return static_cast<int>(next.mode) > static_cast<int>(c.mode);
+}
+
 }  // namespace dda

@@ -26,7 +26,8 @@ using json = nlohmann::ordered_json;
 
 constexpr const char* kHistoryHeader =
     "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega,"
-    "kinetic,potential,strain_energy";
+    "kinetic,potential,strain_energy,contact_energy,load_work,friction_dissipation,"
+    "plastic_dissipation,damping_dissipation,energy_remainder";
 
 std::string num(double x) { return format_full_precision(x); }
 
@@ -255,7 +256,10 @@ void OutputWriter::record(const World& world) {
                              b.strain[2],            b.stress[0],            b.stress[1],
                              b.stress[2],            b.velocity[kU0],        b.velocity[kV0],
                              b.velocity[kR0],        energy.kinetic,         energy.potential,
-                             energy.strain_energy};
+                             energy.strain_energy,   energy.contact_energy,
+                             world.energy.load_work, world.energy.friction_dissipation,
+                             world.energy.plastic_dissipation, world.energy.damping_dissipation,
+                             world.energy.remainder};
     history_ << world.step << ',' << num(world.time) << ',' << i;
     for (double v : values) history_ << ',' << num(v);
     history_ << '\n';
@@ -271,6 +275,29 @@ void OutputWriter::record(const World& world) {
   if (frames_.empty() || frames_.back().second != name) frames_.emplace_back(world.time, name);
   write_atomically(dir_ / "blocks.pvd", pvd_text(frames_));
 }
+
+namespace {
+// The energy account at the end (docs/output-format.md, docs/energy-balance.md).
+json energy_json(const World& world) {
+  const EnergyTotals e = scene_energy(world);
+  const EnergyLedger& led = world.energy;
+  return {{"scale", led.scale},
+          {"initial_total", led.initial_total},
+          {"kinetic", e.kinetic},
+          {"potential", e.potential},
+          {"strain_energy", e.strain_energy},
+          {"contact_energy", e.contact_energy},
+          {"load_work", led.load_work},
+          {"friction_dissipation", led.friction_dissipation},
+          {"plastic_dissipation", led.plastic_dissipation},
+          {"damping_dissipation", led.damping_dissipation},
+          {"friction_gain", led.friction_gain},
+          {"remainder", led.remainder},
+          {"remainder_max", led.remainder_max},
+          {"remainder_max_step", led.remainder_max_step},
+          {"remainder_max_share", led.scale > 0.0 ? led.remainder_max / led.scale : 0.0}};
+}
+}  // namespace
 
 void OutputWriter::finish(const World& world, const RunStats& stats) {
   write_atomically(dir_ / "blocks.pvd", pvd_text(frames_));
@@ -295,6 +322,7 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
                     {"mean", per_step(stats.contacts_total, stats.contacts_max, stats.steps)["mean"]},
                     {"max", stats.contacts_max}}},
       {"penalty_raises", stats.penalty_raises},
+      {"energy", energy_json(world)},
       {"end_time", world.time},
       {"diverged", stats.diverged},
       {"message", stats.message},

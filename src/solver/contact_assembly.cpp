@@ -10,8 +10,6 @@
 namespace dda {
 namespace {
 
-// Shi's shear spring is the normal penalty divided by 2.5 (verification catalogue).
-constexpr double kShearSpringRatio = 1.0 / 2.5;
 // Slips below this share of the allowed penetration count as no slip (round-off), and a
 // closed contact opens only beyond kOpenToleranceShare of it (see
 // ContactTrial::open_tolerance). (1e-4 for the slip was tried: a settling 100-brick wall
@@ -19,12 +17,11 @@ constexpr double kShearSpringRatio = 1.0 / 2.5;
 // instead of 10.4, so the round-off scale stays.)
 constexpr double kSlipToleranceShare = 1e-6;
 constexpr double kOpenToleranceShare = 1e-6;
-// A contact that has changed mode this many times in one open-close loop is held in its
-// present mode for the rest of the loop: such a contact chatters between states that differ
-// by nanometres (a brick's side against its neighbour), and letting it go on would cut the
-// step for nothing. What it gets wrong is bounded by the chatter's own size; the next step
-// looks at it afresh.
-constexpr int kMaxModeChanges = 2;
+// A contact that has changed mode this many times in one open-close loop may from then on
+// only tighten (open -> sliding -> locked; docs/contacts.md, "Chatter"): such a contact
+// chatters between states that differ by nanometres (a brick's side against its
+// neighbour), and the loop would otherwise be cut for nothing.
+constexpr int kFreeModeChanges = 2;
 
 // How a contact sees the unknowns: a scalar measure g = g0 + a.d_v + b.d_e, with d_v the
 // vertex block's increments and d_e the edge block's.
@@ -183,8 +180,7 @@ int update_contact_modes(const World& world, std::vector<Contact>& contacts,
     }
     const ContactDecision next = decide_contact_mode(c, trial, world.joint_laws[c.joint]);
     const bool changes = next.mode != c.mode || next.slide_sign != c.slide_sign || next.bonded != c.bonded;
-    if (std::getenv("DDA_DEBUG") && (changes || c.mode != ContactMode::Open)) fprintf(stderr, "step %d key %d/%d-%d/%d mode %d -> %d s%d (changes %d) gap %.3e N %.3e S %.3e slip %.3e t %.3f\n", world.step, c.key.vertex_block, c.key.vertex, c.key.edge_block, c.key.edge, (int)c.mode, (int)next.mode, next.slide_sign, c.mode_changes, trial.new_gap, trial.normal_force, trial.shear_force, trial.slip, c.t);
-    if (changes && c.mode_changes < kMaxModeChanges) {
+    if (changes && change_allowed(c, next, kFreeModeChanges)) {
       ++changed;
       ++c.mode_changes;
       c.mode = next.mode;
@@ -193,6 +189,7 @@ int update_contact_modes(const World& world, std::vector<Contact>& contacts,
       if (next.relock) c.t_lock = c.t;
     }
     c.new_gap = trial.new_gap;
+    c.slip = trial.slip;
     c.normal_force = c.mode == ContactMode::Open ? 0.0 : trial.normal_force;
     // (A held contact keeps its mode, but its forces follow the latest solve.)
     c.shear_force = c.mode == ContactMode::Open ? 0.0 : trial.shear_force;

@@ -13,6 +13,9 @@
 
 namespace dda {
 
+// Shi's shear spring is the normal penalty divided by 2.5 (Shi 1988; docs/contacts.md).
+inline constexpr double kShearSpringRatio = 1.0 / 2.5;
+
 // Normal spring (stiffness p) on closed contacts, shear spring (p / 2.5, Shi's usual ratio)
 // on locked ones, Coulomb friction tan(phi) N against the slip on sliding ones.
 void add_contact_terms(const World& world, std::vector<Contact>& contacts,

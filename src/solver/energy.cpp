@@ -1,6 +1,57 @@
 #include "solver/energy.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "kinematics/block_matrices.hpp"
+#include "kinematics/frames.hpp"
+#include "solver/contact_assembly.hpp"
+
 namespace dda {
+namespace {
+
+// The initial stress of a block in the global frame now (the local-frame treatments hold it
+// in the block frame, where it turns with the block).
+Vec3 initial_stress_now(const World& world, const Block& b) {
+  return keeps_block_frame(world.control.rotation_update)
+             ? stress_from_turned_frame(b.initial_stress, b.rotation)
+             : b.initial_stress;
+}
+
+// Complementary energy density s : C^-1 : s / 2 of an isotropic elastic solid, for a stress
+// (xx, yy, zz, xy) (Pa -> J/m^3).
+double complementary_density(const Vec4& s, double young, double poisson) {
+  const double normal = s[0] * s[0] + s[1] * s[1] + s[2] * s[2] -
+                        2.0 * poisson * (s[0] * s[1] + s[1] * s[2] + s[2] * s[0]);
+  return (normal + 2.0 * (1.0 + poisson) * s[3] * s[3]) / (2.0 * young);
+}
+
+}  // namespace
+
+double block_strain_energy(const World& world, const Block& b) {
+  if (!b.plastic) return 0.5 * b.moments.area * b.strain.dot(b.elastic * b.strain);
+  const Vec3 s0 = initial_stress_now(world, b);
+  const Vec4 ds(b.stress[0] - s0[0], b.stress[1] - s0[1], b.szz - b.initial_stress_4[2],
+                b.stress[2] - s0[2]);
+  return b.moments.area *
+         complementary_density(ds, b.material_parameters.young, b.material_parameters.poisson);
+}
+
+double contact_energy(const World& world, const std::vector<Contact>& contacts, double penalty) {
+  const double ks = kShearSpringRatio * penalty;
+  double e = 0.0;
+  for (const Contact& c : contacts) {
+    // An open contact that ends penetrating holds that energy too: the next step's spring
+    // gives it back although no work put it there (the account then shows it).
+    if (c.mode != ContactMode::Open || c.new_gap < 0.0) e += 0.5 * penalty * c.new_gap * c.new_gap;
+    if (c.mode == ContactMode::Lock) e += c.shear_force * c.shear_force / (2.0 * ks);
+  }
+  for (const Pin& pin : world.pins) {
+    if (world.blocks[static_cast<std::size_t>(pin.block)].fixed) continue;
+    e += 0.5 * penalty * (pin.anchor - pin.current).squaredNorm();
+  }
+  return e;
+}
 
 EnergyTotals scene_energy(const World& world) {
   EnergyTotals e;
@@ -9,9 +60,115 @@ EnergyTotals scene_energy(const World& world) {
     const double mass = b.density * b.moments.area;
     e.kinetic += kinetic_energy(b);
     e.potential -= mass * world.gravity.dot(b.moments.centroid);
-    e.strain_energy += 0.5 * b.moments.area * b.strain.dot(b.elastic * b.strain);
+    e.strain_energy += block_strain_energy(world, b);
   }
+  e.contact_energy = world.energy.contact_energy;
   return e;
+}
+
+StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
+                       const Eigen::VectorXd& d, const StepContext& ctx) {
+  StepEnergy s;
+  s.plastic_elastic_before.assign(world.blocks.size(), 0.0);
+  const double kn = ctx.penalty;
+  const double ks = kShearSpringRatio * ctx.penalty;
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
+    if (b.fixed) continue;
+    const Vec6 db = d.segment<6>(b.first_dof);
+    const Vec3 de = db.segment<3>(kEx);
+    const double area = b.moments.area;
+    // Shi's step takes the stiffness at the end of the step (backward Euler on the strain):
+    // the work of s_end on de falls short of the stored energy's rise by A/2 de^T D de.
+    if (b.plastic) {
+      s.plastic_elastic_before[i] = block_strain_energy(world, b);
+    } else {
+      s.damping_dissipation += 0.5 * area * de.dot(b.elastic * de);
+    }
+    s.load_work -= area * initial_stress_now(world, b).dot(de);
+    // The dynamic coefficient k carries k v0 into the step: (1 - k^2) of the kinetic energy
+    // is removed before the step starts.
+    const double k = ctx.dynamic_coefficient;
+    s.damping_dissipation += (1.0 - k * k) * kinetic_energy(b);
+  }
+  for (const Pin& pin : world.pins) {
+    const Block& b = world.blocks[static_cast<std::size_t>(pin.block)];
+    if (b.fixed) continue;
+    const Mat26 tp = step_t(ctx, pin.block).at(pin.current - b.moments.centroid);
+    s.damping_dissipation += 0.5 * ctx.penalty * (tp * d.segment<6>(b.first_dof)).squaredNorm();
+  }
+  for (const PointLoad& load : world.loads) {
+    const Block& b = world.blocks[static_cast<std::size_t>(load.block)];
+    if (b.fixed) continue;
+    const Mat26 tp = step_t(ctx, load.block).at(load.current - b.moments.centroid);
+    s.load_work += load.force.dot(tp * d.segment<6>(b.first_dof));
+  }
+  for (const Contact& c : contacts) {
+    if (c.mode == ContactMode::Open) continue;
+    // The normal spring's force is taken at the step's end, -k g_end, over the whole step:
+    // its work -k g_end (g_end - g_start) falls short of the rise of the stored energy
+    // (k/2 g^2 while penetrating) by what the scheme removes: k/2 (g_end - g_start)^2 for
+    // a contact closed throughout, k/2 g_end^2 + k |g_end| g_start for one that closed
+    // during the step from a gap g_start > 0 (the impact's loss).
+    const double g0 = c.gap, g1 = c.new_gap;
+    const double stored_start = 0.5 * kn * std::min(g0, 0.0) * std::min(g0, 0.0);
+    s.damping_dissipation += kn * g1 * (g1 - g0) - (0.5 * kn * g1 * g1 - stored_start);
+    if (c.mode == ContactMode::Lock) {
+      const double s_start = c.tangent.dot(c.vertex - c.edge_point(c.t_lock));
+      const double s_end = -c.shear_force / ks;
+      s.damping_dissipation += 0.5 * ks * (s_end - s_start) * (s_end - s_start);
+    } else {
+      const double work = c.shear_force * c.slip;
+      s.friction_dissipation += std::max(0.0, -work);
+      s.friction_gain += std::max(0.0, work);
+    }
+  }
+  return s;
+}
+
+void commit_step_energy(World& world, const StepEnergy& step, const std::vector<Contact>& contacts,
+                        const Eigen::VectorXd& d, double penalty) {
+  EnergyLedger& led = world.energy;
+  led.load_work += step.load_work;
+  led.friction_dissipation += step.friction_dissipation;
+  led.damping_dissipation += step.damping_dissipation;
+  led.friction_gain += step.friction_gain;
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
+    if (!b.plastic || b.fixed) continue;
+    // The stress the converged step applied is the end stress: its work on the strain
+    // increment, less the initial stress's share (in load_work) and the rise of elastic
+    // energy, is what plastic flow took (with the small backward-Euler share).
+    const Vec3 de = d.segment<3>(b.first_dof + kEx);
+    const Vec3 s0 = initial_stress_now(world, b);
+    led.plastic_dissipation += b.moments.area * (b.stress - s0).dot(de) -
+                               (block_strain_energy(world, b) - step.plastic_elastic_before[i]);
+  }
+  led.contact_energy = contact_energy(world, contacts, penalty);
+  const double now = scene_energy(world).total();
+  led.remainder = now - led.initial_total - led.load_work + led.friction_dissipation +
+                  led.plastic_dissipation + led.damping_dissipation;
+  const EnergyTotals totals = scene_energy(world);
+  led.scale = std::max({led.scale, totals.kinetic, std::abs(led.load_work)});
+  if (led.remainder > led.remainder_max) {
+    led.remainder_max = led.remainder;
+    led.remainder_max_step = world.step;
+  }
+}
+
+void start_energy_account(World& world) {
+  world.energy = EnergyLedger{};
+  world.energy.contact_energy = contact_energy(world, {}, world.penalty);
+  const EnergyTotals e = scene_energy(world);
+  world.energy.initial_total = e.total();
+  double reach = 0.0;  // work of gravity and loads over w0
+  for (const Block& b : world.blocks) {
+    if (!b.fixed) reach += b.density * b.moments.area * world.gravity.norm() * world.w0;
+  }
+  for (const PointLoad& load : world.loads) {
+    if (!world.blocks[static_cast<std::size_t>(load.block)].fixed) reach += load.force.norm() * world.w0;
+  }
+  world.energy.scale = std::max(e.kinetic + e.strain_energy + e.contact_energy, reach);
 }
 
 }  // namespace dda

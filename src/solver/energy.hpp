@@ -1,16 +1,60 @@
-// Scene energy totals (J per metre of thickness), for the history and for conservation tests.
+// The energy account of a run (J per metre of thickness): what the scene holds, what loads
+// did to it and what the step removed, step by step; the unexplained remainder measures
+// energy the method created or lost without a cause (docs/energy-balance.md).
 #pragma once
 
+#include <Eigen/Dense>
+#include <vector>
+
+#include "contact/contact.hpp"
+#include "solver/step_context.hpp"
 #include "solver/world.hpp"
 
 namespace dda {
 
+// What the scene holds at one instant.
 struct EnergyTotals {
-  double kinetic = 0.0;        // sum of 1/2 v^T M v over free blocks
-  double potential = 0.0;      // sum of -m g . xc (zero at the origin)
-  double strain_energy = 0.0;  // sum of area/2 e^T D e (elastic strain since the start)
+  double kinetic = 0.0;         // sum of 1/2 v^T M v over free blocks
+  double potential = 0.0;       // sum of -m g . xc (zero at the origin)
+  double strain_energy = 0.0;   // elastic strain energy (plastic strain excluded)
+  double contact_energy = 0.0;  // contact normal and shear springs, pins
+  double total() const { return kinetic + potential + strain_energy + contact_energy; }
 };
 
+// The terms one accepted step adds to the account (computed with the step's own T and
+// the contacts as the open-close loop left them, before the configuration update).
+struct StepEnergy {
+  double load_work = 0.0;             // point loads and initial stresses on the increments
+  double friction_dissipation = 0.0;  // sum over sliding contacts of max(0, -F . slip)
+  double damping_dissipation = 0.0;   // implicit springs and strains, dynamic coefficient
+  double friction_gain = 0.0;         // sum of max(0, F . slip): friction pushing forward
+  // Plastic blocks: elastic energy before the step and A s0 . de (for the plastic work).
+  std::vector<double> plastic_elastic_before;
+};
+
+// Elastic strain energy of one block (J/m): A/2 e^T D e for elastic blocks; for plastic
+// ones A/2 (s - s0) : C^-1 : (s - s0) over (xx, yy, zz, xy), which excludes plastic strain.
+double block_strain_energy(const World& world, const Block& b);
+
+// Energy stored in the contacts' springs after an open-close loop (closed contacts'
+// normal springs, penetrating open ones, locked shear springs) and in the pins.
+double contact_energy(const World& world, const std::vector<Contact>& contacts,
+                      double penalty);
+
+// The scene's energies; the contact term is world.energy.contact_energy, which the step
+// records after every accepted solve.
 EnergyTotals scene_energy(const World& world);
+
+// The terms of an accepted step (before update_configuration).
+StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
+                       const Eigen::VectorXd& d, const StepContext& ctx);
+
+// After the update: adds the step's terms and the plastic work to world.energy and
+// recomputes the remainder against the start.
+void commit_step_energy(World& world, const StepEnergy& step, const std::vector<Contact>& contacts,
+                        const Eigen::VectorXd& d, double penalty);
+
+// Starts the account on the world's present state (before the first step).
+void start_energy_account(World& world);
 
 }  // namespace dda

@@ -9,6 +9,7 @@
 #include "solver/configuration_update.hpp"
 #include "solver/contact_assembly.hpp"
 #include "solver/contact_detection.hpp"
+#include "solver/energy.hpp"
 #include "solver/material_coupling.hpp"
 
 namespace dda {
@@ -276,6 +277,8 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       continue;
     }
 
+    // The energy account's terms of this step, on the step's own T and contacts.
+    const StepEnergy energy_terms = step_energy(world, ws.contacts, d, ctx);
     // 5. Configuration update by the chosen rotation treatment.
     update_configuration(world, d);
     // 6. Strains, stresses and velocities.
@@ -284,6 +287,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     clock.lap(times.update);
     world.time += ctx.dt;
     ++world.step;
+    commit_step_energy(world, energy_terms, ws.contacts, d, ctx.penalty);
     count_step(ws, open_close, stats);
     return {};
   }

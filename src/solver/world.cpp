@@ -6,6 +6,7 @@
 
 #include "kinematics/block_matrices.hpp"
 #include "materials/elastic.hpp"
+#include "solver/energy.hpp"
 
 namespace dda {
 namespace {
@@ -85,6 +86,7 @@ World make_world(const Scene& scene) {
   for (const PointLoadSpec& load : scene.point_loads) {
     world.loads.push_back(PointLoad{load.block, load.point, load.point, load.force});
   }
+  start_energy_account(world);
   return world;
 }
 

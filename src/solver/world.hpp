@@ -81,6 +81,25 @@ struct PointLoad {
   Vec2 force = Vec2::Zero();    // N per metre of thickness, constant in the global frame
 };
 
+// The energy account's running sums since the start of the run (J per metre of thickness;
+// solver/energy.hpp, docs/energy-balance.md).
+struct EnergyLedger {
+  double load_work = 0.0;             // work of point loads and initial stresses
+  double friction_dissipation = 0.0;  // by sliding contacts (never negative)
+  double plastic_dissipation = 0.0;   // by plastic blocks' plastic strain
+  double damping_dissipation = 0.0;   // by the implicit time integration and the dynamic coefficient
+  double friction_gain = 0.0;         // friction work that pushed forward (part of the remainder)
+  double contact_energy = 0.0;        // stored in contact and pin springs after the last step
+  double initial_total = 0.0;         // kinetic + potential + strain + contact at the start
+  double remainder = 0.0;             // unexplained: now - start - work + dissipations
+  double remainder_max = 0.0;         // the largest remainder so far (gain)
+  int remainder_max_step = 0;         // the step where it was reached
+  // The scene's own energy scale, against which the remainder is judged: the largest of
+  // the energy it starts with (less potential), the work gravity and the point loads would
+  // do moving every free block by w0, the largest kinetic energy and |load work| so far.
+  double scale = 0.0;
+};
+
 struct World {
   std::vector<Block> blocks;
   std::vector<Pin> pins;
@@ -100,6 +119,7 @@ struct World {
 
   double time = 0.0;  // s
   int step = 0;       // completed steps
+  EnergyLedger energy;
 };
 
 // Key of an unordered block pair in World::pair_joint.
