@@ -346,32 +346,33 @@ TEST_CASE("a vertex of a square tilted 30 degrees on the middle of an edge", "[c
 TEST_CASE("entrance criterion: a vertex near an edge whose wedge does not face it does not enter",
           "[contact-geometry]") {
   SECTION("one of the wedge's edges heads into the other block") {
-    // a = [0,1]^2, top edge 2 ((1,1)->(0,1), n (0,1)). b: unit square turned 10 degrees
-    // clockwise, its corner q = (0.985, 1.004) 4 mm above a's top, 15 mm left of a's corner
-    // (1,1): b = q, q+e1, q+e1+e2, q+e2 with e1 = (cos 10, -sin 10), e2 = (sin 10, cos 10).
-    // b's lower edge leaves q going down-right at 10 degrees: at x = 1 it is at
-    // y = 1.004 - 0.015 tan 10 = 1.00136 > 1, past a's corner, so the blocks do not overlap.
-    //  b.v0 = q on a.e2: gap 0.004 <= 0.01, t = (0.985-1)(-1)/1 = 0.015 in [0,1], but the
-    //  wedge score is min(e1.n, e2.n) = min(-sin 10, cos 10) = -0.174 < -0.0175: rejected.
-    //  a's corner a.v2 (1,1) on b.e0 (q -> q+e1, n = (e1.y, -e1.x) = (-sin 10, -cos 10)):
-    //  r = (0.015, -0.004): gap = -0.015 sin 10 + 0.004 cos 10 = 0.00133 > 0,
-    //  t = 0.015 cos 10 + 0.004 sin 10 = 0.0155; a's wedge: (0,-1).n = cos 10,
-    //  (-1,0).n = sin 10 -> 0.174: enters. That is the real contact.
-    //  q is 0.0155 m from (1,1), farther than the search distance 0.01: no vertex pair.
+    // a = [0,1]^2, top edge 2 ((1,1)->(0,1), n (0,1)). b: unit square turned 20 degrees
+    // clockwise, its corner q = (0.985, 1.008) 8 mm above a's top, 15 mm left of a's corner
+    // (1,1): b = q, q+e1, q+e1+e2, q+e2 with e1 = (cos 20, -sin 20), e2 = (sin 20, cos 20).
+    // b's lower edge leaves q going down-right at 20 degrees: at x = 1 it is at
+    // y = 1.008 - 0.015 tan 20 = 1.00254 > 1, past a's corner, so the blocks do not overlap.
+    //  b.v0 = q on a.e2: gap 0.008 <= 0.01, t = 0.015 in [0,1], but the wedge score is
+    //  min(e1.n, e2.n) = -sin 20 = -0.342, below even the candidate tolerance -0.26 (which
+    //  admits wedges turned away by up to 15 degrees, kCandidateWedgeTolerance): rejected.
+    //  a's corner a.v2 (1,1) on b.e0 (q -> q+e1, n = (e1.y, -e1.x) = (-sin 20, -cos 20)):
+    //  r = (0.015, -0.008): gap = -0.015 sin 20 + 0.008 cos 20 = 0.00239 > 0,
+    //  t = 0.015 cos 20 + 0.008 sin 20 = 0.0168; a's wedge: (0,-1).n = cos 20,
+    //  (-1,0).n = sin 20 -> 0.342: enters. That is the real contact.
+    //  q is 0.017 m from (1,1), farther than the search distance 0.01: no vertex pair.
     //  The other vertices are either more than 0.9 m from the other block's edges or
     //  project outside them.
-    const double c = std::cos(10.0 * M_PI / 180.0), s = std::sin(10.0 * M_PI / 180.0);
-    const Vec2 q(0.985, 1.004), e1(c, -s), e2(s, c);
+    const double c = std::cos(20.0 * M_PI / 180.0), s = std::sin(20.0 * M_PI / 180.0);
+    const Vec2 q(0.985, 1.008), e1(c, -s), e2(s, c);
     const Polygon a = rectangle(0, 0, 1, 1);
     const Polygon b = {q, q + e1, q + e1 + e2, q + e2};
     // The premise: q is within the search distance of a's top edge, over it, and its
-    // wedge is turned away by more than the tolerance.
+    // wedge is turned away by more than the candidate tolerance.
     const EdgeProjection pr = project_on_edge(q, edge_frame(a, 2));
     REQUIRE(pr.gap > 0.0);
     REQUIRE(pr.gap < 0.01);
     REQUIRE(pr.t > 0.0);
     REQUIRE(pr.t < 1.0);
-    REQUIRE(wedge_score(b, 0, Vec2(0, 1)) < -kWedgeTolerance);
+    REQUIRE(wedge_score(b, 0, Vec2(0, 1)) < -kCandidateWedgeTolerance);
     CHECK(contacts(a, b, 0.01) == std::vector<std::string>{"v0.2 on e1.0"});
   }
   SECTION("a vertex behind the edge (on its back side) does not enter it") {

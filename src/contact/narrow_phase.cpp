@@ -38,26 +38,39 @@ void vertex_to_edge(const Polygon& vp, int vblock, const Polygon& ep, int eblock
     if (!is_convex_vertex(vp, v)) continue;
     for (int e = 0; e < ne; ++e) {
       const int e_end = wrap(e + 1, ne);
-      const bool paired = v_is_a ? (in_vertex_pair(pairs, v, e) || in_vertex_pair(pairs, v, e_end))
-                                 : (in_vertex_pair(pairs, e, v) || in_vertex_pair(pairs, e_end, v));
-      if (paired) continue;
+      const bool paired_start = v_is_a ? in_vertex_pair(pairs, v, e) : in_vertex_pair(pairs, e, v);
+      const bool paired_end = v_is_a ? in_vertex_pair(pairs, v, e_end) : in_vertex_pair(pairs, e_end, v);
       const EdgeFrame frame = edge_frame(ep, e);
       const EdgeProjection proj = project_on_edge(vp[v], frame);
+      // A paired vertex is left to the vertex-pair rule only where it projects near the
+      // paired end: two faces that overlap by more than that (blocks face to face, offset
+      // along the face) need both end vertices on the other's edge, and a rocking block
+      // pushed the one the pair rule had dropped 0.5 mm into its neighbour unopposed.
+      const double clearance = kPairClearanceShare * d0;
+      if ((paired_start && proj.t * frame.length < clearance) ||
+          (paired_end && (1.0 - proj.t) * frame.length < clearance)) {
+        continue;
+      }
       // Outside by up to d0, or inside by no more than half the local edge lengths.
       const double reach = std::min({d0, half_shortest_edge_at(vp, v), 0.5 * frame.length});
       if (proj.t < 0.0 || proj.t > 1.0 || proj.gap > d0 || proj.gap < -reach) continue;
-      if (wedge_score(vp, v, frame.normal) < -kWedgeTolerance) continue;
+      if (wedge_score(vp, v, frame.normal) < -kCandidateWedgeTolerance) continue;
       out.push_back({vblock, v, eblock, e, false});
     }
   }
 }
 
-// Of the four edges meeting at a vertex pair, the one the other vertex meets: among the
-// edges whose wedge test passes, the one across which the vertex lies farthest out (the axis
-// of least penetration, as in a separating-axis test). Ties (within round-off) go to the
-// first in a fixed order, so that the choice does not flicker in face-to-face stacks. If no
-// edge passes the wedge test, the squarest one is taken.
-ContactCandidate resolve_vertex_pair(const Polygon& a, int ia, const Polygon& b, int ib,
+// A vertex pair of two convex vertices (Shi 1988, ch. 4, "angle to angle" contacts with both
+// angles below 180 degrees): near a convex corner the free space is the *union* of the outer
+// half-planes of its two edges, so only one of the four edges at the two vertices is a true
+// constraint; entering two of them would hold the vertex out of free space it may occupy (a
+// block would hang on the edge line it has already passed). The one chosen: among the edges
+// whose wedge test passes, the one across which the vertex lies farthest out (the axis of least
+// penetration, as in a separating-axis test; Shi takes the entrance line the vertex crosses
+// first). Ties (within round-off) go to the first in a fixed order, so that the choice does
+// not flicker in face-to-face stacks. If no edge passes the wedge test, the squarest one is
+// taken.
+ContactCandidate resolve_convex_pair(const Polygon& a, int ia, const Polygon& b, int ib,
                                      const VertexPair& pair) {
   const int na = static_cast<int>(a.size());
   const int nb = static_cast<int>(b.size());
@@ -68,9 +81,8 @@ ContactCandidate resolve_vertex_pair(const Polygon& a, int ia, const Polygon& b,
   };
   auto option = [](const Polygon& vp, int vblock, int v, const Polygon& ep, int eblock, int e) {
     const EdgeFrame frame = edge_frame(ep, e);
-    // Reflex vertices cannot enter an edge.
-    const double score = is_convex_vertex(vp, v) ? wedge_score(vp, v, frame.normal) : -INFINITY;
-    return Option{{vblock, v, eblock, e, true}, score, project_on_edge(vp[v], frame).gap};
+    return Option{{vblock, v, eblock, e, true}, wedge_score(vp, v, frame.normal),
+                  project_on_edge(vp[v], frame).gap};
   };
   // Vertex of b on the edges of a at va (before and after it), then vertex of a on b's.
   const std::array<Option, 4> options = {
@@ -89,6 +101,51 @@ ContactCandidate resolve_vertex_pair(const Polygon& a, int ia, const Polygon& b,
     }
   }
   return best->contact;
+}
+
+// A convex vertex `v` of `vp` meeting a reflex vertex `r` of `ep` (Shi 1988, ch. 4: when one
+// of the two angles exceeds 180 degrees, the angle-to-angle contact is two vertex-to-edge
+// contacts, the convex vertex on each edge of the concave angle; Shi's program does the same,
+// e.g. df04 in ntdda, the public descendant of his code). Near a reflex corner the free space
+// is the *intersection* of the outer half-planes of its two edges (the block fills 270
+// degrees around it), so both edges are true constraints at once: a vertex in the inner
+// corner of a stepped base must be held by the tread and by the riser. Choosing one of them,
+// as for two convex vertices, lets the vertex through the other: a block resting on the
+// tread with its corner a few millimetres from the riser had that corner put on the riser
+// (the larger gap), lost its support there, tipped into the tread and was thrown out.
+// The two contacts are also what the vertex-to-edge rule gives the same vertex just outside
+// the pairing distance (it then projects onto both edges), so contacts do not jump as the
+// vertex comes within that distance.
+// Each of the two must still pass the wedge test (Shi's entrance criterion; his "angle
+// overlapping check" in df05): a vertex whose wedge would have to pass through its own block
+// to reach an edge (one of its sides heads into the edge's block) cannot enter that edge.
+void reflex_pair_contacts(const Polygon& vp, int vblock, int v, const Polygon& ep, int eblock,
+                          int r, std::vector<ContactCandidate>& out) {
+  const int ne = static_cast<int>(ep.size());
+  for (const int e : {wrap(r - 1, ne), r}) {  // the edge ending at r, then the one leaving it
+    if (wedge_score(vp, v, edge_frame(ep, e).normal) < -kWedgeTolerance) continue;
+    out.push_back({vblock, v, eblock, e, true});
+  }
+}
+
+// The contacts of a vertex pair (Shi 1988, ch. 4, angle-to-angle contacts), by the kinds of
+// the two angles:
+//  - both convex: one contact, on the edge of least penetration (resolve_convex_pair);
+//  - one reflex: the convex vertex on both edges of the reflex one (reflex_pair_contacts);
+//  - both reflex: none. Two reflex angles cannot meet without overlapping (their angles add
+//    up to more than 360 degrees), and a reflex vertex is never the first point of its block
+//    to reach another block, so the neighbouring convex vertices carry such a meeting.
+void vertex_pair_contacts(const Polygon& a, int ia, const Polygon& b, int ib,
+                          const VertexPair& pair, std::vector<ContactCandidate>& out) {
+  const bool a_convex = is_convex_vertex(a, pair.va);
+  const bool b_convex = is_convex_vertex(b, pair.vb);
+  if (a_convex && b_convex) {
+    out.push_back(resolve_convex_pair(a, ia, b, ib, pair));
+  } else if (b_convex) {
+    reflex_pair_contacts(b, ib, pair.vb, a, ia, pair.va, out);
+  } else if (a_convex) {
+    reflex_pair_contacts(a, ia, pair.va, b, ib, pair.vb, out);
+  }
 }
 
 }  // namespace
@@ -128,6 +185,7 @@ bool is_convex_vertex(const Polygon& poly, int vertex) {
 
 void find_contacts(const Polygon& a, int ia, const Polygon& b, int ib, double search_distance,
                    std::vector<ContactCandidate>& out) {
+  const std::size_t start = out.size();  // this pair of polygons' contacts begin here
   std::vector<VertexPair> pairs;
   for (int va = 0; va < static_cast<int>(a.size()); ++va) {
     for (int vb = 0; vb < static_cast<int>(b.size()); ++vb) {
@@ -138,7 +196,23 @@ void find_contacts(const Polygon& a, int ia, const Polygon& b, int ib, double se
   }
   vertex_to_edge(a, ia, b, ib, search_distance, pairs, true, out);
   vertex_to_edge(b, ib, a, ia, search_distance, pairs, false, out);
-  for (const VertexPair& pair : pairs) out.push_back(resolve_vertex_pair(a, ia, b, ib, pair));
+  // A pair's contact may be one the vertex-to-edge rule has already found (its vertex
+  // projects clear of the paired end): keep one of each.
+  const std::size_t first_pair_contact = out.size();
+  for (const VertexPair& pair : pairs) vertex_pair_contacts(a, ia, b, ib, pair, out);
+  std::vector<ContactCandidate> kept(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(first_pair_contact));
+  for (std::size_t i = first_pair_contact; i < out.size(); ++i) {
+    const ContactCandidate& c = out[i];
+    const auto same = std::find_if(kept.begin() + static_cast<std::ptrdiff_t>(start), kept.end(), [&](const ContactCandidate& k) {
+      return k.vertex_block == c.vertex_block && k.vertex == c.vertex && k.edge_block == c.edge_block && k.edge == c.edge;
+    });
+    if (same == kept.end()) {
+      kept.push_back(c);
+    } else {
+      same->vertex_to_vertex = true;  // found by both rules
+    }
+  }
+  out = std::move(kept);
 }
 
 }  // namespace dda

@@ -21,10 +21,18 @@ inline constexpr double kShearSpringRatio = 1.0 / 2.5;
 void add_contact_terms(const World& world, std::vector<Contact>& contacts,
                        const StepContext& ctx, BlockSystem& system);
 
-// From the step's increments d: each contact's new gap, forces and next mode. Returns how
-// many contacts changed mode (0 means the open-close loop has converged).
-int update_contact_modes(const World& world, std::vector<Contact>& contacts,
-                         const Eigen::VectorXd& d, const StepContext& ctx);
+// What one pass of the contact decisions found.
+struct ContactUpdate {
+  int changed = 0;  // contacts that changed mode (0: the open-close loop has converged)
+  // Contacts held closed by the chatter rule although the solve puts them in tension beyond
+  // the held-tension band: a step that ends with any is not accepted (it is cut), since the
+  // held spring pulls its vertex across the gap it started with and so creates energy.
+  int held_in_tension = 0;
+};
+
+// From the step's increments d: each contact's new gap, forces and next mode.
+ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& contacts,
+                                   const Eigen::VectorXd& d, const StepContext& ctx);
 
 // The stiffness a contact adds to K in its present mode, as rank-one terms c c^T with
 // c = sqrt(k) m (normal spring when closed, shear spring when locked); appended to `out`.

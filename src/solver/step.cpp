@@ -194,6 +194,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     Eigen::VectorXd d;
     int open_close = 0;
     int changed = 0;
+    int held_in_tension = 0;
     int secants_moved = 0;
     MaterialFollowUp materials;
     bool factor_stale = false;
@@ -220,7 +221,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       }
       d = *solved;
       const std::vector<SpringState> before = spring_states(ws.contacts);
-      changed = update_contact_modes(world, ws.contacts, d, ctx);
+      const ContactUpdate contact_update = update_contact_modes(world, ws.contacts, d, ctx);
+      changed = contact_update.changed;
+      held_in_tension = contact_update.held_in_tension;
       spring_changes(world, ws.contacts, before, ctx, ws.springs_added, ws.springs_removed);
       if (treatment == RotationUpdate::FiniteRotation) {
         secants_moved = follow_secant_angles(world, d, angles);
@@ -243,7 +246,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       continue;
     }
     if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, d);
-    if (changed > 0 || secants_moved > 0 || materials.unconverged > 0) {
+    if (changed > 0 || held_in_tension > 0 || secants_moved > 0 || materials.unconverged > 0) {
       ++stats.cut_steps;
       ++stats.cuts_for_open_close;
       dt *= kContactCut;
