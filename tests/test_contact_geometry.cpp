@@ -461,9 +461,12 @@ TEST_CASE("a square in the notch of the L-shape: contacts on both walls, the ref
   //  min((-1,0).n, (0,1).n) = 0: enters.
   //  b.v3 (1+dx, 1.5+dy) on the wall a.e3: gap dx, t = 0.5 + dy; wedge min((1,0).n,
   //  (0,-1).n) = 0: enters.
-  //  b.v0 is within 0.01 of a.v3: a vertex pair. a.v3 is reflex (options score -inf); b.v0
-  //  on the floor (gap dy) or on the wall (gap dx), both with wedge score 0: the larger gap
-  //  wins, the floor on a tie (it comes first).
+  //  b.v0 is within 0.01 of a.v3: a vertex pair. a.v3 is reflex, so (Shi's angle-to-angle
+  //  rule for a concave angle) b.v0 goes on both edges of the reflex corner: the floor (gap
+  //  dy) and the wall (gap dx), each with wedge score 0. Near a reflex corner free space is
+  //  the intersection of the two walls' outer sides: both hold the corner in. (Before issue 9
+  //  the pair went to one wall only, the larger gap, and the corner could pass through the
+  //  other.)
   //  a's other corners (2,1), (1,2) project outside b's edges or are 0.5 from them; b.v2 is
   //  0.5 from both walls.
   const Polygon a = test::l_shape();
@@ -472,10 +475,12 @@ TEST_CASE("a square in the notch of the L-shape: contacts on both walls, the ref
     std::vector<std::string> expected;
   };
   const Case cases[] = {
-      // touching both walls exactly: the pair goes to the floor (tie, first option)
-      {0.0, 0.0, {"v1.1 on e0.2", "v1.3 on e0.3", "v1.0 on e0.2 (vv)"}},
-      // 3 mm from the wall, 2 mm above the floor: the pair goes to the wall (gap 3 mm > 2 mm)
-      {0.003, 0.002, {"v1.1 on e0.2", "v1.3 on e0.3", "v1.0 on e0.3 (vv)"}},
+      // touching both walls exactly: the corner on the floor and on the wall
+      {0.0, 0.0, {"v1.1 on e0.2", "v1.3 on e0.3", "v1.0 on e0.2 (vv)", "v1.0 on e0.3 (vv)"}},
+      // 3 mm from the wall, 2 mm above the floor: the same (the corner also projects onto
+      // both walls clear of the paired end, so the vertex-to-edge rule finds them too; one
+      // of each is kept)
+      {0.003, 0.002, {"v1.1 on e0.2", "v1.3 on e0.3", "v1.0 on e0.2 (vv)", "v1.0 on e0.3 (vv)"}},
   };
   for (const Case& c : cases) {
     INFO("b's corner at (1 + " << c.dx << ", 1 + " << c.dy << ")");
@@ -829,4 +834,308 @@ TEST_CASE("joint law: a bonded contact holds below its strength and breaks for g
     CHECK(d.mode == ContactMode::Lock);
     CHECK_FALSE(d.bonded);
   }
+}
+
+// ---------------------------------------------------------------------------------------
+// 6. concave blocks: stepped bases, L-shaped blocks, vertices meeting reflex corners
+//    (issue 9, item 5)
+// ---------------------------------------------------------------------------------------
+//
+// The stepped base used below, counter-clockwise:
+//   v0 (0,0), v1 (4,0), v2 (4,1), v3 (2,1) reflex, v4 (2,2), v5 (0,2);
+//   e0 (0,0)->(4,0) n (0,-1)   bottom
+//   e1 (4,0)->(4,1) n (1,0)    right side
+//   e2 (4,1)->(2,1) n (0,1)    lower tread, length 2
+//   e3 (2,1)->(2,2) n (1,0)    riser, length 1
+//   e4 (2,2)->(0,2) n (0,1)    upper tread, length 2
+//   e5 (0,2)->(0,0) n (-1,0)   left side
+// The search distance is 0.05 m, a scene's d0 = 2.5 x 0.01 x w0 with w0 = 2 m; the pair
+// clearance is then kPairClearanceShare x 0.05 = 2.5 mm.
+
+namespace {
+
+Polygon stepped_base() { return {{0, 0}, {4, 0}, {4, 1}, {2, 1}, {2, 2}, {0, 2}}; }
+
+constexpr double kStepSearch = 0.05;
+
+// A contact as (vertex block, vertex, edge normal, gap), the constraint it imposes, for
+// comparing two descriptions of the same geometry whose edges are numbered differently.
+struct Constraint {
+  int vertex_block;
+  int vertex;
+  Vec2 normal;
+  double gap;
+};
+
+std::vector<Constraint> constraints(const std::vector<Polygon>& polys,
+                                    const std::vector<ContactCandidate>& out) {
+  std::vector<Constraint> list;
+  for (const ContactCandidate& c : out) {
+    const EdgeFrame f = edge_frame(polys[c.edge_block], c.edge);
+    list.push_back({c.vertex_block, c.vertex, f.normal,
+                    project_on_edge(polys[c.vertex_block][c.vertex], f).gap});
+  }
+  return list;
+}
+
+bool same_constraint(const Constraint& x, const Constraint& y) {
+  return x.vertex == y.vertex && (x.normal - y.normal).norm() < 1e-12 &&
+         std::abs(x.gap - y.gap) < 1e-12;
+}
+
+// Whether segments pq and ab cross at a point inside both (touching at an end or running
+// along each other does not count).
+bool segments_cross(const Vec2& p, const Vec2& q, const Vec2& a, const Vec2& b) {
+  auto cross = [](const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const double eps = 1e-12;
+  const double d1 = cross(q - p, a - p), d2 = cross(q - p, b - p);
+  const double d3 = cross(b - a, p - a), d4 = cross(b - a, q - a);
+  return ((d1 > eps && d2 < -eps) || (d1 < -eps && d2 > eps)) &&
+         ((d3 > eps && d4 < -eps) || (d3 < -eps && d4 > eps));
+}
+
+// A contact's vertex reaches its edge along the edge's normal: the segment from the vertex
+// to the nearest point of the edge must not cross any other edge of the edge's block. If it
+// did, the vertex would lie beyond another part of that block (for a penetrating contact:
+// pushed out through a face it never crossed; for an open one: separated from the edge by the
+// block itself).
+bool reaches_edge(const Polygon& vp, int v, const Polygon& ep, int e) {
+  const EdgeFrame f = edge_frame(ep, e);
+  const double t = std::clamp(project_on_edge(vp[v], f).t, 0.0, 1.0);
+  const Vec2 foot = f.start + t * (f.end - f.start);
+  const int n = static_cast<int>(ep.size());
+  for (int k = 0; k < n; ++k) {
+    if (k != e && segments_cross(vp[v], foot, ep[k], ep[(k + 1) % n])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("a square on the lower step of a stepped base: the corner by the riser is held by "
+          "the tread and by the riser",
+          "[contact-geometry][concave]") {
+  // b = the square [2+dx, 2.5+dx] x [1+dy, 1.5+dy]: b.v0 (2+dx, 1+dy) its corner by the
+  // reflex corner a.v3 (2,1); b.v1 (2.5+dx, 1+dy), b.v3 (2+dx, 1.5+dy).
+  //  b.v1 on the tread a.e2: gap dy, t = (4 - 2.5 - dx)/2 = 0.75 - dx/2; wedge min((-1,0).n,
+  //  (0,1).n) = 0: enters.
+  //  b.v3 on the riser a.e3: gap dx (<= 0.05), t = 0.5 + dy; wedge min((1,0).n, (0,-1).n) = 0.
+  //  b.v0 within 0.05 of a.v3: a vertex pair with a reflex vertex, so b.v0 goes on both edges
+  //  of the corner (tread gap dy, riser gap dx; wedge scores 0). Where b.v0 projects farther
+  //  than the 2.5 mm clearance from a.v3 along an edge, the vertex-to-edge rule finds the same
+  //  contact; one of each is kept, marked (vv).
+  //  Nothing else is within reach: b.v2 is 0.5 from every edge; a.v4 (2,2) projects past the
+  //  end of b's left side (t = -1) and is 0.5 above b's top; a.v2 (4,1) is 1.5 away.
+  // Before issue 9 the pair went to one edge only (the larger gap): with dx = 2 mm, dy = 0
+  // the riser, and b.v0 lost its support on the tread.
+  const Polygon a = stepped_base();
+  const std::vector<std::string> corner_held = {"v1.0 on e0.2 (vv)", "v1.0 on e0.3 (vv)",
+                                                "v1.1 on e0.2", "v1.3 on e0.3"};
+  struct Case {
+    double dx, dy;
+    std::vector<std::string> expected;
+  };
+  const Case cases[] = {
+      {0.0, 0.0, corner_held},      // in the inner corner, touching tread and riser
+      {0.002, 0.0, corner_held},    // resting 2 mm from the riser
+      {0.01, 0.0, corner_held},     // 1 cm from the riser (b.v0 also found vertex-to-edge)
+      {0.04, 0.0, corner_held},     // 4 cm: still within the search distance of the riser
+      {0.0, 0.005, corner_held},    // falling into the corner along the riser, 5 mm up
+      // 10 cm from the riser (beyond the search distance): a square resting on a flat tread
+      {0.1, 0.0, {"v1.0 on e0.2", "v1.1 on e0.2"}},
+  };
+  for (const Case& c : cases) {
+    INFO("b's corner at (2 + " << c.dx << ", 1 + " << c.dy << ")");
+    const Polygon b = rectangle(2.0 + c.dx, 1.0 + c.dy, 0.5, 0.5);
+    std::vector<ContactCandidate> out;
+    find_contacts(a, 0, b, 1, kStepSearch, out);
+    CHECK(sorted(contacts(a, b, kStepSearch)) == sorted(c.expected));
+    // The corner's contacts carry the gaps hand-derived above.
+    for (const ContactCandidate& k : out) {
+      if (k.vertex_block != 1 || k.vertex != 0) continue;
+      const double gap = project_on_edge(b[0], edge_frame(a, k.edge)).gap;
+      CHECK_THAT(gap, WithinAbs(k.edge == 2 ? c.dy : c.dx, 1e-12));
+    }
+  }
+}
+
+TEST_CASE("the stepped base as block 1: the same contacts, blocks swapped", "[contact-geometry][concave]") {
+  // The convex vertex now belongs to polygon a (lower index), the reflex one to b: the other
+  // branch of the pair rule. Same geometry as above with dx = 2 mm.
+  const Polygon base = stepped_base();
+  const Polygon sq = rectangle(2.002, 1.0, 0.5, 0.5);
+  CHECK(sorted(contacts(sq, base, kStepSearch)) ==
+        std::vector<std::string>{"v0.0 on e1.2 (vv)", "v0.0 on e1.3 (vv)", "v0.1 on e1.2",
+                                 "v0.3 on e1.3"});
+}
+
+TEST_CASE("squares on the upper step of a stepped base, at its edge and away from it",
+          "[contact-geometry][concave]") {
+  const Polygon a = stepped_base();
+  SECTION("away from the riser: both bottom corners on the upper tread") {
+    // b = [0.5,1] x [2,2.5]: b.v0 (0.5,2) t = 0.75, b.v1 (1,2) t = 0.5 on a.e4, gap 0.
+    CHECK(sorted(contacts(a, rectangle(0.5, 2.0, 0.5, 0.5), kStepSearch)) ==
+          std::vector<std::string>{"v1.0 on e0.4", "v1.1 on e0.4"});
+  }
+  SECTION("flush with the top of the riser: a convex corner meets a convex corner") {
+    // b = [1.5,2] x [2,2.5]; b.v1 (2,2) meets a.v4 (2,2), both convex: one contact, on the
+    // edge of least penetration. Options: b.v1 on the riser a.e3 (b.v1 leaves along (-1,0):
+    // score -1, rejected), b.v1 on the upper tread a.e4 (score 0, gap 0: first admitted),
+    // a.v4 on b's bottom b.e0 (score 0, gap 0: a tie, not taken), a.v4 on b's right side
+    // (a.v4 leaves along (-1,0)... score -1). b.v0 (1.5,2) on a.e4, t = 0.25. The riser and
+    // the lower tread are 1 m below b.v1 (beyond the search distance).
+    CHECK(sorted(contacts(a, rectangle(1.5, 2.0, 0.5, 0.5), kStepSearch)) ==
+          std::vector<std::string>{"v1.0 on e0.4", "v1.1 on e0.4 (vv)"});
+  }
+}
+
+TEST_CASE("a square's corner pushed into the reflex corner: pushed back out across both "
+          "walls, and by nothing else",
+          "[contact-geometry][concave]") {
+  // b = the square moved 1 mm into the corner diagonally: b.v0 (1.999, 0.999) lies behind the
+  // tread and behind the riser, 1 mm each; it projects just past the reflex end of both
+  // (t = 1.0005 on the tread, -0.001 on the riser), so only the pair rule (|b.v0 - a.v3| =
+  // 1.4 mm <= 0.05) gives it contacts: one on each wall, gap -1 mm each. b.v1 (2.499, 0.999)
+  // is 1 mm under the tread (t = 0.7505; reach min(0.05, 0.25, 1) = 0.05 >= 1 mm); b.v3
+  // (1.999, 1.499) 1 mm behind the riser (t = 0.499). No contact with any other edge: the
+  // upper tread a.e4 is 0.501 above b.v3 (deeper than the reach), the reflex vertex a.v3
+  // never enters, and a.v4 (2,2) projects past the end of b's left side.
+  const double eps = 0.001;
+  const Polygon a = stepped_base();
+  const Polygon b = rectangle(2.0 - eps, 1.0 - eps, 0.5, 0.5);
+  std::vector<ContactCandidate> out;
+  find_contacts(a, 0, b, 1, kStepSearch, out);
+  std::vector<std::string> names;
+  for (const ContactCandidate& k : out) names.push_back(describe(k));
+  CHECK(sorted(names) == std::vector<std::string>{"v1.0 on e0.2 (vv)", "v1.0 on e0.3 (vv)",
+                                                  "v1.1 on e0.2", "v1.3 on e0.3"});
+  for (const ContactCandidate& k : out) {
+    INFO(describe(k));
+    const double gap = project_on_edge(b[k.vertex], edge_frame(a, k.edge)).gap;
+    CHECK_THAT(gap, WithinAbs(-eps, 1e-12));  // every contact pushes back by the 1 mm
+    CHECK(reaches_edge(b, k.vertex, a, k.edge));
+  }
+}
+
+TEST_CASE("the concave stepped base gives the constraints of the same base cut into two "
+          "convex pieces",
+          "[contact-geometry][concave]") {
+  // Independent reference: the step cut along y = 1 into lower = [0,4] x [0,1] and upper =
+  // [0,2] x [1,2], both convex, whose contacts use only the convex rules. A square with its
+  // corner near the reflex corner, offset (dx, dy) (penetrating by up to 1 mm, or open by up
+  // to 3 cm), must meet the same constraints in both descriptions: each of its vertices the
+  // same (edge normal, gap) pairs. With the cut base, b.v0 gets the lower piece's top by the
+  // vertex-to-edge rule and the riser by the pair rule at the upper piece's convex corner
+  // (2,1) (b.v0 on the riser, gap dx, ties with the corner on b's left side and comes first).
+  const Polygon base = stepped_base();
+  const Polygon lower = rectangle(0, 0, 4, 1);
+  const Polygon upper = rectangle(0, 1, 2, 1);
+  const double offsets[] = {-0.001, 0.0, 0.001, 0.002, 0.01, 0.03};
+  for (double dx : offsets) {
+    for (double dy : offsets) {
+      INFO("b's corner at (2 + " << dx << ", 1 + " << dy << ")");
+      const Polygon b = rectangle(2.0 + dx, 1.0 + dy, 0.5, 0.5);
+      std::vector<ContactCandidate> concave;
+      find_contacts(base, 0, b, 1, kStepSearch, concave);
+      // The cut base: lower is block 0, upper block 1, the square block 2 (the two fixed
+      // pieces are not a pair: fixed blocks never meet).
+      std::vector<ContactCandidate> cut;
+      find_contacts(lower, 0, b, 2, kStepSearch, cut);
+      find_contacts(upper, 1, b, 2, kStepSearch, cut);
+      std::vector<Constraint> want = constraints({lower, upper, b}, cut);
+      std::vector<Constraint> got = constraints({base, b}, concave);
+      // Only the square's vertices enter in either description (no corner of the base is
+      // near one of its edges), so the lists compare vertex by vertex.
+      for (const Constraint& c : want) CHECK(c.vertex_block == 2);
+      for (const Constraint& c : got) CHECK(c.vertex_block == 1);
+      CHECK(got.size() == want.size());
+      for (const Constraint& w : want) {
+        INFO("cut base: b.v" << w.vertex << " n (" << w.normal.transpose() << ") gap " << w.gap);
+        CHECK(std::any_of(got.begin(), got.end(),
+                          [&](const Constraint& g) { return same_constraint(g, w); }));
+      }
+    }
+  }
+}
+
+TEST_CASE("wedges meeting a reflex corner: the corner vertex is held by both walls, every "
+          "contact reaches its edge, the reflex vertex never enters",
+          "[contact-geometry][concave]") {
+  // A triangle with a 60-degree corner c near the reflex corner (2,1), its sides leaving c at
+  // 15 + th and 75 + th degrees (th from -10 to 10: the wedge fits in the 90-degree notch,
+  // facing both walls), 0.4 m long; c offset from (2,1) by up to 1 mm into the base or 2 cm
+  // out of it. Properties checked for every contact found:
+  //  - the base's reflex vertex a.v3 never enters;
+  //  - the segment from the vertex to the nearest point of its edge crosses no other edge of
+  //    the edge's block (a vertex never meets an edge it cannot reach along the edge's normal
+  //    through the block's interior, or, outside it, through free space);
+  //  - and when c is within the search distance of the corner, c is held by the tread and by
+  //    the riser (both its sides leave on the outer side of both walls: wedge scores
+  //    sin(15 + th) and cos(75 + th) > 0).
+  const Polygon a = stepped_base();
+  const double offsets[] = {-0.001, 0.0, 0.0005, 0.002, 0.01, 0.02};
+  int corner_checks = 0;
+  for (int th_deg = -10; th_deg <= 10; th_deg += 5) {
+    for (double dx : offsets) {
+      for (double dy : offsets) {
+        INFO("th " << th_deg << " deg, c = (2 + " << dx << ", 1 + " << dy << ")");
+        const double p1 = (15.0 + th_deg) * M_PI / 180.0;
+        const double p2 = (75.0 + th_deg) * M_PI / 180.0;
+        const Vec2 c(2.0 + dx, 1.0 + dy);
+        const Polygon b = {c, c + 0.4 * Vec2(std::cos(p1), std::sin(p1)),
+                           c + 0.4 * Vec2(std::cos(p2), std::sin(p2))};
+        std::vector<ContactCandidate> out;
+        find_contacts(a, 0, b, 1, kStepSearch, out);
+        bool on_tread = false, on_riser = false;
+        for (const ContactCandidate& k : out) {
+          INFO(describe(k));
+          CHECK_FALSE((k.vertex_block == 0 && k.vertex == 3));
+          const Polygon& vp = k.vertex_block == 0 ? a : b;
+          const Polygon& ep = k.edge_block == 0 ? a : b;
+          CHECK(reaches_edge(vp, k.vertex, ep, k.edge));
+          if (k.vertex_block == 1 && k.vertex == 0 && k.edge == 2) on_tread = true;
+          if (k.vertex_block == 1 && k.vertex == 0 && k.edge == 3) on_riser = true;
+        }
+        if ((c - a[3]).norm() <= kStepSearch) {
+          ++corner_checks;
+          CHECK(on_tread);
+          CHECK(on_riser);
+        }
+      }
+    }
+  }
+  CHECK(corner_checks > 100);  // the premise holds for most of the sweep (5 x 36 cases)
+}
+
+TEST_CASE("an L-shaped block resting on a convex floor: its two bottom corners, never its "
+          "reflex vertex",
+          "[contact-geometry][concave]") {
+  // Floor a = [-1,4] x [-1,0], top a.e2 (4,0)->(-1,0), n (0,1), length 5. b = the L
+  // (v0 (0,0), v1 (2,0), v2 (2,1), v3 (1,1) reflex, v4 (1,2), v5 (0,2)) standing on it.
+  //  b.v0 on a.e2: gap 0, t = 4/5; wedge min((1,0).n, (0,1).n) = 0. b.v1: t = 2/5, wedge 0.
+  //  The floor's corners (-1,0), (4,0) are 1 m and 2 m from the L; the L's other vertices
+  //  are at least 1 m above the floor.
+  const Polygon floor = rectangle(-1, -1, 5, 1);
+  CHECK(sorted(contacts(floor, test::l_shape(), kStepSearch)) ==
+        std::vector<std::string>{"v1.0 on e0.2", "v1.1 on e0.2"});
+  // Standing on its other side (the L turned by 180 degrees about (1,1), a Gamma: v0 (2,2),
+  // v1 (0,2), v2 (0,1), v3 (1,1) reflex, v4 (1,0), v5 (2,0)): it rests on its leg, b.v4
+  // (1,0) at t = 3/5 and b.v5 (2,0) at t = 2/5; the overhanging arm is 1 m above the floor.
+  const Polygon gamma = {{2, 2}, {0, 2}, {0, 1}, {1, 1}, {1, 0}, {2, 0}};
+  CHECK(sorted(contacts(floor, gamma, kStepSearch)) ==
+        std::vector<std::string>{"v1.4 on e0.2", "v1.5 on e0.2"});
+}
+
+TEST_CASE("a square in the notch of an L turned by 90 degrees: held by both walls",
+          "[contact-geometry][concave]") {
+  // The L turned by 90 degrees counter-clockwise about the origin ((x,y) -> (-y,x)):
+  // v0 (0,0), v1 (0,2), v2 (-1,2), v3 (-1,1) reflex, v4 (-2,1), v5 (-2,0). Its notch
+  // (x < -1, y > 1) has walls a.e2 (-1,2)->(-1,1), n (-1,0), and a.e3 (-1,1)->(-2,1), n (0,1).
+  // b = [-1.5,-1] x [1,1.5]: its corner b.v1 (-1,1) sits in the notch's corner (a pair with
+  // the reflex a.v3: both walls); b.v0 (-1.5,1) on the floor a.e3 at t = 0.5; b.v2 (-1,1.5)
+  // on the wall a.e2 at t = 0.5. The rule does not depend on which way the notch faces.
+  const Polygon l90 = {{0, 0}, {0, 2}, {-1, 2}, {-1, 1}, {-2, 1}, {-2, 0}};
+  CHECK(sorted(contacts(l90, rectangle(-1.5, 1.0, 0.5, 0.5), kStepSearch)) ==
+        std::vector<std::string>{"v1.0 on e0.3", "v1.1 on e0.2 (vv)", "v1.1 on e0.3 (vv)",
+                                 "v1.2 on e0.2"});
 }

@@ -1,5 +1,6 @@
 // Shi's time step against closed forms: free fall, the false volume expansion of the
 // original update, static relaxation of an initial stress, a pinned block's sag.
+#include <limits>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -67,6 +68,9 @@ TEST_CASE("original update: a spinning block grows by exactly 1 + r^2 per step",
   s.control.rotation_update = RotationUpdate::Original;
   s.blocks.push_back(test::block(test::regular_polygon(8, 0.5)));
   s.blocks[0].velocity = Vec3(0.0, 0.0, 2.0);
+  // This treatment gains energy by design (the finding it tests); the energy guard would
+  // stop the run, so it is switched off here.
+  s.control.energy_tolerance = std::numeric_limits<double>::infinity();
   World world = make_world(s);
   double last_area = world.blocks[0].moments.area;
   double last_rotation = 0.0;

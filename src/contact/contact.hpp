@@ -37,6 +37,12 @@ struct Contact {
   int slide_sign = 0;     // +1 or -1: slip direction along `tangent` while sliding
   double t_lock = 0.0;    // edge parameter of the shear spring's anchor while locked
   bool bonded = false;    // cohesion and tensile strength act while bonded
+  // The slip expected in this step (m, along `tangent`): the last step's. The normal gap and
+  // the friction are measured at the edge point the vertex is expected to reach, not where
+  // it started: a vertex sliding a distance s along an edge that turns by theta sees its gap
+  // change by s theta more than the start point's motion says, and a corner sliding off a
+  // tipping block started every step 24 um deeper than the step had predicted.
+  double predicted_slip = 0.0;
 
   // ---- results of the latest open-close iteration ----
   double new_gap = 0.0;       // normal gap after the step's increments (m)
@@ -46,6 +52,10 @@ struct Contact {
   int mode_changes = 0;       // within this attempt's open-close loop
 
   Vec2 edge_point(double s) const { return edge_start + s * (edge_end - edge_start); }
+  // Where the normal gap and the friction are measured (see predicted_slip).
+  Vec2 measure_point() const {
+    return edge_point(t + predicted_slip / (edge_end - edge_start).norm());
+  }
 };
 
 }  // namespace dda

@@ -65,11 +65,11 @@ void vertex_to_edge(const Polygon& vp, int vblock, const Polygon& ep, int eblock
 // half-planes of its two edges, so only one of the four edges at the two vertices is a true
 // constraint; entering two of them would hold the vertex out of free space it may occupy (a
 // block would hang on the edge line it has already passed). The one chosen: among the edges
-// whose wedge test passes, the one across which the vertex lies farthest out (the axis of least
-// penetration, as in a separating-axis test; Shi takes the entrance line the vertex crosses
-// first). Ties (within round-off) go to the first in a fixed order, so that the choice does
-// not flicker in face-to-face stacks. If no edge passes the wedge test, the squarest one is
-// taken.
+// whose wedge test passes, the one across which the vertex lies farthest out (the axis of
+// least penetration, as in a separating-axis test; Shi picks his entrance line from the
+// angles of the two wedges, df05 in ntdda). Ties (within round-off) go to the first in a
+// fixed order, so that the choice does not flicker in face-to-face stacks. If no edge passes
+// the wedge test, the squarest one is taken.
 ContactCandidate resolve_convex_pair(const Polygon& a, int ia, const Polygon& b, int ib,
                                      const VertexPair& pair) {
   const int na = static_cast<int>(a.size());
@@ -103,27 +103,32 @@ ContactCandidate resolve_convex_pair(const Polygon& a, int ia, const Polygon& b,
   return best->contact;
 }
 
-// A convex vertex `v` of `vp` meeting a reflex vertex `r` of `ep` (Shi 1988, ch. 4: when one
-// of the two angles exceeds 180 degrees, the angle-to-angle contact is two vertex-to-edge
-// contacts, the convex vertex on each edge of the concave angle; Shi's program does the same,
-// e.g. df04 in ntdda, the public descendant of his code). Near a reflex corner the free space
-// is the *intersection* of the outer half-planes of its two edges (the block fills 270
-// degrees around it), so both edges are true constraints at once: a vertex in the inner
-// corner of a stepped base must be held by the tread and by the riser. Choosing one of them,
-// as for two convex vertices, lets the vertex through the other: a block resting on the
-// tread with its corner a few millimetres from the riser had that corner put on the riser
-// (the larger gap), lost its support there, tipped into the tread and was thrown out.
+// A convex vertex `v` of `vp` meeting a reflex vertex `r` of `ep`: two vertex-to-edge
+// contacts, `v` on each edge of the reflex corner. This is Shi's angle-to-angle rule (Shi
+// 1988, ch. 4) as his program applies it: a concave angle gives the other vertex a contact
+// with each of its two edges, a pair of convex angles one contact (df04 in src/contact.c of
+// ntdda, the public descendant of his code). Why: near a reflex corner the block fills 270
+// degrees, and the free space is the *intersection* of the outer half-planes of its two
+// edges, so both edges are true constraints at once (a vertex in the inner corner of a
+// stepped base is held by the tread and by the riser, and neither constraint forbids a place
+// the vertex may legally be). Choosing one of them, as for two convex vertices, lets the
+// vertex through the other: a block resting on the tread with its corner a few millimetres
+// from the riser had that corner put on the riser (the larger gap), lost its support there,
+// tipped into the tread and was thrown out of the corner.
 // The two contacts are also what the vertex-to-edge rule gives the same vertex just outside
 // the pairing distance (it then projects onto both edges), so contacts do not jump as the
-// vertex comes within that distance.
-// Each of the two must still pass the wedge test (Shi's entrance criterion; his "angle
-// overlapping check" in df05): a vertex whose wedge would have to pass through its own block
-// to reach an edge (one of its sides heads into the edge's block) cannot enter that edge.
+// vertex comes within that distance; for the same reason each of the two passes the same
+// entrance test as a vertex-to-edge candidate (Shi's wedge criterion, his "angle overlapping
+// check" in df05, with the candidate tolerance kCandidateWedgeTolerance): a vertex one of
+// whose sides heads into the edge's block cannot enter that edge.
+// Both projections may fall just past the reflex end of their edges (the vertex is then
+// inside the corner, behind both edges); the constraints still hold there, since the block
+// behind each edge's line near r is the block itself.
 void reflex_pair_contacts(const Polygon& vp, int vblock, int v, const Polygon& ep, int eblock,
                           int r, std::vector<ContactCandidate>& out) {
   const int ne = static_cast<int>(ep.size());
   for (const int e : {wrap(r - 1, ne), r}) {  // the edge ending at r, then the one leaving it
-    if (wedge_score(vp, v, edge_frame(ep, e).normal) < -kWedgeTolerance) continue;
+    if (wedge_score(vp, v, edge_frame(ep, e).normal) < -kCandidateWedgeTolerance) continue;
     out.push_back({vblock, v, eblock, e, true});
   }
 }

@@ -41,8 +41,19 @@ std::vector<double> read_time_steps(const Field& f) {
   return steps;
 }
 
-// The run length is given one way only, so that the two can never disagree.
-void read_run_length(const Field& control, ControlSettings& c) {
+// The run length is given one way only, so that the two can never disagree. With stages
+// the run lasts the sum of their durations: "steps" would contradict it, and "end_time" may
+// only repeat it (checked once the stages are read, check_staged_run_length).
+void read_run_length(const Field& control, ControlSettings& c, bool staged) {
+  if (staged) {
+    if (control.has("steps")) {
+      control.member("steps").fail(
+          "not allowed with \"stages\": the run lasts the sum of the stages' durations; remove "
+          "it (\"end_time\" may be given if it equals that sum)");
+    }
+    if (control.has("end_time")) c.end_time = positive_number(control.member("end_time"));
+    return;
+  }
   const bool has_steps = control.has("steps");
   const bool has_end_time = control.has("end_time");
   if (has_steps && has_end_time) {
@@ -77,13 +88,14 @@ std::optional<double> positive_or_auto(const Field& f, std::string_view unit) {
   return positive_number(f);
 }
 
-ControlSettings read_control(const Field& f) {
+// `staged`: the scene has "stages", which set the run length (read_run_length).
+ControlSettings read_control(const Field& f, bool staged) {
   f.expect_keys({"time_step", "steps", "end_time", "max_displacement_ratio",
                  "dynamic_coefficient", "rotation_update", "penalty", "output_every",
-                 "max_open_close", "allowed_penetration"});
+                 "max_open_close", "allowed_penetration", "energy_tolerance"});
   ControlSettings c;
   c.time_steps = read_time_steps(f.member("time_step"));
-  read_run_length(f, c);
+  read_run_length(f, c, staged);
   if (auto g = f.optional_member("max_displacement_ratio")) {
     c.max_displacement_ratio =
         number_in_range(*g, 0.0, true, 1.0, false, "greater than 0 and at most 1");
@@ -102,6 +114,7 @@ ControlSettings read_control(const Field& f) {
   if (auto g = f.optional_member("allowed_penetration")) {
     c.allowed_penetration = positive_or_auto(*g, "m");
   }
+  if (auto g = f.optional_member("energy_tolerance")) c.energy_tolerance = positive_number(*g);
   return c;
 }
 
@@ -241,6 +254,111 @@ std::vector<std::string> unused_joint_material_warnings(const Scene& scene,
                        ": not used by any pair of blocks (name it in \"joints\")");
   }
   return warnings;
+}
+
+// ---- stages ----
+
+// A stage's joint_materials: named joint materials of the scene, each with some of its
+// properties replaced (the others stay the scene's).
+std::vector<StageJoint> read_stage_joints(const Field& f,
+                                          const std::vector<JointMaterial>& joint_materials) {
+  std::vector<StageJoint> overrides;
+  for (const auto& [name, value] : f.members()) {
+    const auto it = std::find_if(joint_materials.begin(), joint_materials.end(),
+                                 [&](const JointMaterial& j) { return j.name == name; });
+    if (it == joint_materials.end()) {
+      std::string known;
+      for (const JointMaterial& j : joint_materials) {
+        known += (known.empty() ? "\"" : ", \"") + j.name + "\"";
+      }
+      value.fail("unknown joint material \"" + name + "\" (joint materials defined: " + known +
+                 "); a stage can only change the properties of the scene's joint materials");
+    }
+    value.expect_keys({"friction_angle", "cohesion", "tensile_strength"});
+    if (value.members().empty()) {
+      value.fail("give at least one of \"friction_angle\", \"cohesion\", \"tensile_strength\" "
+                 "(the properties this stage replaces)");
+    }
+    StageJoint o;
+    o.joint = static_cast<int>(it - joint_materials.begin());
+    o.material = *it;
+    // The same ranges as the scene's joint materials (read_joint_material).
+    if (auto g = value.optional_member("friction_angle")) {
+      o.material.friction_angle =
+          number_in_range(*g, 0.0, false, 90.0, true, "at least 0 and less than 90 (degrees)");
+    }
+    if (auto g = value.optional_member("cohesion")) o.material.cohesion = non_negative_number(*g);
+    if (auto g = value.optional_member("tensile_strength")) {
+      o.material.tensile_strength = non_negative_number(*g);
+    }
+    overrides.push_back(o);
+  }
+  return overrides;
+}
+
+// One stage; what it leaves out is control's (`control`), or the scene's gravity (factor 1).
+StageSpec read_stage(const Field& f, const ControlSettings& control,
+                     const std::vector<JointMaterial>& joint_materials) {
+  f.expect_keys({"duration", "dynamic_coefficient", "gravity_factor", "gravity_ramp",
+                 "time_step", "joint_materials", "bond_closed_contacts"});
+  StageSpec s;
+  s.duration = positive_number(f.member("duration"));
+  s.dynamic_coefficient = control.dynamic_coefficient;
+  if (auto g = f.optional_member("dynamic_coefficient")) {
+    s.dynamic_coefficient = number_in_range(*g, 0.0, false, 1.0, false, "between 0 and 1");
+  }
+  if (f.has("gravity_factor") && f.has("gravity_ramp")) {
+    f.fail("give either \"gravity_factor\" (a constant factor) or \"gravity_ramp\" ([from, to] "
+           "over the stage), not both");
+  }
+  if (auto g = f.optional_member("gravity_factor")) {
+    s.gravity_from = s.gravity_to = non_negative_number(*g);
+  }
+  if (auto g = f.optional_member("gravity_ramp")) {
+    g->vec2("[from, to]");  // the shape first, then each factor at its own place
+    const std::vector<Field> ends = g->elements(2, "");
+    s.gravity_from = non_negative_number(ends[0]);
+    s.gravity_to = non_negative_number(ends[1]);
+    s.gravity_ramp = true;
+  }
+  s.time_steps = control.time_steps;
+  if (auto g = f.optional_member("time_step")) s.time_steps = read_time_steps(*g);
+  if (auto g = f.optional_member("joint_materials")) {
+    s.joint_materials = read_stage_joints(*g, joint_materials);
+  }
+  if (auto g = f.optional_member("bond_closed_contacts")) s.bond_closed_contacts = g->boolean();
+  return s;
+}
+
+// Durations summed as the run sums them (solver/stages.cpp), so that the last stage ends
+// exactly at control.end_time.
+double total_duration(const std::vector<StageSpec>& stages) {
+  double total = 0.0;
+  for (const StageSpec& s : stages) total += s.duration;
+  return total;
+}
+
+// A given control.end_time must be the stages' total, up to 1e-9 of it: decimal durations
+// do not add up exactly (0.1 + 0.2 is 0.30000000000000004), and the step loop takes times
+// within 1e-9 of a step as equal too. The run then ends at the sum itself.
+void check_staged_run_length(const Field& control, const std::vector<StageSpec>& stages,
+                             ControlSettings& c) {
+  const double total = total_duration(stages);
+  if (c.end_time && std::abs(*c.end_time - total) > 1e-9 * total) {
+    control.member("end_time").fail(
+        "is " + format_number(*c.end_time) + " s, but the stages last " + format_number(total) +
+        " s in all (the sum of their durations); leave \"end_time\" out or make the two agree");
+  }
+  c.end_time = total;
+}
+
+std::vector<StageSpec> read_stages(const Field& f, const ControlSettings& control,
+                                   const std::vector<JointMaterial>& joint_materials) {
+  std::vector<StageSpec> stages;
+  for (const Field& stage : f.elements(1, "list at least one stage, or leave \"stages\" out")) {
+    stages.push_back(read_stage(stage, control, joint_materials));
+  }
+  return stages;
 }
 
 // ---- block geometry ----
@@ -393,13 +511,14 @@ PointLoadSpec read_point_load(const Field& f, const std::vector<BlockSpec>& bloc
 
 Scene read_scene(const Field& root, const std::string& source) {
   root.expect_keys({"description", "gravity", "plane", "control", "materials",
-                    "joint_materials", "blocks", "joints", "pins", "point_loads"});
+                    "joint_materials", "blocks", "joints", "pins", "point_loads", "stages"});
   Scene scene;
   scene.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
   if (auto g = root.optional_member("gravity")) scene.gravity = g->vec2("[gx, gy]");
   if (auto g = root.optional_member("plane")) scene.plane = input::read_plane(*g);
-  scene.control = read_control(root.member("control"));
+  const bool staged = root.has("stages");
+  scene.control = read_control(root.member("control"), staged);
   scene.materials = read_materials(root.member("materials"), scene.plane);
   const std::vector<Field> block_fields =
       root.member("blocks").elements(1, "list at least one block");
@@ -416,6 +535,10 @@ Scene read_scene(const Field& root, const std::string& source) {
     for (const Field& p : loads->elements(0, "")) {
       scene.point_loads.push_back(read_point_load(p, scene.blocks));
     }
+  }
+  if (staged) {
+    scene.stages = read_stages(root.member("stages"), scene.control, scene.joint_materials);
+    check_staged_run_length(root.member("control"), scene.stages, scene.control);
   }
   scene.warnings = unused_joint_material_warnings(scene, source);
   return scene;

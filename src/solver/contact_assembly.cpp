@@ -111,7 +111,7 @@ class ContactAssembler {
   std::unordered_map<std::uint64_t, std::size_t> index_;
 };
 
-Vec2 projection_point(const Contact& c) { return c.edge_point(c.t); }
+Vec2 projection_point(const Contact& c) { return c.measure_point(); }
 
 RankOneTerm rank_one(const World& w, const Contact& c, const Measure& m, double k) {
   RankOneTerm term;
@@ -174,6 +174,7 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     trial.slip = evaluate(world, c, relative_along(world, ctx, c, p0, c.tangent), d);
     trial.slip_tolerance = kSlipToleranceShare * world.allowed_penetration;
     trial.open_tolerance = kOpenToleranceShare * world.allowed_penetration;
+    trial.shear_tolerance = ks * trial.slip_tolerance;
     if (c.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.t_lock);
       const double shear = c.tangent.dot(c.vertex - anchor) +
@@ -207,6 +208,9 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     }
     c.new_gap = trial.new_gap;
     c.slip = trial.slip;
+    // A sliding contact's normal spring moves to where the vertex now slides to (see
+    // Contact::predicted_slip); the next iteration measures there.
+    if (c.mode == ContactMode::Slide) c.predicted_slip = trial.slip;
     c.normal_force = c.mode == ContactMode::Open ? 0.0 : trial.normal_force;
     // (A held contact keeps its mode, but its forces follow the latest solve.)
     c.shear_force = c.mode == ContactMode::Open ? 0.0 : trial.shear_force;
@@ -217,7 +221,7 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
 std::vector<SpringState> spring_states(const std::vector<Contact>& contacts) {
   std::vector<SpringState> states;
   states.reserve(contacts.size());
-  for (const Contact& c : contacts) states.push_back({c.mode, c.t_lock});
+  for (const Contact& c : contacts) states.push_back({c.mode, c.t_lock, c.predicted_slip});
   return states;
 }
 
@@ -229,10 +233,14 @@ void spring_changes(const World& world, const std::vector<Contact>& contacts,
   removed.clear();
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& now = contacts[i];
-    if (now.mode == before[i].mode && now.t_lock == before[i].t_lock) continue;
+    if (now.mode == before[i].mode && now.t_lock == before[i].t_lock &&
+        now.predicted_slip == before[i].predicted_slip) {
+      continue;
+    }
     Contact then = now;
     then.mode = before[i].mode;
     then.t_lock = before[i].t_lock;
+    then.predicted_slip = before[i].predicted_slip;
     contact_spring_terms(world, then, ctx, removed);
     contact_spring_terms(world, now, ctx, added);
   }

@@ -43,6 +43,7 @@ void contact_spring_terms(const World& world, const Contact& c, const StepContex
 struct SpringState {
   ContactMode mode = ContactMode::Open;
   double t_lock = 0.0;
+  double predicted_slip = 0.0;  // where a sliding contact's normal spring is measured
 };
 std::vector<SpringState> spring_states(const std::vector<Contact>& contacts);
 

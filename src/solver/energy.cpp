@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "kinematics/block_matrices.hpp"
 #include "kinematics/frames.hpp"
@@ -70,6 +71,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
                        const Eigen::VectorXd& d, const StepContext& ctx) {
   StepEnergy s;
   s.plastic_elastic_before.assign(world.blocks.size(), 0.0);
+  s.plastic_stress_before.assign(world.blocks.size(), Vec4::Zero());
   const double kn = ctx.penalty;
   const double ks = kShearSpringRatio * ctx.penalty;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
@@ -82,6 +84,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     // the work of s_end on de falls short of the stored energy's rise by A/2 de^T D de.
     if (b.plastic) {
       s.plastic_elastic_before[i] = block_strain_energy(world, b);
+      s.plastic_stress_before[i] = Vec4(b.stress[0], b.stress[1], b.szz, b.stress[2]);
     } else {
       s.damping_dissipation += 0.5 * area * de.dot(b.elastic * de);
     }
@@ -103,6 +106,13 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     const Mat26 tp = step_t(ctx, load.block).at(load.current - b.moments.centroid);
     s.load_work += load.force.dot(tp * d.segment<6>(b.first_dof));
   }
+  auto suspect = [&s](const Contact& c, double energy) {
+    if (energy <= 0.0) return;
+    s.suspects.push_back({c.key, energy});
+    std::sort(s.suspects.begin(), s.suspects.end(),
+              [](const auto& a, const auto& b) { return a.energy > b.energy; });
+    if (s.suspects.size() > 3) s.suspects.pop_back();
+  };
   for (const Contact& c : contacts) {
     if (c.mode == ContactMode::Open) continue;
     // The normal spring's force is taken at the step's end, -k g_end, over the whole step:
@@ -113,15 +123,19 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     const double g0 = c.gap, g1 = c.new_gap;
     const double stored_start = 0.5 * kn * std::min(g0, 0.0) * std::min(g0, 0.0);
     s.damping_dissipation += kn * g1 * (g1 - g0) - (0.5 * kn * g1 * g1 - stored_start);
+    double brought = stored_start;
     if (c.mode == ContactMode::Lock) {
       const double s_start = c.tangent.dot(c.vertex - c.edge_point(c.t_lock));
       const double s_end = -c.shear_force / ks;
       s.damping_dissipation += 0.5 * ks * (s_end - s_start) * (s_end - s_start);
+      brought += 0.5 * ks * s_start * s_start;
     } else {
       const double work = c.shear_force * c.slip;
       s.friction_dissipation += std::max(0.0, -work);
       s.friction_gain += std::max(0.0, work);
+      brought += std::max(0.0, work);
     }
+    suspect(c, brought);
   }
   return s;
 }
@@ -138,11 +152,17 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
     if (!b.plastic || b.fixed) continue;
     // The stress the converged step applied is the end stress: its work on the strain
     // increment, less the initial stress's share (in load_work) and the rise of elastic
-    // energy, is what plastic flow took (with the small backward-Euler share).
+    // energy, is what plastic flow took plus the backward-Euler share A/2 ds : C^-1 : ds
+    // (zero plastic work for a step that stays elastic); the latter goes to damping.
     const Vec3 de = d.segment<3>(b.first_dof + kEx);
     const Vec3 s0 = initial_stress_now(world, b);
+    const Vec4 ds = Vec4(b.stress[0], b.stress[1], b.szz, b.stress[2]) - step.plastic_stress_before[i];
+    const double implicit = b.moments.area * complementary_density(ds, b.material_parameters.young,
+                                                                   b.material_parameters.poisson);
+    led.damping_dissipation += implicit;
     led.plastic_dissipation += b.moments.area * (b.stress - s0).dot(de) -
-                               (block_strain_energy(world, b) - step.plastic_elastic_before[i]);
+                               (block_strain_energy(world, b) - step.plastic_elastic_before[i]) -
+                               implicit;
   }
   led.contact_energy = contact_energy(world, contacts, penalty);
   const double now = scene_energy(world).total();
@@ -154,6 +174,24 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
     led.remainder_max = led.remainder;
     led.remainder_max_step = world.step;
   }
+}
+
+std::string energy_guard_message(const World& world, const StepEnergy& step, double tolerance) {
+  const EnergyLedger& led = world.energy;
+  if (!(led.remainder > tolerance * led.scale)) return {};
+  std::ostringstream out;
+  out << "step " << world.step << " (t = " << world.time << " s): the energy account shows "
+      << led.remainder << " J/m gained without a cause, " << 100.0 * led.remainder / led.scale
+      << " % of the scene's energy scale " << led.scale << " J/m (control.energy_tolerance "
+      << tolerance << "); the run created energy, so its results are not physical";
+  if (!step.suspects.empty()) {
+    out << ". Contacts that brought the most energy into this step:";
+    for (const auto& sus : step.suspects) {
+      out << " vertex " << sus.key.vertex << " of block " << sus.key.vertex_block << " on edge "
+          << sus.key.edge << " of block " << sus.key.edge_block << " (" << sus.energy << " J/m);";
+    }
+  }
+  return out.str();
 }
 
 void start_energy_account(World& world) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <string>
 #include <vector>
 
 #include "contact/contact.hpp"
@@ -30,7 +31,20 @@ struct StepEnergy {
   double friction_gain = 0.0;         // sum of max(0, F . slip): friction pushing forward
   // Plastic blocks: elastic energy before the step and A s0 . de (for the plastic work).
   std::vector<double> plastic_elastic_before;
+  std::vector<Vec4> plastic_stress_before;  // (xx, yy, zz, xy), global frame
+  // The contacts that brought the most energy into the step (what their springs held at its
+  // start, plus friction that pushed forward), largest first, at most three: the energy
+  // guard names them.
+  struct Suspect {
+    ContactKey key;
+    double energy = 0.0;  // J/m
+  };
+  std::vector<Suspect> suspects;
 };
+
+// The energy guard: a message naming the step and the suspect contacts when the
+// unexplained gain passes `tolerance` x the scene's energy scale; empty otherwise.
+std::string energy_guard_message(const World& world, const StepEnergy& step, double tolerance);
 
 // Elastic strain energy of one block (J/m): A/2 e^T D e for elastic blocks; for plastic
 // ones A/2 (s - s0) : C^-1 : (s - s0) over (xx, yy, zz, xy), which excludes plastic strain.

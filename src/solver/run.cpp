@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "solver/stages.hpp"
 #include "solver/step.hpp"
 
 namespace dda {
@@ -14,7 +15,13 @@ RunStats run(World& world, const StepObserver& observe) {
   };
   StepWorkspace ws;
   bool keep_going = observe(world, stats);
-  while (keep_going && !is_finished(world)) {
+  while (keep_going) {
+    // Stages (solver/stages.hpp): at the end of one the next takes over, and forms its bonds
+    // on the contacts closed now. Without stages the run ends with control's end.
+    while (enter_next_stage(world, ws.contacts)) {
+    }
+    if (is_finished(world)) break;
+    set_stage_gravity(world);  // a ramp's gravity at this step's end; no stages: unchanged
     const StepOutcome outcome = advance_step(world, ws, stats);
     stats.steps = world.step;
     stats.wall_time_s = elapsed();

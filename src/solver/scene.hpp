@@ -167,6 +167,35 @@ struct ControlSettings {
   // Largest penetration allowed at a contact after a step (m); nullopt means "auto":
   // 4e-4 x w0 (Shi's usual value). A step exceeding it is cut and redone.
   std::optional<double> allowed_penetration;
+  // The energy guard (docs/energy-balance.md): the run stops as diverged (exit 3) when the
+  // unexplained energy gain passes this share of the scene's energy scale. Range > 0; the
+  // default 0.02 is four times the largest gain of the hard cases (verification/hard-cases)
+  // at their coarsest time step and far below the gains of the faults it exists for.
+  double energy_tolerance = 0.02;
+};
+
+// A joint material's properties replaced during one stage (StageSpec::joint_materials).
+struct StageJoint {
+  int joint = 0;           // index into Scene::joint_materials
+  JointMaterial material;  // the scene's entry with the stage's properties put in
+};
+
+// One stage of a staged run (Scene::stages; docs/scene-format.md, "stages"). Its settings
+// hold for `duration` seconds and then the next stage's take over. Settings the stage
+// leaves out are already resolved to control's by the reader.
+struct StageSpec {
+  double duration = 0.0;               // s, > 0
+  double dynamic_coefficient = 1.0;    // [0, 1]
+  // Gravity = scene gravity x a factor, linear in time from `gravity_from` at the stage's
+  // start to `gravity_to` at its end (equal: a constant factor). Each >= 0.
+  double gravity_from = 1.0;
+  double gravity_to = 1.0;
+  bool gravity_ramp = false;           // given as "gravity_ramp" (else "gravity_factor")
+  std::vector<double> time_steps;      // s, each > 0, not empty; used cyclically
+  std::vector<StageJoint> joint_materials;  // properties replaced during this stage only
+  // At the stage's start, every closed contact whose joint (as this stage has it) has
+  // cohesion or tensile strength becomes bonded (contact/bonding.hpp).
+  bool bond_closed_contacts = false;
 };
 
 struct Scene {
@@ -181,6 +210,9 @@ struct Scene {
   std::vector<BlockSpec> blocks;
   std::vector<PinSpec> pins;
   std::vector<PointLoadSpec> point_loads;
+  // Stages run in order (empty: none, the run follows `control` alone). With stages,
+  // control.end_time is the sum of their durations and control.steps is unset.
+  std::vector<StageSpec> stages;
   // Things worth telling the user that do not stop the run (e.g. an unused joint material).
   std::vector<std::string> warnings;
 };

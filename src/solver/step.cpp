@@ -292,6 +292,10 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     ++world.step;
     commit_step_energy(world, energy_terms, ws.contacts, d, ctx.penalty);
     count_step(ws, open_close, stats);
+    // The energy guard: a step that leaves the run with more energy than loads put in
+    // (beyond the tolerance) ends it; the step is kept, so the output shows it.
+    std::string gained = energy_guard_message(world, energy_terms, world.control.energy_tolerance);
+    if (!gained.empty()) return {false, std::move(gained)};
     return {};
   }
 }

@@ -87,6 +87,7 @@ World make_world(const Scene& scene) {
     world.loads.push_back(PointLoad{load.block, load.point, load.point, load.force});
   }
   start_energy_account(world);
+  start_stages(world, scene);  // the first stage's settings, if the scene has stages
   return world;
 }
 

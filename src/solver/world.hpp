@@ -12,6 +12,7 @@
 #include "kinematics/types.hpp"
 #include "materials/material.hpp"
 #include "solver/scene.hpp"
+#include "solver/stages.hpp"
 
 namespace dda {
 
@@ -120,6 +121,9 @@ struct World {
   double time = 0.0;  // s
   int step = 0;       // completed steps
   EnergyLedger energy;
+  // The scene's stages (solver/stages.hpp): the one running and what its settings replaced
+  // in gravity, control and joint_laws above. Empty without stages.
+  StagePlan stages;
 };
 
 // Key of an unordered block pair in World::pair_joint.

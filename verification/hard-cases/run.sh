@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# The hard-case suite of issue 9 in one command: writes the scenes, runs each with
+# `dda run`, timing it, then writes OUT_DIR/report.md and one PNG per case, and prints the
+# report. Exits 1 if any run fails its checks (everything is still written), 2 on bad use.
+#
+#   verification/hard-cases/run.sh OUT_DIR [--smoke]
+#
+# It builds nothing: it runs $DDA_BUILD_DIR/dda (default: build/release of this repository;
+# build it first with `cmake --preset release && cmake --build --preset release`), and
+# Debian's /usr/bin/python3 (numpy, matplotlib; the python3 on PATH may lack them).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+usage() {
+  echo "usage: $0 OUT_DIR [--smoke]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
+  exit 2
+}
+if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then usage; fi
+out="$1"
+shift
+smoke=()
+limit=1800  # s per run: a run that hangs must not hang the suite (reported as exit 124)
+for arg in "$@"; do
+  case "$arg" in
+    --smoke) smoke=(--smoke); limit=120 ;;
+    *) usage ;;
+  esac
+done
+exe="${DDA_BUILD_DIR:-$root/build/release}/dda"
+if [ ! -x "$exe" ]; then
+  echo "$0: $exe not found; build it first (cmake --preset release && cmake --build --preset release)" >&2
+  echo "    or point DDA_BUILD_DIR at a build directory that has it" >&2
+  exit 2
+fi
+py=/usr/bin/python3
+
+# A fresh set each time: runs left over from another set would enter the report.
+mkdir -p "$out"
+rm -rf "$out/scenes" "$out/runs"
+"$py" "$here/make_scenes.py" "$out" "${smoke[@]}"
+mkdir -p "$out/runs"
+status="$out/runs/status.tsv"  # name, exit code, wall time (s): read by report.py
+: >"$status"
+names=$("$py" -c 'import json, sys; print("\n".join(m["name"] for m in json.load(open(sys.argv[1]))))' \
+  "$out/scenes/manifest.json")
+for name in $names; do
+  start=$(date +%s.%N)
+  rc=0
+  timeout "$limit" "$exe" run "$out/scenes/$name.json" --out "$out/runs/$name" \
+    >"$out/runs/$name.log" 2>&1 || rc=$?
+  end=$(date +%s.%N)
+  wall=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f", b - a }')
+  printf '%s\t%s\t%s\n' "$name" "$rc" "$wall" >>"$status"
+  echo "$name: exit $rc, $wall s" >&2
+done
+"$py" "$here/report.py" "$out"
