@@ -982,7 +982,7 @@ TEST_CASE("squares on the upper step of a stepped base, at its edge and away fro
     // edge of least penetration. Options: b.v1 on the riser a.e3 (b.v1 leaves along (-1,0):
     // score -1, rejected), b.v1 on the upper tread a.e4 (score 0, gap 0: first admitted),
     // a.v4 on b's bottom b.e0 (score 0, gap 0: a tie, not taken), a.v4 on b's right side
-    // (a.v4 leaves along (-1,0)... score -1). b.v0 (1.5,2) on a.e4, t = 0.25. The riser and
+    // b.e1 (n (1,0); a.v4 leaves along (-1,0): score -1, rejected). b.v0 (1.5,2) on a.e4, t = 0.25. The riser and
     // the lower tread are 1 m below b.v1 (beyond the search distance).
     CHECK(sorted(contacts(a, rectangle(1.5, 2.0, 0.5, 0.5), kStepSearch)) ==
           std::vector<std::string>{"v1.0 on e0.4", "v1.1 on e0.4 (vv)"});

@@ -52,8 +52,10 @@ struct Contact {
   int mode_changes = 0;       // within this attempt's open-close loop
 
   Vec2 edge_point(double s) const { return edge_start + s * (edge_end - edge_start); }
-  // Where the normal gap and the friction are measured (see predicted_slip).
+  // Where the normal gap and the friction are measured (see predicted_slip; only a
+  // sliding contact moves it).
   Vec2 measure_point() const {
+    if (mode != ContactMode::Slide) return edge_point(t);
     return edge_point(t + predicted_slip / (edge_end - edge_start).norm());
   }
 };

@@ -210,7 +210,10 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     c.slip = trial.slip;
     // A sliding contact's normal spring moves to where the vertex now slides to (see
     // Contact::predicted_slip); the next iteration measures there.
-    if (c.mode == ContactMode::Slide) c.predicted_slip = trial.slip;
+    // (Bounded by the step's displacement limit: an iteration far from the solution must not
+    // carry the measure point off the edge; a larger slip is cut by the displacement check.)
+    const double reach = 2.0 * ctx.allowed_displacement;
+    c.predicted_slip = c.mode == ContactMode::Slide ? std::clamp(trial.slip, -reach, reach) : 0.0;
     c.normal_force = c.mode == ContactMode::Open ? 0.0 : trial.normal_force;
     // (A held contact keeps its mode, but its forces follow the latest solve.)
     c.shear_force = c.mode == ContactMode::Open ? 0.0 : trial.shear_force;

@@ -84,7 +84,7 @@ void detect_contacts(const World& world, std::vector<Contact>& contacts) {
       c.t_lock = old->second.t_lock;
       c.bonded = old->second.bonded;
       c.normal_force = old->second.normal_force;
-      c.predicted_slip = old->second.mode == ContactMode::Slide ? old->second.slip : 0.0;
+      c.predicted_slip = old->second.predicted_slip;  // the last step's slip, if sliding
     } else if (c.gap <= touching) {
       c.mode = ContactMode::Lock;
       c.t_lock = c.t;

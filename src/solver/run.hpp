@@ -33,7 +33,11 @@ struct RunStats {
   long contacts_total = 0;    // closed contacts at the end of each step, summed
   int contacts_max = 0;
   int contacts_final = 0;     // closed contacts at the end of the run
-  int penalty_raises = 0;     // times the penalty was doubled to respect allowed_penetration
+  double deepest_penetration = 0.0;   // m, deepest contact penetration after any accepted step
+  double largest_normal_force = 0.0;  // N/m, largest contact normal force after any accepted step
+  // Times the penalty was raised: always 0 since the penalty stays as the scene sets it
+  // (kept in the summary for the scripts that read it).
+  int penalty_raises = 0;
   StageTimes stage_times;
   bool diverged = false;
   std::string message;     // why the run stopped early, empty otherwise

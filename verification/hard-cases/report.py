@@ -134,11 +134,19 @@ def check_open_close_mean(run, c):
 CHECKS = {name[len("check_"):]: f for name, f in globals().items() if name.startswith("check_")}
 
 
-def load_run(out, m, status):
-    """Everything a run left, or None when it left no summary (bad input, crash)."""
+def worst(values):
+    """The largest value; infinite if any is missing or not a number (a diverged run
+    writes nan to the CSV and null to the JSON)."""
+    if any(v is None or v != v for v in values):
+        return math.inf
+    return max(values)
+
+
+def load_run(out, m):
+    """Everything a run left, or None when it left no results (bad input, crash)."""
     rdir = os.path.join(out, "runs", m["name"])
     summary_path = os.path.join(rdir, "summary.json")
-    if not os.path.exists(summary_path):
+    if not (os.path.exists(summary_path) and os.path.exists(os.path.join(rdir, "history.csv"))):
         return None
     with open(summary_path) as f:
         summary = json.load(f)
@@ -160,14 +168,14 @@ def load_run(out, m, status):
     if run["full"]:
         # summary.json's maximum covers every step, the history only the output steps.
         series = [f[FULL_ACCOUNT] for f in frames]
-        run["remainder_max"] = max([energy.get("remainder_max", 0.0)] + series)
+        run["remainder_max"] = worst([energy.get("remainder_max", 0.0)] + series)
     else:
         # The binary has no energy account: kinetic + potential + strain against the start.
         # It leaves out the contact springs and every dissipation, so it can hide a gain
         # that friction or damping took back at the same time.
         e0 = frames[0]["kinetic"] + frames[0]["potential"] + frames[0]["strain_energy"]
         series = [f["kinetic"] + f["potential"] + f["strain_energy"] - e0 for f in frames]
-        run["remainder_max"] = max([0.0] + series)
+        run["remainder_max"] = worst([0.0] + series)
     run["series"] = series
     return run
 
@@ -175,9 +183,14 @@ def load_run(out, m, status):
 def judge(m, run, rc):
     """(passed, remainder share, physics text) of one run."""
     if run is None:
-        return False, None, "no summary.json"
+        return False, None, "no results"
     share = run["remainder_max"] / run["scale"]
-    results = [CHECKS[c["kind"]](run, c) for c in m["checks"]]
+    results = []
+    for c in m["checks"]:
+        try:
+            results.append(CHECKS[c["kind"]](run, c))
+        except (TypeError, ValueError) as e:  # null or nan in a diverged run's state
+            results.append((False, f"{c['kind']} not measurable ({e})"))
     physics_ok = all(ok for ok, _ in results)
     text = "; ".join(("" if ok else "FAIL ") + t for ok, t in results)
     return rc == 0 and share <= TOLERANCE and physics_ok, share, text
@@ -208,10 +221,11 @@ def plot_case(out, case, entries):
         bottom.plot(t, [r / run["scale"] for r in run["series"]], "k", lw=1,
                     label="remainder" if run["full"] else "KE+PE+SE - start (partial)")
         bottom.axhline(TOLERANCE, color="r", lw=0.8, ls=":", label="tolerance")
+        if not any(ax.get_legend() for ax in axes[0]):  # one legend, on the first run drawn
+            top.legend(fontsize=7)
+            bottom.legend(fontsize=7)
     axes[0][0].set_ylabel("J/m")
     axes[1][0].set_ylabel("remainder / scale")
-    axes[0][0].legend(fontsize=7)
-    axes[1][0].legend(fontsize=7)
     fig.suptitle(f"{case}: energy terms (scale {entries[0][0]['scale']:.4g} J/m)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, f"{case}.png"), dpi=80)
@@ -233,7 +247,7 @@ def main():
     rows, notes, by_case, failed, partial = [], [], {}, 0, False
     for m in manifest:
         rc, wall = status.get(m["name"], (None, None))
-        run = load_run(out, m, status)
+        run = load_run(out, m)
         ok, share, physics = judge(m, run, rc)
         failed += not ok
         by_case.setdefault(m["case"], []).append((m, run))
