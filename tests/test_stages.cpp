@@ -7,12 +7,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
-#include <vector>
-
-#include <nlohmann/json.hpp>
 #include <utility>
+#include <vector>
 
 #include "cli_helpers.hpp"
 #include "contact/bonding.hpp"
@@ -119,9 +118,10 @@ double moved_down_slope(const World& w, const Vec2& start) {
 }
 
 // Thresholds between "held" and "slid" (m along the slope):
-// - held: the block moves only by its contact springs' deformation. Its weight along the
-//   slope over two shear springs of p / 2.5 (p = 50 x 1 GPa) is 15892 N / 4e10 N/m = 4e-7 m;
-//   1e-5 m is 25 times that.
+// - held: the block moves only as its contact springs and the block itself deform, and as
+//   it tilts under its uneven corner forces: 3e-6 m in these runs (4e-7 m of it the shear
+//   springs: its weight along the slope, 15892 N, over two springs of p / 2.5 = 2e10 N/m,
+//   p = 50 x 1 GPa). 1e-5 m is three times that.
 // - slid: with its bond broken, friction alone (tan 20 < 0.75) lets the block accelerate at
 //   g (sin a - cos a tan 20) = 3.03 m/s^2, 15 mm in the 0.1 s of the dynamic runs below if it
 //   breaks at once (the overshoot comes within the first milliseconds); 1 mm is reached even
@@ -248,6 +248,7 @@ Contact closed_contact(ContactMode mode, int joint) {
   c.t_lock = 0.2;
   c.slip = 0.1;
   c.slide_sign = mode == ContactMode::Slide ? 1 : 0;
+  c.predicted_slip = mode == ContactMode::Slide ? 0.1 : 0.0;
   return c;
 }
 
@@ -360,6 +361,7 @@ TEST_CASE("bond_closed_contacts bonds closed contacts of joints with strength", 
   CHECK(contacts[1].bonded);
   CHECK(contacts[1].mode == ContactMode::Lock);
   CHECK(contacts[1].slide_sign == 0);
+  CHECK(contacts[1].predicted_slip == 0.0);
   // Anchored where the vertex ended its last step: t + slip / edge length = 0.25 + 0.1 / 4.
   CHECK_THAT(contacts[1].t_lock, WithinAbs(0.275, 1e-15));
 
@@ -384,8 +386,9 @@ TEST_CASE("stages: gravity at once breaks a cohesive block's bond; consolidated 
   const double cohesion = cohesion_for(1.5);
   const double fs = factor_of_safety(cohesion);
   INFO("factor of safety " << fs << ", cohesion " << cohesion << " Pa");
-  // Above 1 statically, below the 2 at which a suddenly applied load can no longer break it
-  // (the springs overshoot to at most twice the static force).
+  // Above 1: it holds under a static load. Below 1.9: in the range where gravity applied at
+  // once breaks the bond (an undamped spring loaded suddenly overshoots to twice the static
+  // force; the normal force, and with it friction, overshoots too, but out of phase).
   REQUIRE(fs > 1.0);
   REQUIRE(fs < 1.9);
   // Friction alone cannot hold the block: once the bond breaks it slides.
@@ -505,10 +508,21 @@ TEST_CASE("stages: a gravity ramp reaches the full gravity, and the block restin
     return true;
   });
   REQUIRE_FALSE(stats.diverged);
-  REQUIRE(stats.penalty_raises == 0);
   CHECK(stats.steps == 50);
   CHECK(linear);
   CHECK(world.gravity == s.gravity);  // exactly the full gravity at the end
+
+  // The energy account stays balanced. Gravity set to 0 at the start and ramped back up
+  // changes the block's potential energy -m g . xc by m g yc = 61 kJ/m each way without
+  // moving it; both changes are booked as load work (stages.cpp), else the remainder would
+  // show them. What is left unexplained is the settlement's share (microns, a fraction of a
+  // joule) and round-off: 1e-5 of that potential change (0.6 J/m) bounds it, over the run.
+  const double potential_change =
+      kDensity * kLength * kHeight * kG * polygon_moments(base.blocks[1].vertices).centroid.y();
+  INFO("load work " << world.energy.load_work << " J/m, remainder " << world.energy.remainder
+                    << " J/m, largest " << world.energy.remainder_max << " J/m");
+  CHECK(std::abs(world.energy.remainder) < 1e-5 * potential_change);
+  CHECK(world.energy.remainder_max < 1e-5 * potential_change);
 
   // The normal force the slope carries: the penalty springs' p x penetration at the block's
   // two bottom corners (the contacts' vertices), from the final configuration.
@@ -615,6 +629,6 @@ TEST_CASE("stages: the example in docs/scene-format.md runs, and its block stays
   REQUIRE_FALSE(stats.diverged);
   CHECK_THAT(world.time, WithinRel(1.5, 1e-12));
   CHECK(world.stages.start_steps == std::vector<int>{0, 50});
-  // Held: elastic deformation of its contacts only (see kHeld).
+  // Held: it moves only as its contacts and itself deform (see kHeld).
   CHECK((world.blocks[1].moments.centroid - start).norm() < kHeld);
 }

@@ -16,6 +16,7 @@ int bond_closed_contacts(std::vector<Contact>& contacts, const std::vector<Joint
       c.t_lock = c.t + c.slip / edge_length;
       c.mode = ContactMode::Lock;
       c.slide_sign = 0;
+      c.predicted_slip = 0.0;  // only a sliding contact measures ahead (contact.hpp)
     }
     c.bonded = true;
     ++formed;

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "kinematics/polygon.hpp"
+
 namespace dda {
 namespace {
 
@@ -46,7 +48,12 @@ void vertex_to_edge(const Polygon& vp, int vblock, const Polygon& ep, int eblock
       // paired end: two faces that overlap by more than that (blocks face to face, offset
       // along the face) need both end vertices on the other's edge, and a rocking block
       // pushed the one the pair rule had dropped 0.5 mm into its neighbour unopposed.
+      // Only while it is outside or barely inside the edge: a paired vertex found deep
+      // behind an edge's line near the paired corner is beyond the corner's other edge
+      // (outside the block) and belongs to the pair rule (a pack of random blocks had one
+      // "3 cm deep" behind the line of an acute corner's edge).
       const double clearance = kPairClearanceShare * d0;
+      if ((paired_start || paired_end) && proj.gap < -clearance) continue;
       if ((paired_start && proj.t * frame.length < clearance) ||
           (paired_end && (1.0 - proj.t) * frame.length < clearance)) {
         continue;
@@ -55,6 +62,10 @@ void vertex_to_edge(const Polygon& vp, int vblock, const Polygon& ep, int eblock
       const double reach = std::min({d0, half_shortest_edge_at(vp, v), 0.5 * frame.length});
       if (proj.t < 0.0 || proj.t > 1.0 || proj.gap > d0 || proj.gap < -reach) continue;
       if (wedge_score(vp, v, frame.normal) < -kCandidateWedgeTolerance) continue;
+      // Behind the edge's line but outside its block: beyond the other edge of an acute
+      // corner, where the line's extension says "deep inside" (a pack of random blocks had
+      // such a vertex enter 3.5 cm deep and lock). Not a contact of this edge.
+      if (proj.gap < 0.0 && !contains_point(ep, vp[v])) continue;
       out.push_back({vblock, v, eblock, e, false});
     }
   }

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 #include "kinematics/block_matrices.hpp"
@@ -115,7 +113,6 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
               [](const auto& a, const auto& b) { return a.energy > b.energy; });
     if (s.suspects.size() > 3) s.suspects.pop_back();
   };
-  if (getenv("DDA_EDEBUG2")) for (const Contact& c : contacts) if (c.key.vertex_block == 5 && c.key.edge_block == 13 && world.step > 810) fprintf(stderr, "step %d c %d/%d-%d/%d mode %d g0 %.4e g1 %.4e t %.4f tl %.4f vtx %.6f %.6f N %.3e S %.3e slip %.3e ps %.3e\n", world.step, c.key.vertex_block, c.key.vertex, c.key.edge_block, c.key.edge, (int)c.mode, c.gap, c.new_gap, c.t, c.t_lock, c.vertex.x(), c.vertex.y(), c.normal_force, c.shear_force, c.slip, c.predicted_slip);
   for (const Contact& c : contacts) {
     if (c.mode == ContactMode::Open) continue;
     // The normal spring's force is taken at the step's end, -k g_end, over the whole step:
