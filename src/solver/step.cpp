@@ -159,8 +159,144 @@ bool is_finished(const World& world) {
   return world.time >= *c.end_time - kTimeRoundOff * typical;
 }
 
-StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
+namespace {
+
+// What one pass of the open-close loop (stage 3) ended with.
+struct LoopResult {
+  Eigen::VectorXd d;          // the step's increments
+  int iterations = 0;         // assemble + solve passes
+  bool solved = true;         // false: the global system could not be solved
+  std::optional<CutReason> unsettled;  // the loop did not settle: the reason to cut
+  double material_fraction = 1.0;      // with CutReason::Material: the return's suggestion
+};
+
+// 3. The open-close loop: assemble, solve, let every contact choose its next mode, until no
+//    contact changes (and, for finite_rotation, until each block's secant angle is its own
+//    r0; for plastic blocks, until their Newton iteration has converged). The first
+//    iteration factorises; later ones update the factor by the springs of the contacts that
+//    changed (CholmodSolver::solve_modified), unless T or a material tangent changed.
+LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, RunStats& stats,
+                            StageClock& clock) {
   StageTimes& times = stats.stage_times;
+  const RotationUpdate treatment = world.control.rotation_update;
+  std::vector<double> angles;  // per block: the angle inside T's rotation column
+  if (changes_t(treatment)) {
+    angles = last_rotation_increments(world);
+    set_rotation_columns(world, angles, ctx);
+  }
+  const bool plastic = has_plastic_blocks(world);
+  if (plastic) ctx.material_terms = start_linearization(world);
+  const int iteration_limit = world.control.max_open_close + (plastic ? kExtraNewtonIterations : 0);
+
+  assemble(world, ctx, ws.block_terms);
+  LoopResult r;
+  ContactUpdate contacts;
+  int secants_moved = 0;
+  MaterialFollowUp materials;
+  bool factor_stale = false;
+  do {
+    ws.system = ws.block_terms;
+    add_contact_terms(world, ws.contacts, ctx, ws.system);
+    clock.lap(times.assemble);
+    // A non-associated plastic block makes the system unsymmetric: KLU then, and CHOLMOD's
+    // factor (which no longer follows the contact springs) is rebuilt when next used.
+    const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
+    const bool refactor =
+        r.iterations == 0 || secants_moved > 0 || materials.unconverged > 0 || factor_stale;
+    const std::optional<Eigen::VectorXd> solved =
+        unsymmetric ? solve_klu(ws.system)
+        : refactor  ? ws.solver.solve(ws.system)
+                    : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
+    factor_stale = unsymmetric;
+    clock.lap(times.solve);
+    ++stats.iterations;
+    ++r.iterations;
+    if (!solved || !solved->allFinite()) {
+      r.solved = false;
+      return r;
+    }
+    r.d = *solved;
+    const std::vector<SpringState> before = spring_states(ws.contacts);
+    contacts = update_contact_modes(world, ws.contacts, r.d, ctx);
+    spring_changes(world, ws.contacts, before, ctx, ws.springs_added, ws.springs_removed);
+    if (treatment == RotationUpdate::FiniteRotation) {
+      secants_moved = follow_secant_angles(world, r.d, angles);
+      if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
+    }
+    if (plastic) {
+      materials = follow_materials(world, r.d, ctx.material_terms);
+      if (materials.failed) {
+        r.unsettled = CutReason::Material;
+        r.material_fraction = materials.suggested_fraction;
+        return r;
+      }
+    }
+    if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
+    clock.lap(times.contact_update);
+  } while ((contacts.changed > 0 || secants_moved > 0 || materials.unconverged > 0) &&
+           r.iterations < iteration_limit);
+  if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, r.d);
+  if (contacts.changed > 0 || contacts.held_in_tension > 0 || secants_moved > 0 ||
+      materials.unconverged > 0) {
+    r.unsettled = CutReason::OpenClose;
+  }
+  return r;
+}
+
+// 4. The checks on a settled step: too large a motion, or a contact deeper than allowed.
+std::optional<CutReason> check_step(const World& world, const StepWorkspace& ws,
+                                    const Eigen::VectorXd& d, const StepContext& ctx,
+                                    double& moved) {
+  moved = max_vertex_displacement(world, d);
+  if (moved > ctx.allowed_displacement) return CutReason::Displacement;
+  if (max_penetration(ws.contacts) > world.allowed_penetration) return CutReason::Penetration;
+  return std::nullopt;
+}
+
+// The one cut rule: the share of dt the redone attempt takes, by reason. The motion is
+// roughly proportional to dt, so a displacement cut aims just below the limit; a return map
+// that fails suggests its own fraction; contacts that do not settle or penetrate take Shi's
+// 0.3. Each share is kept within Shi's usual range [0.1, 0.9].
+double cut_share(CutReason reason, double allowed, double moved, double material_fraction) {
+  switch (reason) {
+    case CutReason::Displacement: return std::clamp(kCutSafety * allowed / moved, kCutMin, kCutMax);
+    case CutReason::Material: return std::clamp(material_fraction, kCutMin, kCutMax);
+    case CutReason::OpenClose:
+    case CutReason::Penetration: return kContactCut;
+  }
+  return kContactCut;
+}
+
+void count_cut(CutReason reason, RunStats& stats) {
+  ++stats.cut_steps;
+  switch (reason) {
+    case CutReason::Displacement: ++stats.cuts_for_displacement; break;
+    case CutReason::OpenClose: ++stats.cuts_for_open_close; break;
+    case CutReason::Penetration: ++stats.cuts_for_penetration; break;
+    case CutReason::Material: ++stats.cuts_for_material; break;
+  }
+}
+
+// 5-6. Commit: the energy account's terms (on the step's own T and contacts), the
+//    configuration update by the chosen rotation treatment, strains, stresses, velocities,
+//    time; then the account's balance.
+void commit_step(World& world, StepWorkspace& ws, const Eigen::VectorXd& d,
+                 const StepContext& ctx, int iterations, RunStats& stats, StageClock& clock,
+                 StepEnergy& energy_terms) {
+  energy_terms = step_energy(world, ws.contacts, d, ctx);
+  update_configuration(world, d);
+  update_stresses(world);
+  update_velocities(world, d, ctx);
+  clock.lap(stats.stage_times.update);
+  world.time += ctx.dt;
+  ++world.step;
+  commit_step_energy(world, energy_terms, ws.contacts, d, ctx.penalty);
+  count_step(ws, iterations, stats);
+}
+
+}  // namespace
+
+StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   StageClock clock;
   // 1. Choose dt.
   const double scheduled_dt = scheduled_time_step(world);
@@ -169,7 +305,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   //    they had last step. A redone attempt starts again from these.
   detect_contacts(world, ws.contacts);
   const std::vector<Contact> contacts_at_start = ws.contacts;
-  clock.lap(times.detect);
+  clock.lap(stats.stage_times.detect);
   int penetration_cuts = 0;
 
   for (;;) {
@@ -178,101 +314,23 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
                                              "the contacts or the motion do not settle")};
     }
     StepContext ctx = make_step_context(world, dt);
-    const RotationUpdate treatment = world.control.rotation_update;
-    std::vector<double> angles;  // per block: the angle inside T's rotation column
-    if (changes_t(treatment)) {
-      angles = last_rotation_increments(world);
-      set_rotation_columns(world, angles, ctx);
-    }
-    const bool plastic = has_plastic_blocks(world);
-    if (plastic) ctx.material_terms = start_linearization(world);
-    const int iteration_limit =
-        world.control.max_open_close + (plastic ? kExtraNewtonIterations : 0);
     ws.contacts = contacts_at_start;  // states as they entered the step, no changes counted
-
-    // 3. Open-close loop: assemble, solve, let every contact choose its next mode, until
-    //    no contact changes (and, for finite_rotation, until each block's secant angle is its
-    //    own r0). The first iteration factorises; later ones update the factor by the springs
-    //    of the contacts that changed (CholmodSolver::solve_modified), unless T changed.
-    assemble(world, ctx, ws.block_terms);
-    Eigen::VectorXd d;
-    int open_close = 0;
-    int changed = 0;
-    int held_in_tension = 0;
-    int secants_moved = 0;
-    MaterialFollowUp materials;
-    bool factor_stale = false;
-    do {
-      ws.system = ws.block_terms;
-      add_contact_terms(world, ws.contacts, ctx, ws.system);
-      clock.lap(times.assemble);
-      // A non-associated plastic block makes the system unsymmetric: KLU then, and CHOLMOD's
-      // factor (which no longer follows the contact springs) is rebuilt when next used.
-      const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
-      const bool refactor = open_close == 0 || secants_moved > 0 || materials.unconverged > 0 ||
-                            factor_stale;
-      const std::optional<Eigen::VectorXd> solved =
-          unsymmetric ? solve_klu(ws.system)
-          : refactor  ? ws.solver.solve(ws.system)
-                      : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
-      factor_stale = unsymmetric;
-      clock.lap(times.solve);
-      ++stats.iterations;
-      ++open_close;
-      if (!solved || !solved->allFinite()) {
-        return {false, describe_failure(world, "the global system could not be solved "
-                                               "(not positive definite or not finite)")};
-      }
-      d = *solved;
-      const std::vector<SpringState> before = spring_states(ws.contacts);
-      const ContactUpdate contact_update = update_contact_modes(world, ws.contacts, d, ctx);
-      changed = contact_update.changed;
-      held_in_tension = contact_update.held_in_tension;
-      spring_changes(world, ws.contacts, before, ctx, ws.springs_added, ws.springs_removed);
-      if (treatment == RotationUpdate::FiniteRotation) {
-        secants_moved = follow_secant_angles(world, d, angles);
-        if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
-      }
-      if (plastic) {
-        materials = follow_materials(world, d, ctx.material_terms);
-        if (materials.failed) break;
-      }
-      if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
-      clock.lap(times.contact_update);
-    } while ((changed > 0 || secants_moved > 0 || materials.unconverged > 0) &&
-             open_close < iteration_limit);
-    if (materials.failed) {
-      // A return map that fails is cured by a smaller strain increment: cut by the
-      // material's own suggestion, within Shi's usual range.
-      ++stats.cut_steps;
-      ++stats.cuts_for_material;
-      dt *= std::clamp(materials.suggested_fraction, kCutMin, kCutMax);
-      continue;
+    // 3. The open-close loop.
+    const LoopResult loop = solve_open_close(world, ws, ctx, stats, clock);
+    if (!loop.solved) {
+      return {false, describe_failure(world, "the global system could not be solved "
+                                             "(not positive definite or not finite)")};
     }
-    if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, d);
-    if (changed > 0 || held_in_tension > 0 || secants_moved > 0 || materials.unconverged > 0) {
-      ++stats.cut_steps;
-      ++stats.cuts_for_open_close;
-      dt *= kContactCut;
-      continue;
-    }
-
-    // 4. Displacement-ratio check: too large a motion cuts dt and redoes the step.
-    const double moved = max_vertex_displacement(world, d);
-    if (moved > ctx.allowed_displacement) {
-      ++stats.cut_steps;
-      ++stats.cuts_for_displacement;
-      dt *= std::clamp(kCutSafety * ctx.allowed_displacement / moved, kCutMin, kCutMax);
-      continue;
-    }
-    //    Penetration check: an impact is cut. The penalty is never changed: raising it while
-    //    contacts are loaded put energy into them, and a run must not change its model
-    //    silently. A penetration that cutting does not cure (a static load the penalty
-    //    cannot carry within allowed_penetration) ends the run with a message that says so.
-    if (max_penetration(ws.contacts) > world.allowed_penetration) {
-      ++stats.cut_steps;
-      ++stats.cuts_for_penetration;
-      if (++penetration_cuts > kPenetrationCuts) {
+    // 4. Checks: an unsettled loop, too large a motion or too deep a penetration cut dt and
+    //    redo the attempt. The penalty is never changed: raising it while contacts are loaded
+    //    put energy into them, and a run must not change its model silently. A penetration
+    //    that cutting does not cure (a static load the penalty cannot carry within
+    //    allowed_penetration) ends the run with a message that says so.
+    double moved = 0.0;
+    const std::optional<CutReason> cut =
+        loop.unsettled ? loop.unsettled : check_step(world, ws, loop.d, ctx, moved);
+    if (cut) {
+      if (*cut == CutReason::Penetration && ++penetration_cuts > kPenetrationCuts) {
         std::ostringstream what;
         what << "contacts penetrate " << max_penetration(ws.contacts)
              << " m, more than allowed_penetration " << world.allowed_penetration << " m, even at "
@@ -281,24 +339,15 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
              << " N/m) or control.allowed_penetration";
         return {false, describe_failure(world, what.str())};
       }
-      dt *= kContactCut;
+      count_cut(*cut, stats);
+      dt *= cut_share(*cut, ctx.allowed_displacement, moved, loop.material_fraction);
       continue;
     }
-
-    // The energy account's terms of this step, on the step's own T and contacts.
-    const StepEnergy energy_terms = step_energy(world, ws.contacts, d, ctx);
-    // 5. Configuration update by the chosen rotation treatment.
-    update_configuration(world, d);
-    // 6. Strains, stresses and velocities.
-    update_stresses(world);
-    update_velocities(world, d, ctx);
-    clock.lap(times.update);
-    world.time += ctx.dt;
-    ++world.step;
-    commit_step_energy(world, energy_terms, ws.contacts, d, ctx.penalty);
-    count_step(ws, open_close, stats);
-    // The energy guard: a step that leaves the run with more energy than loads put in
-    // (beyond the tolerance) ends it; the step is kept, so the output shows it.
+    // 5-6. Commit the step.
+    StepEnergy energy_terms;
+    commit_step(world, ws, loop.d, ctx, loop.iterations, stats, clock, energy_terms);
+    // 7. The energy guard: a step that leaves the run with more energy than loads put in
+    //    (beyond the tolerance) ends it; the step is kept, so the output shows it.
     std::string gained = energy_guard_message(world, energy_terms, world.control.energy_tolerance);
     if (!gained.empty()) return {false, std::move(gained)};
     return {};

@@ -1,6 +1,7 @@
 // One DDA time step as a pipeline of named stages (see step.cpp, read top-down).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,15 @@ struct StepWorkspace {
   std::vector<Contact> contacts;  // the contacts and the state they carry between steps
   std::vector<RankOneTerm> springs_added;    // contact springs that appeared in the last
   std::vector<RankOneTerm> springs_removed;  // open-close iteration, and those that went
+};
+
+// Why an attempt of a step is thrown away and redone with a shorter dt (one cut rule,
+// step.cpp: cut_share).
+enum class CutReason {
+  Displacement,  // a vertex moved more than max_displacement_ratio x w0
+  OpenClose,     // the open-close loop did not settle in max_open_close iterations
+  Penetration,   // a contact ended deeper than allowed_penetration
+  Material,      // a plastic block's return map failed
 };
 
 struct StepOutcome {
