@@ -228,13 +228,39 @@ def case_wall():
                 steps=1000)
 
 
+def case_topple():
+    """A toppling slope (after Hoek and Bray's example): 16 columns 1 m wide, 2 to 5.5 m
+    tall, standing on the treads of a stepped base drawn as one concave polygon (1 m treads,
+    0.5 m risers), the whole turned 20 degrees counter-clockwise so the treads dip towards
+    the face; friction 38 degrees. The tall columns lean past their base and topple onto
+    the ones below; nothing may be thrown out of the slope or gain energy."""
+    n, w, rise, turn = 16, 1.0, 0.5, math.radians(20.0)
+    c, s_ = math.cos(turn), math.sin(turn)
+    rot = lambda p: [[x * c - y * s_, x * s_ + y * c] for x, y in p]
+    profile = []
+    for i in range(n):
+        profile += [[i * w, i * rise], [(i + 1) * w, i * rise]]
+    right = n * w + 2.0
+    base = [[0.0, -2.0], [right, -2.0], [right, (n - 1) * rise]] + profile[::-1][1:]
+    heights = [2.0 + 0.35 * i if i < 10 else 5.5 - 0.3 * (i - 10) for i in range(n)]
+    columns = [rot(rect(i * w, i * rise, (i + 1) * w, i * rise + h)) for i, h in enumerate(heights)]
+    blocks = [fixed(rot(base))] + [free(p) for p in columns]
+    # Scale: the potential energy the columns would release lying flat on their treads
+    # (centroid from h/2 to w/2 above the tread, along the turned vertical).
+    scale = sum(RHO * w * h * G * (h - w) / 2 * c for h in heights)
+    return dict(blocks=blocks, joint=38.0, scale=scale,
+                scale_note="m g x fall of each column's centroid lying flat on its tread",
+                checks=[released(0.01) | {"dynamic_only": True}],
+                end_time=3.0, fall=1.0)
+
 def cases(smoke):
     rng = random.Random(9)  # issue 9; every random draw below comes from this one stream
     box5, box30 = case_box(5, rng), case_box(30, rng)
     pack16, pack48 = case_pack(16, rng), case_pack(48, rng)
     every = {"box5": box5, "box30": box30, "column": case_column(),
              "collision": case_collision(), "slope": case_slope(), "pack16": pack16,
-             "pack48": pack48, "concave_base": case_concave_base(), "wall": case_wall()}
+             "pack48": pack48, "concave_base": case_concave_base(), "wall": case_wall(),
+             "topple": case_topple()}
     if smoke:
         del every["pack48"]  # over a minute of settling today
     return every
