@@ -154,23 +154,24 @@ TEST_CASE("energy guard: a run that creates energy stops with exit 3 and says so
   const auto at = scene.find(key);
   REQUIRE(at != std::string::npos);
   scene.replace(at, key.size(), key + "\"rotation_update\": \"post_adjustment\", ");
-  dda::test::write_file(dir.path / "gains.json", scene);
-  const dda::test::CommandResult c = dda::test::run_command(
-      std::string(DDA_EXE) + " run " + (dir.path / "gains.json").string() + " --out " +
-      (dir.path / "out").string());
+  // Writes the scene as NAME.json and runs it into NAME/.
+  auto run_scene = [&](const std::string& name) {
+    dda::test::write_file(dir.path / (name + ".json"), scene);
+    return dda::test::run_command(std::string(DDA_EXE) + " run " +
+                                  (dir.path / (name + ".json")).string() + " --out " +
+                                  (dir.path / name).string());
+  };
+  const dda::test::CommandResult c = run_scene("gains");
   INFO(c.output);
   CHECK(c.exit_code == 3);
   CHECK(dda::test::contains(c.output, "gained without a cause"));
   CHECK(dda::test::contains(c.output, "energy_tolerance"));
   // What was written up to the stop is kept, and the summary says why.
-  const std::string summary = dda::test::read_file(dir.path / "out" / "summary.json");
+  const std::string summary = dda::test::read_file(dir.path / "gains" / "summary.json");
   CHECK(dda::test::contains(summary, "\"diverged\": true"));
 
-  scene.replace(scene.find("\"control\": {"), 12, "\"control\": {\"energy_tolerance\": 1000, ");
-  dda::test::write_file(dir.path / "allowed.json", scene);
-  const dda::test::CommandResult d = dda::test::run_command(
-      std::string(DDA_EXE) + " run " + (dir.path / "allowed.json").string() + " --out " +
-      (dir.path / "out2").string());
+  scene.replace(scene.find(key), key.size(), key + "\"energy_tolerance\": 1000, ");
+  const dda::test::CommandResult d = run_scene("allowed");
   INFO(d.output);
   CHECK(d.exit_code == 0);
 }
