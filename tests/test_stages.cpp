@@ -632,3 +632,26 @@ TEST_CASE("stages: the example in docs/scene-format.md runs, and its block stays
   // Held: it moves only as its contacts and itself deform (see kHeld).
   CHECK((world.blocks[1].moments.centroid - start).norm() < kHeld);
 }
+
+TEST_CASE("stages: summary.json reports the stages as run and where each began", "[stages][cli]") {
+  // The docs example through the real command line: two stages, the second beginning at step
+  // 50 (0.5 s of 0.01 s steps). Its bond_closed_contacts forms no new bond: the block's two
+  // contacts were bonded from step 0 (the example's text says so).
+  dda::test::TempDir dir("stages_summary");
+  dda::test::write_file(dir.path / "staged.json",
+                        doc_example("### Example: a slope consolidated statically, then run dynamically"));
+  const dda::test::CommandResult r = dda::test::run_command(
+      std::string(DDA_EXE) + " run " + (dir.path / "staged.json").string() + " --out " +
+      (dir.path / "out").string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  const nlohmann::json s =
+      nlohmann::json::parse(dda::test::read_file(dir.path / "out" / "summary.json"));
+  REQUIRE(s["settings"]["stages"].size() == 2);
+  CHECK(s["settings"]["stages"][1]["bond_closed_contacts"] == true);
+  REQUIRE(s["stages_run"].size() == 2);
+  CHECK(s["stages_run"][0]["start_step"] == 0);
+  CHECK(s["stages_run"][1]["start_step"] == 50);
+  CHECK(s["stages_run"][1]["start_time"].get<double>() == Approx(0.5).epsilon(1e-12));
+  CHECK(s["stages_run"][1]["bonds_formed"] == 0);
+}

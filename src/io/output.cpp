@@ -176,10 +176,37 @@ json optional_value(const std::optional<T>& x) {
   return x ? json(*x) : json(nullptr);
 }
 
+// A staged run's stages as the run used them (durations, coefficients, gravity, time steps,
+// joint overrides, bonding).
+json stages_json(const StagePlan& plan) {
+  json out = json::array();
+  for (const StageSpec& st : plan.stages) {
+    json joints = json::object();
+    for (const StageJoint& j : st.joint_materials) {
+      joints[j.material.name] = {{"friction_angle", j.material.friction_angle},
+                                 {"cohesion", j.material.cohesion},
+                                 {"tensile_strength", j.material.tensile_strength}};
+    }
+    json stage = {{"duration", st.duration}, {"dynamic_coefficient", st.dynamic_coefficient}};
+    if (st.gravity_ramp) {
+      stage["gravity_ramp"] = {st.gravity_from, st.gravity_to};
+    } else {
+      stage["gravity_factor"] = st.gravity_from;
+    }
+    stage["time_step"] = st.time_steps;
+    stage["joint_materials"] = joints;
+    stage["bond_closed_contacts"] = st.bond_closed_contacts;
+    out.push_back(stage);
+  }
+  return out;
+}
+
 json settings_json(const World& w) {
-  const ControlSettings& c = w.control;
-  return {
-      {"gravity", vec(w.gravity)},
+  // With stages, the world's gravity and control are the last stage's: report the scene's.
+  const bool staged = !w.stages.stages.empty();
+  const ControlSettings& c = staged ? w.stages.control : w.control;
+  json settings = {
+      {"gravity", vec(staged ? w.stages.gravity : w.gravity)},
       {"plane", w.plane == PlaneMode::Strain ? "strain" : "stress"},
       {"time_step", c.time_steps},
       {"steps", optional_value(c.steps)},
@@ -195,7 +222,10 @@ json settings_json(const World& w) {
       {"allowed_penetration", w.allowed_penetration},
       {"allowed_penetration_rule", c.allowed_penetration ? "user" : "auto"},
       {"search_distance", w.search_distance},
+      {"energy_tolerance", c.energy_tolerance},
   };
+  if (staged) settings["stages"] = stages_json(w.stages);
+  return settings;
 }
 
 // Per-step means are over accepted steps; a run of zero steps reports zeros.
@@ -277,6 +307,19 @@ void OutputWriter::record(const World& world) {
 }
 
 namespace {
+// The stages entered (empty without stages): where each began and the bonds it formed.
+json stages_run_json(const World& world) {
+  const StagePlan& plan = world.stages;
+  json out = json::array();
+  for (std::size_t k = 0; k < plan.start_steps.size(); ++k) {
+    out.push_back({{"index", k},
+                   {"start_step", plan.start_steps[k]},
+                   {"start_time", k == 0 ? 0.0 : plan.end_times[k - 1]},
+                   {"bonds_formed", k < plan.bonds_formed.size() ? plan.bonds_formed[k] : 0}});
+  }
+  return out;
+}
+
 // The energy account at the end (docs/output-format.md, docs/energy-balance.md).
 json energy_json(const World& world) {
   const EnergyTotals e = scene_energy(world);
@@ -325,6 +368,7 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
                     {"largest_normal_force", stats.largest_normal_force}}},
       {"penalty_raises", stats.penalty_raises},
       {"energy", energy_json(world)},
+      {"stages_run", stages_run_json(world)},
       {"end_time", world.time},
       {"diverged", stats.diverged},
       {"message", stats.message},
