@@ -54,7 +54,7 @@ Plateau plateau(double dilation) {
     dda::advance_step(p.world, ws, stats);
   }
   p.world.pins[0].anchor.y() -= 1e-5;
-  p.contacts = ws.contacts;
+  p.contacts = p.world.contacts;
   return p;
 }
 
@@ -65,7 +65,6 @@ void BM_NewtonHandWritten(benchmark::State& state) {
     state.PauseTiming();
     dda::World world = start.world;
     dda::StepWorkspace ws;  // a fresh factorisation, as KINSOL's
-    ws.contacts = start.contacts;
     dda::RunStats stats;
     state.ResumeTiming();
     const dda::StepOutcome outcome = dda::advance_step(world, ws, stats);

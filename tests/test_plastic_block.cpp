@@ -297,7 +297,7 @@ TEST_CASE("KINSOL's Newton finds the step the hand-written Newton finds", "[plas
     }
     REQUIRE(p.world.blocks[p.specimen].branch == Branch::Plane);
     p.world.pins[0].anchor.y() -= 1e-5;
-    std::vector<Contact> contacts = ws.contacts;
+    std::vector<Contact> contacts = p.world.contacts;
     detect_contacts(p.world, contacts);
     StepContext ctx;
     ctx.dt = 0.01;

@@ -2,21 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <utility>
 
 #include "contact/broad_phase.hpp"
+#include "contact/carry_over.hpp"
 #include "contact/narrow_phase.hpp"
 
 namespace dda {
 namespace {
 
-struct KeyHash {
-  std::size_t operator()(const ContactKey& k) const {
-    std::size_t h = static_cast<std::size_t>(k.vertex_block);
-    for (int v : {k.vertex, k.edge_block, k.edge}) h = h * 1000003u ^ static_cast<std::size_t>(v);
-    return h;
-  }
-};
 
 // The share of a face-to-face contact this vertex carries: half of each of its two edges
 // that lies along the contact edge (within the entrance tolerance). A vertex meeting the edge
@@ -56,10 +50,6 @@ Contact make_contact(const World& world, const ContactCandidate& c) {
 }  // namespace
 
 void detect_contacts(const World& world, std::vector<Contact>& contacts) {
-  std::unordered_map<ContactKey, Contact, KeyHash> previous;
-  previous.reserve(contacts.size());
-  for (const Contact& c : contacts) previous.emplace(c.key, c);
-
   std::vector<Box> boxes;
   boxes.reserve(world.blocks.size());
   for (const Block& b : world.blocks) boxes.push_back(grown_box(b.vertices, 0.5 * world.search_distance));
@@ -73,26 +63,11 @@ void detect_contacts(const World& world, std::vector<Contact>& contacts) {
 
   // Blocks placed face to face are "closed" although round-off may leave a gap of a few ulps.
   const double touching = 1e-9 * world.w0;
-  contacts.clear();
-  contacts.reserve(candidates.size());
-  for (const ContactCandidate& cand : candidates) {
-    Contact c = make_contact(world, cand);
-    const auto old = previous.find(c.key);
-    if (old != previous.end()) {
-      c.mode = old->second.mode;
-      c.slide_sign = old->second.slide_sign;
-      c.t_lock = old->second.t_lock;
-      c.bonded = old->second.bonded;
-      c.normal_force = old->second.normal_force;
-      c.predicted_slip = old->second.predicted_slip;  // the last step's slip, if sliding
-    } else if (c.gap <= touching) {
-      c.mode = ContactMode::Lock;
-      c.t_lock = c.t;
-      const JointLaw& law = world.joint_laws[c.joint];
-      c.bonded = world.step == 0 && (law.cohesion > 0.0 || law.tensile_strength > 0.0);
-    }
-    contacts.push_back(c);
-  }
+  std::vector<Contact> found;
+  found.reserve(candidates.size());
+  for (const ContactCandidate& cand : candidates) found.push_back(make_contact(world, cand));
+  carry_over(contacts, found, touching, world.step == 0, world.joint_laws);
+  contacts = std::move(found);
 }
 
 }  // namespace dda

@@ -18,7 +18,7 @@ RunStats run(World& world, const StepObserver& observe) {
   while (keep_going) {
     // Stages (solver/stages.hpp): at the end of one the next takes over, and forms its bonds
     // on the contacts closed now. Without stages the run ends with control's end.
-    while (enter_next_stage(world, ws.contacts)) {
+    while (enter_next_stage(world, world.contacts)) {
     }
     if (is_finished(world)) break;
     set_stage_gravity(world);  // a ramp's gravity at this step's end; no stages: unchanged

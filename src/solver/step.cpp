@@ -116,15 +116,15 @@ int closed_contacts(const std::vector<Contact>& contacts) {
   }));
 }
 
-void count_step(const StepWorkspace& ws, int open_close, RunStats& stats) {
+void count_step(const World& world, int open_close, RunStats& stats) {
   stats.open_close_total += open_close;
   stats.open_close_max = std::max(stats.open_close_max, open_close);
-  const int closed = closed_contacts(ws.contacts);
+  const int closed = closed_contacts(world.contacts);
   stats.contacts_total += closed;
   stats.contacts_max = std::max(stats.contacts_max, closed);
   stats.contacts_final = closed;
-  stats.deepest_penetration = std::max(stats.deepest_penetration, max_penetration(ws.contacts));
-  for (const Contact& c : ws.contacts) {
+  stats.deepest_penetration = std::max(stats.deepest_penetration, max_penetration(world.contacts));
+  for (const Contact& c : world.contacts) {
     stats.largest_normal_force = std::max(stats.largest_normal_force, c.normal_force);
   }
 }
@@ -196,7 +196,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   bool factor_stale = false;
   do {
     ws.system = ws.block_terms;
-    add_contact_terms(world, ws.contacts, ctx, ws.system);
+    add_contact_terms(world, world.contacts, ctx, ws.system);
     clock.lap(times.assemble);
     // A non-associated plastic block makes the system unsymmetric: KLU then, and CHOLMOD's
     // factor (which no longer follows the contact springs) is rebuilt when next used.
@@ -216,9 +216,9 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
       return r;
     }
     r.d = *solved;
-    const std::vector<SpringState> before = spring_states(ws.contacts);
-    contacts = update_contact_modes(world, ws.contacts, r.d, ctx);
-    spring_changes(world, ws.contacts, before, ctx, ws.springs_added, ws.springs_removed);
+    const std::vector<SpringState> before = spring_states(world.contacts);
+    contacts = update_contact_modes(world, world.contacts, r.d, ctx);
+    spring_changes(world, world.contacts, before, ctx, ws.springs_added, ws.springs_removed);
     if (treatment == RotationUpdate::FiniteRotation) {
       secants_moved = follow_secant_angles(world, r.d, angles);
       if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
@@ -244,12 +244,11 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
 }
 
 // 4. The checks on a settled step: too large a motion, or a contact deeper than allowed.
-std::optional<CutReason> check_step(const World& world, const StepWorkspace& ws,
-                                    const Eigen::VectorXd& d, const StepContext& ctx,
-                                    double& moved) {
+std::optional<CutReason> check_step(const World& world, const Eigen::VectorXd& d,
+                                    const StepContext& ctx, double& moved) {
   moved = max_vertex_displacement(world, d);
   if (moved > ctx.allowed_displacement) return CutReason::Displacement;
-  if (max_penetration(ws.contacts) > world.allowed_penetration) return CutReason::Penetration;
+  if (max_penetration(world.contacts) > world.allowed_penetration) return CutReason::Penetration;
   return std::nullopt;
 }
 
@@ -280,18 +279,18 @@ void count_cut(CutReason reason, RunStats& stats) {
 // 5-6. Commit: the energy account's terms (on the step's own T and contacts), the
 //    configuration update by the chosen rotation treatment, strains, stresses, velocities,
 //    time; then the account's balance.
-void commit_step(World& world, StepWorkspace& ws, const Eigen::VectorXd& d,
+void commit_step(World& world, const Eigen::VectorXd& d,
                  const StepContext& ctx, int iterations, RunStats& stats, StageClock& clock,
                  StepEnergy& energy_terms) {
-  energy_terms = step_energy(world, ws.contacts, d, ctx);
+  energy_terms = step_energy(world, world.contacts, d, ctx);
   update_configuration(world, d);
   update_stresses(world);
   update_velocities(world, d, ctx);
   clock.lap(stats.stage_times.update);
   world.time += ctx.dt;
   ++world.step;
-  commit_step_energy(world, energy_terms, ws.contacts, d, ctx.penalty);
-  count_step(ws, iterations, stats);
+  commit_step_energy(world, energy_terms, world.contacts, d, ctx.penalty);
+  count_step(world, iterations, stats);
 }
 
 }  // namespace
@@ -303,8 +302,8 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   double dt = scheduled_dt;
   // 2. Contact detection on the configuration at the step's start; contacts keep the state
   //    they had last step. A redone attempt starts again from these.
-  detect_contacts(world, ws.contacts);
-  const std::vector<Contact> contacts_at_start = ws.contacts;
+  detect_contacts(world, world.contacts);
+  const std::vector<Contact> contacts_at_start = world.contacts;
   clock.lap(stats.stage_times.detect);
   int penetration_cuts = 0;
 
@@ -314,7 +313,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
                                              "the contacts or the motion do not settle")};
     }
     StepContext ctx = make_step_context(world, dt);
-    ws.contacts = contacts_at_start;  // states as they entered the step, no changes counted
+    world.contacts = contacts_at_start;  // states as they entered the step, no changes counted
     // 3. The open-close loop.
     const LoopResult loop = solve_open_close(world, ws, ctx, stats, clock);
     if (!loop.solved) {
@@ -328,11 +327,11 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     //    allowed_penetration) ends the run with a message that says so.
     double moved = 0.0;
     const std::optional<CutReason> cut =
-        loop.unsettled ? loop.unsettled : check_step(world, ws, loop.d, ctx, moved);
+        loop.unsettled ? loop.unsettled : check_step(world, loop.d, ctx, moved);
     if (cut) {
       if (*cut == CutReason::Penetration && ++penetration_cuts > kPenetrationCuts) {
         std::ostringstream what;
-        what << "contacts penetrate " << max_penetration(ws.contacts)
+        what << "contacts penetrate " << max_penetration(world.contacts)
              << " m, more than allowed_penetration " << world.allowed_penetration << " m, even at "
              << dt / scheduled_dt << " of the scheduled time step: the load needs a stiffer "
              << "contact; raise control.penalty (now " << world.penalty
@@ -345,7 +344,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     }
     // 5-6. Commit the step.
     StepEnergy energy_terms;
-    commit_step(world, ws, loop.d, ctx, loop.iterations, stats, clock, energy_terms);
+    commit_step(world, loop.d, ctx, loop.iterations, stats, clock, energy_terms);
     // 7. The energy guard: a step that leaves the run with more energy than loads put in
     //    (beyond the tolerance) ends it; the step is kept, so the output shows it.
     std::string gained = energy_guard_message(world, energy_terms, world.control.energy_tolerance);

@@ -14,12 +14,12 @@
 
 namespace dda {
 
-// What the step loop keeps between steps: buffers and the factorisation's analysis.
+// What the step loop keeps between steps: buffers and the factorisation's analysis (the
+// contacts are the world's).
 struct StepWorkspace {
   BlockSystem block_terms;        // the blocks' own terms, assembled once per attempt
   BlockSystem system;             // block terms plus the contacts of one open-close iteration
   CholmodSolver solver;
-  std::vector<Contact> contacts;  // the contacts and the state they carry between steps
   std::vector<RankOneTerm> springs_added;    // contact springs that appeared in the last
   std::vector<RankOneTerm> springs_removed;  // open-close iteration, and those that went
 };

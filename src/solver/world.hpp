@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "contact/contact.hpp"
 #include "contact/joint_law.hpp"
 #include "kinematics/polygon.hpp"
 #include "kinematics/types.hpp"
@@ -117,6 +118,10 @@ struct World {
   std::vector<JointLaw> joint_laws;
   std::unordered_map<std::uint64_t, int> pair_joint;  // key pair_key(i, j), i < j
   int dof_count = 0;     // unknowns in the global system (6 per free block)
+
+  // The contacts of the present configuration and the state they carry from step to step
+  // (mode, anchor, bond; contact/carry_over.hpp). Detected again at the start of every step.
+  std::vector<Contact> contacts;
 
   double time = 0.0;  // s
   int step = 0;       // completed steps

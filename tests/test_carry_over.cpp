@@ -1,0 +1,56 @@
+// contact/carry_over: what a contact keeps from one step to the next (a pure function).
+#include <catch2/catch.hpp>
+
+#include "contact/carry_over.hpp"
+
+using namespace dda;
+
+namespace {
+
+Contact contact(int vertex, double gap, int joint = 0) {
+  Contact c;
+  c.key = {1, vertex, 0, 2};
+  c.joint = joint;
+  c.gap = gap;
+  c.t = 0.25 * vertex;
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("carry_over: a known contact keeps its state, a new one starts by its gap",
+          "[contact][carry]") {
+  const std::vector<JointLaw> laws = {{0.5, 0.0, 0.0}, {0.5, 1e5, 0.0}};
+  Contact old = contact(0, -1e-6);
+  old.mode = ContactMode::Slide;
+  old.slide_sign = -1;
+  old.t_lock = 0.4;
+  old.bonded = false;
+  old.normal_force = 123.0;
+  old.predicted_slip = 2e-4;
+  const std::vector<Contact> previous = {old};
+
+  // Found again (fresh geometry, default state), plus a new closed and a new open one.
+  std::vector<Contact> found = {contact(0, -2e-6), contact(1, 0.0, 1), contact(2, 1e-3, 1)};
+  carry_over(previous, found, 1e-12, true, laws);
+  CHECK(found[0].mode == ContactMode::Slide);
+  CHECK(found[0].slide_sign == -1);
+  CHECK(found[0].t_lock == 0.4);
+  CHECK(found[0].normal_force == 123.0);
+  CHECK(found[0].predicted_slip == 2e-4);
+  CHECK(found[0].gap == -2e-6);  // the geometry is this step's
+  // New and closed: locked where it is, bonded on the first step since its joint has cohesion.
+  CHECK(found[1].mode == ContactMode::Lock);
+  CHECK(found[1].t_lock == found[1].t);
+  CHECK(found[1].bonded);
+  // New and open: open, unbonded.
+  CHECK(found[2].mode == ContactMode::Open);
+  CHECK_FALSE(found[2].bonded);
+
+  // After the first step, a new closed contact is not bonded (bonds form at the start or
+  // when a stage asks, contact/bonding.hpp).
+  std::vector<Contact> later = {contact(1, 0.0, 1)};
+  carry_over({}, later, 1e-12, false, laws);
+  CHECK(later[0].mode == ContactMode::Lock);
+  CHECK_FALSE(later[0].bonded);
+}
