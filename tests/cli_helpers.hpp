@@ -80,4 +80,14 @@ inline bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
+// A bad input file for the reader tests: its name in the test, its text, where the error
+// must be reported (the place printed right after the file name) and words the message must
+// contain. Shared by the scene, stage and material-point input tests.
+struct BadInput {
+  std::string name;
+  std::string text;
+  std::string place;
+  std::vector<std::string> words;
+};
+
 }  // namespace dda::test

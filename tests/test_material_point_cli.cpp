@@ -320,12 +320,7 @@ std::string without(const std::string& text, const std::string& pointer) {
   return document.dump(2);
 }
 
-struct BadSpec {
-  std::string name;
-  std::string text;
-  std::string place;
-  std::vector<std::string> words;
-};
+using BadSpec = dda::test::BadInput;
 
 std::vector<BadSpec> bad_specs() {
   const std::string& s = kValidSpec;

@@ -108,14 +108,7 @@ std::string with(const std::string& text, const std::string& pointer,
   return document.dump(2);
 }
 
-// A bad scene, where its error must be reported (the place, printed right after the file
-// name) and words the message must contain.
-struct BadScene {
-  std::string name;
-  std::string text;
-  std::string place;
-  std::vector<std::string> words;
-};
+using BadScene = dda::test::BadInput;
 
 std::vector<BadScene> bad_scenes() {
   const std::string& s = kValidScene;

@@ -159,12 +159,7 @@ std::string edit(const std::string& text, const std::string& from, const std::st
   return text.substr(0, at) + to + text.substr(at + from.size());
 }
 
-struct BadScene {
-  std::string name;
-  std::string text;
-  std::string place;
-  std::vector<std::string> words;
-};
+using BadScene = dda::test::BadInput;
 
 std::vector<BadScene> bad_staged_scenes() {
   const std::string& s = kStagedScene;
