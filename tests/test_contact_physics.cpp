@@ -363,3 +363,33 @@ TEST_CASE("a bonded joint holds a hanging block until the load exceeds its stren
   INFO("drop at 110 % " << fell << " m");
   CHECK(fell > 0.01);
 }
+
+TEST_CASE("static analysis: a block slips half a degree past its friction angle and holds half "
+          "a degree below it", "[contact]") {
+  // Dynamic coefficient 0: velocities are dropped every step, so each step moves a sliding
+  // block by a dt^2 / 2 with a = g (sin a - tan phi cos a), N a dt^2 / 2 after N steps
+  // (0.5 degree past 30: a = 0.0989 m/s^2, 1.48 mm in 300 steps of 0.01 s).
+  const double phi = 30.0;
+  const int steps = 300;
+  const double dt = 0.01;
+  for (const double slope : {phi + 0.5, phi - 0.5}) {
+    Scene s = test::block_on_incline(slope, phi, 1.0, 0.5, dt, steps * dt);
+    s.control.dynamic_coefficient = 0.0;
+    World world = make_world(s);
+    const Vec2 c0 = world.blocks[1].moments.centroid;
+    const RunStats stats = run(world, [](const World&, const RunStats&) { return true; });
+    REQUIRE_FALSE(stats.diverged);
+    const double a = slope * M_PI / 180.0;
+    const double slid = (c0 - world.blocks[1].moments.centroid).dot(Vec2(std::cos(a), std::sin(a)));
+    const double accel = 9.81 * (std::sin(a) - std::tan(phi * M_PI / 180.0) * std::cos(a));
+    INFO("slope " << slope << ": slid " << slid << " m");
+    if (accel > 0.0) {
+      // 2 %: the first steps compress the contact springs (m g cos a / 2p, 1e-6 m) before the
+      // block slides, and the elastic block shears a little under the friction.
+      CHECK_THAT(slid, Catch::Matchers::WithinRel(steps * accel * dt * dt / 2.0, 0.02));
+    } else {
+      // Held: it moves only by its springs' compliance (1e-6 m scale).
+      CHECK(std::abs(slid) < 1e-5);
+    }
+  }
+}

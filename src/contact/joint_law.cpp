@@ -26,7 +26,7 @@ ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const Join
       }
       return {ContactMode::Lock, 0, false, true};
     case ContactMode::Lock:
-      if (std::abs(trial.shear_force) > law.tan_phi * trial.normal_force + trial.shear_tolerance) {
+      if (std::abs(trial.shear_force) > law.tan_phi * trial.normal_force) {
         return {ContactMode::Slide, slip_sign_of_force(trial.shear_force), false, false};
       }
       return {ContactMode::Lock, 0, false, false};

@@ -29,12 +29,6 @@ struct ContactTrial {
   // that carry almost nothing (a brick's side against its neighbour) chatter between open,
   // locked and sliding at nanometre gaps and the open-close loop never settles.
   double open_tolerance = 0.0;
-  // A locked contact slides only when its shear force exceeds friction by more than this
-  // (N): the shear spring's force at the slip tolerance, so that locking and sliding have
-  // the same hysteresis. Without it a contact that carries next to nothing (a brick's side
-  // against its neighbour, N ~ 0) slides on any round-off shear, reverses, locks, and keeps
-  // a settled wall's open-close loop going.
-  double shear_tolerance = 0.0;
 };
 
 struct ContactDecision {

@@ -174,7 +174,6 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     trial.slip = evaluate(world, c, relative_along(world, ctx, c, p0, c.tangent), d);
     trial.slip_tolerance = kSlipToleranceShare * world.allowed_penetration;
     trial.open_tolerance = kOpenToleranceShare * world.allowed_penetration;
-    trial.shear_tolerance = ks * trial.slip_tolerance;
     if (c.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.t_lock);
       const double shear = c.tangent.dot(c.vertex - anchor) +
