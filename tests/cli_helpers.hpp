@@ -90,4 +90,15 @@ struct BadInput {
   std::vector<std::string> words;
 };
 
+// `text` with its one occurrence of `from` replaced by `to`; a test's edit of a valid input
+// into a bad one. Throws if `from` is missing or occurs more than once (the edit would be
+// ambiguous).
+inline std::string edit(const std::string& text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  if (at == std::string::npos || text.find(from, at + 1) != std::string::npos) {
+    throw std::logic_error("test edit: \"" + from + "\" must occur exactly once");
+  }
+  return text.substr(0, at) + to + text.substr(at + from.size());
+}
+
 }  // namespace dda::test

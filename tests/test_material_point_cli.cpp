@@ -299,13 +299,7 @@ const std::string kValidSpec = R"json({
 }
 )json";
 
-std::string edit(const std::string& text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  if (at == std::string::npos || text.find(from, at + 1) != std::string::npos) {
-    throw std::logic_error("test edit: \"" + from + "\" must occur exactly once");
-  }
-  return text.substr(0, at) + to + text.substr(at + from.size());
-}
+using dda::test::edit;
 
 std::string with(const std::string& text, const std::string& pointer, const nlohmann::json& value) {
   nlohmann::json document = nlohmann::json::parse(text);

@@ -184,8 +184,11 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     } else if (c.mode == ContactMode::Slide) {
       trial.shear_force = -c.slide_sign * world.joint_laws[c.joint].tan_phi * c.normal_force;
     }
+    const auto differs = [&c](const ContactDecision& d) {
+      return d.mode != c.mode || d.slide_sign != c.slide_sign || d.bonded != c.bonded;
+    };
     ContactDecision next = decide_contact_mode(c, trial, world.joint_laws[c.joint]);
-    bool changes = next.mode != c.mode || next.slide_sign != c.slide_sign || next.bonded != c.bonded;
+    bool changes = differs(next);
     const bool wants_to_open = changes && next.mode == ContactMode::Open;
     if (changes && !change_allowed(c, next, kFreeModeChanges) && wants_to_open) {
       // Held closed although it would open: it must still obey the closed contact's rules
@@ -193,7 +196,7 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
       ContactTrial closed = trial;
       closed.new_gap = std::min(trial.new_gap, 0.0);
       next = decide_contact_mode(c, closed, world.joint_laws[c.joint]);
-      changes = next.mode != c.mode || next.slide_sign != c.slide_sign || next.bonded != c.bonded;
+      changes = differs(next);
     }
     if (changes && change_allowed(c, next, kFreeModeChanges)) {
       ++result.changed;

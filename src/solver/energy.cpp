@@ -27,13 +27,15 @@ double complementary_density(const Vec4& s, double young, double poisson) {
   return (normal + 2.0 * (1.0 + poisson) * s[3] * s[3]) / (2.0 * young);
 }
 
+// A plastic block's stress with its out-of-plane component, (xx, yy, zz, xy).
+Vec4 stress4(const Block& b) { return Vec4(b.stress[0], b.stress[1], b.szz, b.stress[2]); }
+
 }  // namespace
 
 double block_strain_energy(const World& world, const Block& b) {
   if (!b.plastic) return 0.5 * b.moments.area * b.strain.dot(b.elastic * b.strain);
   const Vec3 s0 = initial_stress_now(world, b);
-  const Vec4 ds(b.stress[0] - s0[0], b.stress[1] - s0[1], b.szz - b.initial_stress_4[2],
-                b.stress[2] - s0[2]);
+  const Vec4 ds = stress4(b) - Vec4(s0[0], s0[1], b.initial_stress_4[2], s0[2]);
   return b.moments.area *
          complementary_density(ds, b.material_parameters.young, b.material_parameters.poisson);
 }
@@ -84,7 +86,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     // the work of s_end on de falls short of the stored energy's rise by A/2 de^T D de.
     if (b.plastic) {
       s.plastic_elastic_before[i] = block_strain_energy(world, b);
-      s.plastic_stress_before[i] = Vec4(b.stress[0], b.stress[1], b.szz, b.stress[2]);
+      s.plastic_stress_before[i] = stress4(b);
     } else {
       s.damping_dissipation += 0.5 * area * de.dot(b.elastic * de);
     }
@@ -156,7 +158,7 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
     // (zero plastic work for a step that stays elastic); the latter goes to damping.
     const Vec3 de = d.segment<3>(b.first_dof + kEx);
     const Vec3 s0 = initial_stress_now(world, b);
-    const Vec4 ds = Vec4(b.stress[0], b.stress[1], b.szz, b.stress[2]) - step.plastic_stress_before[i];
+    const Vec4 ds = stress4(b) - step.plastic_stress_before[i];
     const double implicit = b.moments.area * complementary_density(ds, b.material_parameters.young,
                                                                    b.material_parameters.poisson);
     led.damping_dissipation += implicit;
@@ -165,10 +167,9 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
                                implicit;
   }
   led.contact_energy = contact_energy(world, contacts, penalty);
-  const double now = scene_energy(world).total();
-  led.remainder = now - led.initial_total - led.load_work + led.friction_dissipation +
-                  led.plastic_dissipation + led.damping_dissipation;
   const EnergyTotals totals = scene_energy(world);
+  led.remainder = totals.total() - led.initial_total - led.load_work + led.friction_dissipation +
+                  led.plastic_dissipation + led.damping_dissipation;
   led.scale = std::max({led.scale, totals.kinetic, std::abs(led.load_work)});
   if (led.remainder > led.remainder_max) {
     led.remainder_max = led.remainder;
