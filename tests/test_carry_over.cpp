@@ -54,3 +54,33 @@ TEST_CASE("carry_over: a known contact keeps its state, a new one starts by its 
   CHECK(later[0].mode == ContactMode::Lock);
   CHECK_FALSE(later[0].bonded);
 }
+
+TEST_CASE("carry_over: a change the last step deferred is made as the contact is found again",
+          "[contact][carry]") {
+  const std::vector<JointLaw> laws = {{0.5, 0.0, 0.0}};
+  // Locked with its anchor at 0.4, left to slide towards -tangent; open, left to lock;
+  // sliding, left to open.
+  Contact to_slide = contact(0, -1e-6);
+  to_slide.mode = ContactMode::Lock;
+  to_slide.t_lock = 0.4;
+  to_slide.deferred = ModeChange{ContactMode::Slide, -1, false};
+  Contact to_lock = contact(1, -1e-9);
+  to_lock.deferred = ModeChange{ContactMode::Lock, 0, true};
+  Contact to_open = contact(2, 1e-9);
+  to_open.mode = ContactMode::Slide;
+  to_open.slide_sign = 1;
+  to_open.normal_force = 50.0;
+  to_open.predicted_slip = 1e-5;
+  to_open.deferred = ModeChange{ContactMode::Open, 0, false};
+  std::vector<Contact> found = {contact(0, -1e-6), contact(1, -2e-9), contact(2, 2e-9)};
+  found[1].t = 0.3;  // the vertex has moved along the edge since the last step
+  carry_over({to_slide, to_lock, to_open}, found, 1e-12, false, laws);
+  CHECK(found[0].mode == ContactMode::Slide);
+  CHECK(found[0].slide_sign == -1);
+  CHECK(found[1].mode == ContactMode::Lock);
+  CHECK(found[1].t_lock == 0.3);  // anchored where the vertex is now
+  CHECK(found[2].mode == ContactMode::Open);
+  CHECK(found[2].normal_force == 0.0);
+  CHECK(found[2].predicted_slip == 0.0);
+  for (const Contact& c : found) CHECK_FALSE(c.deferred.has_value());
+}

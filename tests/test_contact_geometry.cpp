@@ -772,6 +772,49 @@ TEST_CASE("joint law: open, lock and slide transitions of an unbonded contact",
   }
 }
 
+TEST_CASE("joint law: which changes lie within the contact resolution", "[contact-geometry]") {
+  // tan phi 0.5, shear spring 1e10 N/m, resolution 1e-8 m: a closing contact may penetrate
+  // 1e-8 m, an opening one open 1e-8 m, a lock's spring exceed friction by 1e10 x 1e-8 = 100 N,
+  // a slide reverse by 1e-8 m. Values sit a factor 2 either side of each threshold.
+  const JointLaw law{0.5, 0.0, 0.0};
+  const double ks = 1e10, res = 1e-8;
+  const auto within = [&](const Contact& c, const ContactTrial& t) {
+    return change_within_resolution(c, decide_contact_mode(c, t, law), t, law, ks, res);
+  };
+  ContactTrial t;
+  SECTION("closing: by the penetration") {
+    t.new_gap = -0.5e-8;
+    CHECK(within(contact_in(ContactMode::Open), t));
+    t.new_gap = -2e-8;
+    CHECK_FALSE(within(contact_in(ContactMode::Open), t));
+  }
+  SECTION("opening: by the gap") {
+    t.new_gap = 0.5e-8;
+    CHECK(within(contact_in(ContactMode::Lock), t));
+    CHECK(within(contact_in(ContactMode::Slide, 1), t));
+    t.new_gap = 2e-8;
+    CHECK_FALSE(within(contact_in(ContactMode::Lock), t));
+  }
+  SECTION("lock -> slide: by the spring's force past friction over ks") {
+    // N = 1000: friction 500; shear 550 exceeds it by 50 N (0.5e-8 m of stretch), 700 by 200 N.
+    CHECK(within(contact_in(ContactMode::Lock), closed(1000, 550)));
+    CHECK_FALSE(within(contact_in(ContactMode::Lock), closed(1000, -700)));
+  }
+  SECTION("slide -> lock: by the reversed slip") {
+    CHECK(within(contact_in(ContactMode::Slide, 1), closed(1000, 0, -0.5e-8, 1e-10)));
+    CHECK_FALSE(within(contact_in(ContactMode::Slide, 1), closed(1000, 0, -2e-8, 1e-10)));
+  }
+  SECTION("a bond that breaks is never within it") {
+    const JointLaw bonding{0.5, 1e5, 2e5};
+    const Contact c = contact_in(ContactMode::Lock, 0, true, 0.5);
+    t.new_gap = 0.5e-8;
+    t.tension = 2e5;  // beyond the capacity 1e5 N: breaks and opens, by a gap below res
+    const ContactDecision d = decide_contact_mode(c, t, bonding);
+    REQUIRE(d.mode == ContactMode::Open);
+    CHECK_FALSE(change_within_resolution(c, d, t, bonding, ks, res));
+  }
+}
+
 TEST_CASE("joint law: a bonded contact holds below its strength and breaks for good",
           "[contact-geometry]") {
   // tan phi 0.5, cohesion 1e5 Pa, tensile strength 2e5 Pa, contact length 0.5 m:

@@ -31,6 +31,14 @@ void carry_over(const std::vector<Contact>& previous, std::vector<Contact>& foun
       c.bonded = o.bonded;
       c.normal_force = o.normal_force;
       c.predicted_slip = o.predicted_slip;  // the last step's slip, if sliding
+      if (o.deferred) {
+        // The change the last step left for this one (Contact::deferred).
+        c.mode = o.deferred->mode;
+        c.slide_sign = o.deferred->slide_sign;
+        if (o.deferred->relock) c.t_lock = c.t;
+        if (c.mode != ContactMode::Slide) c.predicted_slip = 0.0;
+        if (c.mode == ContactMode::Open) c.normal_force = 0.0;
+      }
     } else if (c.gap <= touching) {
       c.mode = ContactMode::Lock;
       c.t_lock = c.t;

@@ -3,12 +3,21 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "kinematics/types.hpp"
 
 namespace dda {
 
 enum class ContactMode : std::uint8_t { Open, Slide, Lock };
+
+// A contact's next mode: its slip direction if sliding, and whether a locked one takes a
+// new shear anchor where the vertex is.
+struct ModeChange {
+  ContactMode mode = ContactMode::Open;
+  int slide_sign = 0;
+  bool relock = false;
+};
 
 struct ContactKey {
   int vertex_block = -1;
@@ -50,6 +59,10 @@ struct Contact {
   double shear_force = 0.0;   // along `tangent`, on the vertex (N per metre)
   double slip = 0.0;          // the step's tangential displacement of the vertex against the edge (m)
   int mode_changes = 0;       // within this attempt's open-close loop
+  // A change of mode the accepted solve asked for but did not wait for, because it was
+  // within the contact resolution (solver/contact_assembly.cpp, kDeferShare): the contact
+  // starts the next step in this mode (carry_over), anchored there if it locks.
+  std::optional<ModeChange> deferred;
 
   Vec2 edge_point(double s) const { return edge_start + s * (edge_end - edge_start); }
   // Where the normal gap and the friction are measured (see predicted_slip; only a

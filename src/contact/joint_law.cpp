@@ -62,4 +62,16 @@ bool change_allowed(const Contact& c, const ContactDecision& next, int free_chan
   return static_cast<int>(next.mode) > static_cast<int>(c.mode);
 }
 
+bool change_within_resolution(const Contact& c, const ContactDecision& next,
+                              const ContactTrial& trial, const JointLaw& law, double ks,
+                              double resolution) {
+  if (c.bonded || next.bonded) return false;
+  if (c.mode == ContactMode::Open) return -trial.new_gap <= resolution;  // closing
+  if (next.mode == ContactMode::Open) return trial.new_gap <= resolution;  // opening
+  if (c.mode == ContactMode::Lock) {  // lock -> slide
+    return std::abs(trial.shear_force) - law.tan_phi * trial.normal_force <= ks * resolution;
+  }
+  return std::abs(trial.slip) <= resolution;  // sliding: its slip reversed
+}
+
 }  // namespace dda

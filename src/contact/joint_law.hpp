@@ -61,4 +61,15 @@ ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
 // while a closed or locked spring is conservative and its energy is accounted.
 bool change_allowed(const Contact& c, const ContactDecision& next, int free_changes);
 
+// Whether the change c -> next that `trial` asks for lies within the contact resolution
+// `resolution` (m): the solve went past the change's threshold by no more than that. A
+// closing contact penetrates at most `resolution`; an opening one opens at most that; a
+// locked one's shear spring (stiffness ks, N/m) is stretched past the friction limit by at
+// most that; a sliding one's slip reversed by at most that. A bond that forms or breaks is
+// never within it. Such a change need not hold up the open-close loop
+// (solver/contact_assembly.cpp, kDeferShare).
+bool change_within_resolution(const Contact& c, const ContactDecision& next,
+                              const ContactTrial& trial, const JointLaw& law, double ks,
+                              double resolution);
+
 }  // namespace dda

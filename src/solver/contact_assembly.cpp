@@ -27,6 +27,19 @@ constexpr int kFreeModeChanges = 2;
 // a spring that pulls a vertex back across a gap it started with (a box of tumbling blocks
 // gained 1.5 % of its energy scale so) is beyond it and cuts the step.
 constexpr double kHeldTensionShare = 1e-3;
+// The contact resolution, as a share of the allowed penetration: a change of mode that the
+// latest solve asks for by no more than this (a penetration, a gap, a spring's stretch past
+// the friction limit or a reversed slip this small) does not, on its own, make the
+// open-close loop go on. When every change a solve asks for is that small, the step is
+// accepted and those contacts start the next step in their new mode (Contact::deferred;
+// Shi's code and ntdda go further and never iterate on a change of shear mode). Without it
+// the side contacts of a settled wall, which carry almost nothing, flip between open,
+// locked and sliding at nanometre scales every step. What the accepted step gets wrong is
+// bounded by the resolution delta: a contact left open that penetrates delta brings
+// p delta^2 / 2 into the next step, a sliding one that reverses by delta lets friction push
+// forward over delta, and a lock held past the friction limit stores at most (ks delta)^2 /
+// 2 ks more (conservatively); the energy account shows them.
+constexpr double kDeferShare = 1e-5;
 
 // How a contact sees the unknowns: a scalar measure g = g0 + a.d_v + b.d_e, with d_v the
 // vertex block's increments and d_e the edge block's.
@@ -113,6 +126,7 @@ class ContactAssembler {
 
 Vec2 projection_point(const Contact& c) { return c.measure_point(); }
 
+
 RankOneTerm rank_one(const World& w, const Contact& c, const Measure& m, double k) {
   RankOneTerm term;
   const double scale = std::sqrt(k);
@@ -165,7 +179,17 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
   const double ks = kShearSpringRatio * ctx.penalty;
   ContactUpdate result;
   const double tension_band = kHeldTensionShare * world.allowed_penetration;
-  for (Contact& c : contacts) {
+  const double resolution = kDeferShare * world.allowed_penetration;
+  // First every contact's decision on this solve, then (once it is known whether the loop
+  // goes on) the changes.
+  struct Pending {
+    ContactDecision next;
+    bool changes = false;
+    bool deferrable = false;
+  };
+  std::vector<Pending> pending(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact& c = contacts[i];
     const Vec2 p0 = projection_point(c);
     ContactTrial trial;
     trial.new_gap = c.gap + evaluate(world, c, relative_along(world, ctx, c, p0, c.normal), d);
@@ -174,6 +198,7 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     trial.slip = evaluate(world, c, relative_along(world, ctx, c, p0, c.tangent), d);
     trial.slip_tolerance = kSlipToleranceShare * world.allowed_penetration;
     trial.open_tolerance = kOpenToleranceShare * world.allowed_penetration;
+    const JointLaw& law = world.joint_laws[c.joint];
     if (c.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.t_lock);
       const double shear = c.tangent.dot(c.vertex - anchor) +
@@ -182,12 +207,12 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     } else if (c.mode == ContactMode::Open) {
       trial.shear_force = -ks * trial.slip;
     } else if (c.mode == ContactMode::Slide) {
-      trial.shear_force = -c.slide_sign * world.joint_laws[c.joint].tan_phi * c.normal_force;
+      trial.shear_force = -c.slide_sign * law.tan_phi * c.normal_force;
     }
-    const auto differs = [&c](const ContactDecision& d) {
-      return d.mode != c.mode || d.slide_sign != c.slide_sign || d.bonded != c.bonded;
+    const auto differs = [&c](const ContactDecision& next) {
+      return next.mode != c.mode || next.slide_sign != c.slide_sign || next.bonded != c.bonded;
     };
-    ContactDecision next = decide_contact_mode(c, trial, world.joint_laws[c.joint]);
+    ContactDecision next = decide_contact_mode(c, trial, law);
     bool changes = differs(next);
     const bool wants_to_open = changes && next.mode == ContactMode::Open;
     if (changes && !change_allowed(c, next, kFreeModeChanges) && wants_to_open) {
@@ -195,30 +220,51 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
       // (a sliding one whose slip reverses locks), else its friction pushes forward.
       ContactTrial closed = trial;
       closed.new_gap = std::min(trial.new_gap, 0.0);
-      next = decide_contact_mode(c, closed, world.joint_laws[c.joint]);
+      next = decide_contact_mode(c, closed, law);
       changes = differs(next);
     }
-    if (changes && change_allowed(c, next, kFreeModeChanges)) {
-      ++result.changed;
-      ++c.mode_changes;
-      c.mode = next.mode;
-      c.slide_sign = next.slide_sign;
-      c.bonded = next.bonded;
-      if (next.relock) c.t_lock = c.t;
-    } else if (wants_to_open && trial.new_gap > tension_band) {
-      ++result.held_in_tension;
-    }
+    Pending& p = pending[i];
+    p.next = next;
+    p.changes = changes && change_allowed(c, next, kFreeModeChanges);
+    if (!p.changes && wants_to_open && trial.new_gap > tension_band) ++result.held_in_tension;
+    p.deferrable = p.changes && change_within_resolution(c, next, trial, law, ks, resolution);
     c.new_gap = trial.new_gap;
     c.slip = trial.slip;
+    c.normal_force = trial.normal_force;
+    c.shear_force = trial.shear_force;
+  }
+  // Changes within the resolution alone do not make the loop go on: if nothing else
+  // changed, the step ends on this solve and those contacts start the next step in their
+  // new mode; if the loop goes on anyway, they take it from the next iteration.
+  int others = 0;
+  for (const Pending& p : pending) others += p.changes && !p.deferrable ? 1 : 0;
+  const bool defer = others == 0;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact& c = contacts[i];
+    const Pending& p = pending[i];
+    c.deferred.reset();
+    if (p.changes && p.deferrable && defer) {
+      c.deferred = ModeChange{p.next.mode, p.next.slide_sign, p.next.relock};
+      ++result.deferred;
+    } else if (p.changes) {
+      if (!p.deferrable) ++result.changed;
+      ++c.mode_changes;
+      c.mode = p.next.mode;
+      c.slide_sign = p.next.slide_sign;
+      c.bonded = p.next.bonded;
+      if (p.next.relock) c.t_lock = c.t;
+    }
     // A sliding contact's normal spring moves to where the vertex now slides to (see
     // Contact::predicted_slip); the next iteration measures there.
     // (Bounded by the step's displacement limit: an iteration far from the solution must not
     // carry the measure point off the edge; a larger slip is cut by the displacement check.)
     const double reach = 2.0 * ctx.allowed_displacement;
-    c.predicted_slip = c.mode == ContactMode::Slide ? std::clamp(trial.slip, -reach, reach) : 0.0;
-    c.normal_force = c.mode == ContactMode::Open ? 0.0 : trial.normal_force;
+    c.predicted_slip = c.mode == ContactMode::Slide ? std::clamp(c.slip, -reach, reach) : 0.0;
     // (A held contact keeps its mode, but its forces follow the latest solve.)
-    c.shear_force = c.mode == ContactMode::Open ? 0.0 : trial.shear_force;
+    if (c.mode == ContactMode::Open) {
+      c.normal_force = 0.0;
+      c.shear_force = 0.0;
+    }
   }
   return result;
 }
