@@ -5,6 +5,7 @@
 #include "contact_scenes.hpp"
 #include "solver/energy.hpp"
 #include "solver/run.hpp"
+#include "solver/step.hpp"
 #include "solver/world.hpp"
 
 using namespace dda;
@@ -392,4 +393,33 @@ TEST_CASE("static analysis: a block slips half a degree past its friction angle 
       CHECK(std::abs(slid) < 1e-5);
     }
   }
+}
+
+TEST_CASE("a vertex that a step's linearised gap sees open but the update puts inside the "
+          "other block cuts the step", "[contact]") {
+  // A fixed wedge's apex at the origin, 1 mm below the bottom of a free 4 m bar that moves
+  // at 10 m/s along x while turning at 5 rad/s, no gravity, dt 0.01 s. The linearised gap is
+  // measured at the bar's material point above the apex: it does not move vertically
+  // (it is below the centroid), so the gap stays 1 mm open. But the bar slides s = 0.1 m
+  // over the apex while turning by 0.05 rad, so the point that ends above the apex has gone
+  // down by about 0.05 x 0.1 = 5 mm: the apex would end 4 mm inside the bar.
+  Scene s = test::base_scene(1, 0.01);
+  s.gravity = Vec2::Zero();
+  s.joint_materials[0].friction_angle = 30.0;
+  BlockSpec wedge = test::block({{-0.5, -1.0}, {0.5, -1.0}, {0.0, 0.0}});
+  wedge.fixed = true;
+  s.blocks.push_back(wedge);
+  s.blocks.push_back(test::block(test::rectangle(-2.0, 1e-3, 4.0, 0.2)));
+  s.blocks[1].velocity = Vec3(10.0, 0.0, 5.0);
+  World world = make_world(s);
+  StepWorkspace ws;
+  RunStats stats;
+  REQUIRE(advance_step(world, ws, stats).ok);
+  CHECK(stats.cuts_for_overshoot >= 1);
+  // The accepted step leaves the apex outside the bar, or inside by no more than the check's
+  // limit (1 % of the allowed penetration): measured on the moved bar's bottom edge.
+  const Polygon& bar = world.blocks[1].vertices;
+  const Vec2 edge = (bar[1] - bar[0]).normalized();
+  const double gap = (Vec2::Zero() - bar[0]).dot(Vec2(edge.y(), -edge.x()));
+  CHECK(gap >= -0.01 * world.allowed_penetration);
 }

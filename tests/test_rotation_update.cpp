@@ -220,6 +220,30 @@ TEST_CASE("pins and point loads follow the same map as the vertices in every tre
   }
 }
 
+TEST_CASE("vertex_after places every vertex where update_configuration moves it, in every "
+          "treatment", "[rotation]") {
+  // The step's overshoot check (solver/step.cpp) asks where a vertex will be without moving
+  // it; it must be the update's own placement, after steps that have accumulated rotation,
+  // strain and translation.
+  for (RotationUpdate u : {RotationUpdate::Original, RotationUpdate::SecondOrder,
+                           RotationUpdate::PostAdjustment, RotationUpdate::LocalFrame,
+                           RotationUpdate::LocalFrameAsPrinted, RotationUpdate::SinVariable,
+                           RotationUpdate::FiniteRotation}) {
+    INFO(rotation_update_name(u));
+    World w = square_world(u);
+    Vec6 db;
+    db << 0.01, -0.02, 0.3, 2e-4, -1e-4, 3e-4;
+    for (int k = 0; k < 5; ++k) {
+      const Block before = w.blocks[0];
+      apply_step(w, db);
+      for (std::size_t i = 0; i < before.vertices.size(); ++i) {
+        // The same arithmetic up to the order of operations: round-off of unit coordinates.
+        CHECK((vertex_after(u, before, i, db) - w.blocks[0].vertices[i]).norm() <= 1e-14);
+      }
+    }
+  }
+}
+
 // ---- 2. a freely spinning octagon ----
 
 namespace {

@@ -153,6 +153,33 @@ void move_blocks(World& world, const Eigen::VectorXd& d) {
 
 }  // namespace
 
+Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db) {
+  if (b.fixed) return b.vertices[k];
+  const Vec2 offset = b.vertices[k] - b.moments.centroid;
+  switch (treatment) {
+    case RotationUpdate::Original: return b.vertices[k] + shi_t().at(offset) * db;
+    case RotationUpdate::SecondOrder: return b.vertices[k] + second_order_displacement(offset, db);
+    case RotationUpdate::PostAdjustment:
+      return b.vertices[k] + finite_rotation_displacement(offset, db);
+    case RotationUpdate::SinVariable: return b.vertices[k] + sine_column_displacement(b, offset, db);
+    case RotationUpdate::LocalFrame:
+    case RotationUpdate::LocalFrameAsPrinted:
+    case RotationUpdate::FiniteRotation: {
+      // rebuild_in_frame's rule: the step's r0 and strain increment (turned by the
+      // mid-step angle) added, then x = xc + A (X - Xc).
+      const double rotation = b.rotation + db[kR0];
+      const Vec3 local_strain =
+          b.local_strain + strain_in_turned_frame(db.segment<3>(kEx), b.rotation + 0.5 * db[kR0]);
+      const Mat2 a = treatment == RotationUpdate::LocalFrameAsPrinted
+                         ? frame_map_as_printed(rotation, local_strain)
+                         : frame_map(rotation, local_strain);
+      return b.initial_centroid + b.translation + db.head<2>() +
+             a * (b.initial_vertices[k] - b.initial_centroid);
+    }
+  }
+  return b.vertices[k];
+}
+
 double max_vertex_displacement(const World& world, const Eigen::VectorXd& d) {
   const LinearT t = shi_t();
   double largest = 0.0;

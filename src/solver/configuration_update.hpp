@@ -27,6 +27,10 @@ double max_vertex_displacement(const World& world, const Eigen::VectorXd& d);
 // Every treatment then records each block's r0 as its last_rotation_increment.
 void update_configuration(World& world, const Eigen::VectorXd& d);
 
+// Where vertex k of block b will be after update_configuration with the block's increments
+// db, without moving anything (the same rule per treatment; tests check that the two agree).
+Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db);
+
 // Stress from total strain (elastic, never added): s = s_initial + D e in the global frame,
 // or, for the local-frame treatments, s_initial + D e^ in the block frame turned to the
 // global frame (Eq. 20). Run after update_configuration.

@@ -26,6 +26,7 @@ struct RunStats {
   int cuts_for_open_close = 0;    //   open-close loop not settled in max_open_close
   int cuts_for_penetration = 0;   //   a contact deeper than allowed_penetration
   int cuts_for_material = 0;      //   a plastic block's return map failed
+  int cuts_for_overshoot = 0;     //   an open contact's vertex ended inside the other block
   long iterations = 0;     // linear solves (assemble + solve passes) in all
   double wall_time_s = 0;  // whole run, seconds
   long open_close_total = 0;  // open-close iterations of accepted steps, summed

@@ -31,6 +31,7 @@ enum class CutReason {
   OpenClose,     // the open-close loop did not settle in max_open_close iterations
   Penetration,   // a contact ended deeper than allowed_penetration
   Material,      // a plastic block's return map failed
+  Overshoot,     // an open contact's vertex ends the step inside the other block
 };
 
 struct StepOutcome {
