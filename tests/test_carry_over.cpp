@@ -22,37 +22,44 @@ TEST_CASE("carry_over: a known contact keeps its state, a new one starts by its 
           "[contact][carry]") {
   const std::vector<JointLaw> laws = {{0.5, 0.0, 0.0}, {0.5, 1e5, 0.0}};
   Contact old = contact(0, -1e-6);
-  old.mode = ContactMode::Slide;
-  old.slide_sign = -1;
-  old.t_lock = 0.4;
-  old.bonded = false;
-  old.normal_force = 123.0;
-  old.predicted_slip = 2e-4;
+  old.state.mode = ContactMode::Slide;
+  old.state.slide_sign = -1;
+  old.state.t_lock = 0.4;
+  old.state.bonded = false;
+  old.state.normal_force = 123.0;
+  old.state.predicted_slip = 2e-4;
+  old.iterate.new_gap = -3e-6;
+  old.iterate.slip = 2e-4;
+  old.iterate.mode_changes = 2;
   const std::vector<Contact> previous = {old};
 
   // Found again (fresh geometry, default state), plus a new closed and a new open one.
   std::vector<Contact> found = {contact(0, -2e-6), contact(1, 0.0, 1), contact(2, 1e-3, 1)};
   carry_over(previous, found, 1e-12, true, laws);
-  CHECK(found[0].mode == ContactMode::Slide);
-  CHECK(found[0].slide_sign == -1);
-  CHECK(found[0].t_lock == 0.4);
-  CHECK(found[0].normal_force == 123.0);
-  CHECK(found[0].predicted_slip == 2e-4);
+  CHECK(found[0].state.mode == ContactMode::Slide);
+  CHECK(found[0].state.slide_sign == -1);
+  CHECK(found[0].state.t_lock == 0.4);
+  CHECK(found[0].state.normal_force == 123.0);
+  CHECK(found[0].state.predicted_slip == 2e-4);
   CHECK(found[0].gap == -2e-6);  // the geometry is this step's
+  // The last step's iteration results are not carried.
+  CHECK(found[0].iterate.new_gap == 0.0);
+  CHECK(found[0].iterate.slip == 0.0);
+  CHECK(found[0].iterate.mode_changes == 0);
   // New and closed: locked where it is, bonded on the first step since its joint has cohesion.
-  CHECK(found[1].mode == ContactMode::Lock);
-  CHECK(found[1].t_lock == found[1].t);
-  CHECK(found[1].bonded);
+  CHECK(found[1].state.mode == ContactMode::Lock);
+  CHECK(found[1].state.t_lock == found[1].t);
+  CHECK(found[1].state.bonded);
   // New and open: open, unbonded.
-  CHECK(found[2].mode == ContactMode::Open);
-  CHECK_FALSE(found[2].bonded);
+  CHECK(found[2].state.mode == ContactMode::Open);
+  CHECK_FALSE(found[2].state.bonded);
 
   // After the first step, a new closed contact is not bonded (bonds form at the start or
   // when a stage asks, contact/bonding.hpp).
   std::vector<Contact> later = {contact(1, 0.0, 1)};
   carry_over({}, later, 1e-12, false, laws);
-  CHECK(later[0].mode == ContactMode::Lock);
-  CHECK_FALSE(later[0].bonded);
+  CHECK(later[0].state.mode == ContactMode::Lock);
+  CHECK_FALSE(later[0].state.bonded);
 }
 
 TEST_CASE("carry_over: a change the last step deferred is made as the contact is found again",
@@ -61,26 +68,26 @@ TEST_CASE("carry_over: a change the last step deferred is made as the contact is
   // Locked with its anchor at 0.4, left to slide towards -tangent; open, left to lock;
   // sliding, left to open.
   Contact to_slide = contact(0, -1e-6);
-  to_slide.mode = ContactMode::Lock;
-  to_slide.t_lock = 0.4;
-  to_slide.deferred = ModeChange{ContactMode::Slide, -1, false};
+  to_slide.state.mode = ContactMode::Lock;
+  to_slide.state.t_lock = 0.4;
+  to_slide.state.deferred = ModeChange{ContactMode::Slide, -1, false};
   Contact to_lock = contact(1, -1e-9);
-  to_lock.deferred = ModeChange{ContactMode::Lock, 0, true};
+  to_lock.state.deferred = ModeChange{ContactMode::Lock, 0, true};
   Contact to_open = contact(2, 1e-9);
-  to_open.mode = ContactMode::Slide;
-  to_open.slide_sign = 1;
-  to_open.normal_force = 50.0;
-  to_open.predicted_slip = 1e-5;
-  to_open.deferred = ModeChange{ContactMode::Open, 0, false};
+  to_open.state.mode = ContactMode::Slide;
+  to_open.state.slide_sign = 1;
+  to_open.state.normal_force = 50.0;
+  to_open.state.predicted_slip = 1e-5;
+  to_open.state.deferred = ModeChange{ContactMode::Open, 0, false};
   std::vector<Contact> found = {contact(0, -1e-6), contact(1, -2e-9), contact(2, 2e-9)};
   found[1].t = 0.3;  // the vertex has moved along the edge since the last step
   carry_over({to_slide, to_lock, to_open}, found, 1e-12, false, laws);
-  CHECK(found[0].mode == ContactMode::Slide);
-  CHECK(found[0].slide_sign == -1);
-  CHECK(found[1].mode == ContactMode::Lock);
-  CHECK(found[1].t_lock == 0.3);  // anchored where the vertex is now
-  CHECK(found[2].mode == ContactMode::Open);
-  CHECK(found[2].normal_force == 0.0);
-  CHECK(found[2].predicted_slip == 0.0);
-  for (const Contact& c : found) CHECK_FALSE(c.deferred.has_value());
+  CHECK(found[0].state.mode == ContactMode::Slide);
+  CHECK(found[0].state.slide_sign == -1);
+  CHECK(found[1].state.mode == ContactMode::Lock);
+  CHECK(found[1].state.t_lock == 0.3);  // anchored where the vertex is now
+  CHECK(found[2].state.mode == ContactMode::Open);
+  CHECK(found[2].state.normal_force == 0.0);
+  CHECK(found[2].state.predicted_slip == 0.0);
+  for (const Contact& c : found) CHECK_FALSE(c.state.deferred.has_value());
 }

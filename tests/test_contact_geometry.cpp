@@ -645,9 +645,9 @@ namespace {
 Contact contact_in(ContactMode mode, int slide_sign = 0, bool bonded = false,
                    double length = 0.0) {
   Contact c;
-  c.mode = mode;
-  c.slide_sign = slide_sign;
-  c.bonded = bonded;
+  c.state.mode = mode;
+  c.state.slide_sign = slide_sign;
+  c.state.bonded = bonded;
   c.length = length;
   return c;
 }

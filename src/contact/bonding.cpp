@@ -7,18 +7,18 @@ namespace dda {
 int bond_closed_contacts(std::vector<Contact>& contacts, const std::vector<JointLaw>& laws) {
   int formed = 0;
   for (Contact& c : contacts) {
-    if (c.mode == ContactMode::Open || c.bonded) continue;
+    if (c.state.mode == ContactMode::Open || c.state.bonded) continue;
     assert(c.joint >= 0 && static_cast<std::size_t>(c.joint) < laws.size());
     const JointLaw& law = laws[static_cast<std::size_t>(c.joint)];
     if (law.cohesion <= 0.0 && law.tensile_strength <= 0.0) continue;
-    if (c.mode == ContactMode::Slide) {
+    if (c.state.mode == ContactMode::Slide) {
       const double edge_length = (c.edge_end - c.edge_start).norm();
-      c.t_lock = c.t + c.slip / edge_length;
-      c.mode = ContactMode::Lock;
-      c.slide_sign = 0;
-      c.predicted_slip = 0.0;  // only a sliding contact measures ahead (contact.hpp)
+      c.state.t_lock = c.t + c.iterate.slip / edge_length;
+      c.state.mode = ContactMode::Lock;
+      c.state.slide_sign = 0;
+      c.state.predicted_slip = 0.0;  // only a sliding contact measures ahead (contact.hpp)
     }
-    c.bonded = true;
+    c.state.bonded = true;
     ++formed;
   }
   return formed;

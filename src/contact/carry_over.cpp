@@ -24,26 +24,23 @@ void carry_over(const std::vector<Contact>& previous, std::vector<Contact>& foun
   for (Contact& c : found) {
     const auto old = by_key.find(c.key);
     if (old != by_key.end()) {
-      const Contact& o = *old->second;
-      c.mode = o.mode;
-      c.slide_sign = o.slide_sign;
-      c.t_lock = o.t_lock;
-      c.bonded = o.bonded;
-      c.normal_force = o.normal_force;
-      c.predicted_slip = o.predicted_slip;  // the last step's slip, if sliding
-      if (o.deferred) {
-        // The change the last step left for this one (Contact::deferred).
-        c.mode = o.deferred->mode;
-        c.slide_sign = o.deferred->slide_sign;
-        if (o.deferred->relock) c.t_lock = c.t;
-        if (c.mode != ContactMode::Slide) c.predicted_slip = 0.0;
-        if (c.mode == ContactMode::Open) c.normal_force = 0.0;
+      // The whole carried state; its predicted slip is the last step's slip, if sliding.
+      c.state = old->second->state;
+      ContactState& s = c.state;
+      if (s.deferred) {
+        // The change the last step left for this one (ContactState::deferred), made now.
+        s.mode = s.deferred->mode;
+        s.slide_sign = s.deferred->slide_sign;
+        if (s.deferred->relock) s.t_lock = c.t;
+        if (s.mode != ContactMode::Slide) s.predicted_slip = 0.0;
+        if (s.mode == ContactMode::Open) s.normal_force = 0.0;
+        s.deferred.reset();
       }
     } else if (c.gap <= touching) {
-      c.mode = ContactMode::Lock;
-      c.t_lock = c.t;
+      c.state.mode = ContactMode::Lock;
+      c.state.t_lock = c.t;
       const JointLaw& law = laws[static_cast<std::size_t>(c.joint)];
-      c.bonded = bond_new_closed && (law.cohesion > 0.0 || law.tensile_strength > 0.0);
+      c.state.bonded = bond_new_closed && (law.cohesion > 0.0 || law.tensile_strength > 0.0);
     }
   }
 }

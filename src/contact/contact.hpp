@@ -1,5 +1,7 @@
-// One vertex-to-edge contact: its identity, its geometry at the start of the step, and the
-// state it carries across steps (open, sliding or locked; the shear spring's anchor; bond).
+// One vertex-to-edge contact: its identity, its geometry at the start of the step, the
+// state it carries across steps (open, sliding or locked; the shear spring's anchor; bond)
+// and the results of the latest open-close iteration, kept apart (ContactState,
+// ContactIterate).
 #pragma once
 
 #include <cstdint>
@@ -27,6 +29,39 @@ struct ContactKey {
   friend bool operator==(const ContactKey&, const ContactKey&) = default;
 };
 
+// What a contact carries from one step to the next: carry_over copies it to the contact
+// found again on the new configuration (and makes the deferred change); update_contact_modes
+// changes it as the open-close loop settles (a bond breaks there); bond_closed_contacts
+// (contact/bonding.hpp) bonds closed contacts, locking a sliding one.
+struct ContactState {
+  ContactMode mode = ContactMode::Open;
+  int slide_sign = 0;     // +1 or -1: slip direction along `tangent` while sliding
+  double t_lock = 0.0;    // edge parameter of the shear spring's anchor while locked
+  bool bonded = false;    // cohesion and tensile strength act while bonded
+  // The slip expected in this step (m, along `tangent`): the last step's. The normal gap and
+  // the friction are measured at the edge point the vertex is expected to reach, not where
+  // it started: a vertex sliding a distance s along an edge that turns by theta sees its gap
+  // change by s theta more than the start point's motion says, and a corner sliding off a
+  // tipping block started every step 24 um deeper than the step had predicted.
+  double predicted_slip = 0.0;
+  // Compression positive (N per metre). Written by each open-close iteration, and carried:
+  // a sliding contact's friction in a step's first iteration uses the last step's.
+  double normal_force = 0.0;
+  // A change of mode the accepted solve asked for but did not wait for, because it was
+  // within the contact resolution (solver/contact_assembly.cpp, kDeferShare): the contact
+  // starts the next step in this mode (carry_over), anchored there if it locks.
+  std::optional<ModeChange> deferred;
+};
+
+// Results of the latest open-close iteration (mode_changes: counted over the loop), written
+// by update_contact_modes; never carried (a contact found again starts the step at zero).
+struct ContactIterate {
+  double new_gap = 0.0;       // normal gap after the step's increments (m)
+  double shear_force = 0.0;   // along `tangent`, on the vertex (N per metre)
+  double slip = 0.0;          // the step's tangential displacement of the vertex against the edge (m)
+  int mode_changes = 0;       // within this attempt's open-close loop
+};
+
 struct Contact {
   ContactKey key;
   int joint = 0;  // index into the scene's joint materials
@@ -41,35 +76,15 @@ struct Contact {
   double t = 0.0;               // projection of the vertex on the edge, 0..1 along it
   double length = 0.0;          // share of a face-to-face contact this vertex carries (m)
 
-  // ---- state carried from step to step ----
-  ContactMode mode = ContactMode::Open;
-  int slide_sign = 0;     // +1 or -1: slip direction along `tangent` while sliding
-  double t_lock = 0.0;    // edge parameter of the shear spring's anchor while locked
-  bool bonded = false;    // cohesion and tensile strength act while bonded
-  // The slip expected in this step (m, along `tangent`): the last step's. The normal gap and
-  // the friction are measured at the edge point the vertex is expected to reach, not where
-  // it started: a vertex sliding a distance s along an edge that turns by theta sees its gap
-  // change by s theta more than the start point's motion says, and a corner sliding off a
-  // tipping block started every step 24 um deeper than the step had predicted.
-  double predicted_slip = 0.0;
-
-  // ---- results of the latest open-close iteration ----
-  double new_gap = 0.0;       // normal gap after the step's increments (m)
-  double normal_force = 0.0;  // compression positive (N per metre)
-  double shear_force = 0.0;   // along `tangent`, on the vertex (N per metre)
-  double slip = 0.0;          // the step's tangential displacement of the vertex against the edge (m)
-  int mode_changes = 0;       // within this attempt's open-close loop
-  // A change of mode the accepted solve asked for but did not wait for, because it was
-  // within the contact resolution (solver/contact_assembly.cpp, kDeferShare): the contact
-  // starts the next step in this mode (carry_over), anchored there if it locks.
-  std::optional<ModeChange> deferred;
+  ContactState state;
+  ContactIterate iterate;
 
   Vec2 edge_point(double s) const { return edge_start + s * (edge_end - edge_start); }
-  // Where the normal gap and the friction are measured (see predicted_slip; only a
-  // sliding contact moves it).
+  // Where the normal gap and the friction are measured (see ContactState::predicted_slip;
+  // only a sliding contact moves it).
   Vec2 measure_point() const {
-    if (mode != ContactMode::Slide) return edge_point(t);
-    return edge_point(t + predicted_slip / (edge_end - edge_start).norm());
+    if (state.mode != ContactMode::Slide) return edge_point(t);
+    return edge_point(t + state.predicted_slip / (edge_end - edge_start).norm());
   }
 };
 

@@ -9,9 +9,9 @@ namespace {
 int slip_sign_of_force(double shear_force) { return shear_force > 0.0 ? -1 : 1; }
 
 ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const JointLaw& law) {
-  const double opens_above = c.mode == ContactMode::Open ? 0.0 : trial.open_tolerance;
+  const double opens_above = c.state.mode == ContactMode::Open ? 0.0 : trial.open_tolerance;
   if (trial.new_gap > opens_above) return {ContactMode::Open, 0, false, false};
-  switch (c.mode) {
+  switch (c.state.mode) {
     case ContactMode::Open:
       // Closing: Shi enters locked. A frictionless joint cannot hold any shear, so it enters
       // sliding in the direction of the trial's slip: entering locked, its shear spring
@@ -31,8 +31,10 @@ ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const Join
       }
       return {ContactMode::Lock, 0, false, false};
     case ContactMode::Slide:
-      if (trial.slip * c.slide_sign < -trial.slip_tolerance) return {ContactMode::Lock, 0, false, true};
-      return {ContactMode::Slide, c.slide_sign, false, false};
+      if (trial.slip * c.state.slide_sign < -trial.slip_tolerance) {
+        return {ContactMode::Lock, 0, false, true};
+      }
+      return {ContactMode::Slide, c.state.slide_sign, false, false};
   }
   return {};
 }
@@ -41,34 +43,34 @@ ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const Join
 
 ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
                                     const JointLaw& law) {
-  if (c.bonded) {
+  if (c.state.bonded) {
     const bool tension_fails = trial.tension > law.tensile_strength * c.length;
     const bool shear_fails = std::abs(trial.shear_force) >
                              law.cohesion * c.length + law.tan_phi * trial.normal_force;
     if (!tension_fails && !shear_fails) return {ContactMode::Lock, 0, true, false};
     // Broken for good: continue as an unbonded contact that was locked.
     Contact broken = c;
-    broken.bonded = false;
-    broken.mode = ContactMode::Lock;
+    broken.state.bonded = false;
+    broken.state.mode = ContactMode::Lock;
     return unbonded(broken, trial, {law.tan_phi, 0.0, 0.0});
   }
   return unbonded(c, trial, law);
 }
 
 bool change_allowed(const Contact& c, const ContactDecision& next, int free_changes) {
-  if (c.mode_changes < free_changes) return true;
-  if (next.bonded != c.bonded) return true;  // a bond breaks for good
+  if (c.iterate.mode_changes < free_changes) return true;
+  if (next.bonded != c.state.bonded) return true;  // a bond breaks for good
   // ContactMode is ordered Open < Slide < Lock.
-  return static_cast<int>(next.mode) > static_cast<int>(c.mode);
+  return static_cast<int>(next.mode) > static_cast<int>(c.state.mode);
 }
 
 bool change_within_resolution(const Contact& c, const ContactDecision& next,
                               const ContactTrial& trial, const JointLaw& law, double ks,
                               double resolution) {
-  if (c.bonded || next.bonded) return false;
-  if (c.mode == ContactMode::Open) return -trial.new_gap <= resolution;  // closing
+  if (c.state.bonded || next.bonded) return false;
+  if (c.state.mode == ContactMode::Open) return -trial.new_gap <= resolution;  // closing
   if (next.mode == ContactMode::Open) return trial.new_gap <= resolution;  // opening
-  if (c.mode == ContactMode::Lock) {  // lock -> slide
+  if (c.state.mode == ContactMode::Lock) {  // lock -> slide
     return std::abs(trial.shear_force) - law.tan_phi * trial.normal_force <= ks * resolution;
   }
   return std::abs(trial.slip) <= resolution;  // sliding: its slip reversed

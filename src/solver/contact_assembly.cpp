@@ -31,7 +31,7 @@ constexpr double kHeldTensionShare = 1e-3;
 // latest solve asks for by no more than this (a penetration, a gap, a spring's stretch past
 // the friction limit or a reversed slip this small) does not, on its own, make the
 // open-close loop go on. When every change a solve asks for is that small, the step is
-// accepted and those contacts start the next step in their new mode (Contact::deferred;
+// accepted and those contacts start the next step in their new mode (ContactState::deferred;
 // Shi's code and ntdda go further and never iterate on a change of shear mode). Without it
 // the side contacts of a settled wall, which carry almost nothing, flip between open,
 // locked and sliding at nanometre scales every step. What the accepted step gets wrong is
@@ -143,10 +143,11 @@ RankOneTerm rank_one(const World& w, const Contact& c, const Measure& m, double 
 
 void contact_spring_terms(const World& world, const Contact& c, const StepContext& ctx,
                           std::vector<RankOneTerm>& out) {
-  if (c.mode == ContactMode::Open) return;
+  if (c.state.mode == ContactMode::Open) return;
   out.push_back(rank_one(world, c, relative_along(world, ctx, c, projection_point(c), c.normal), ctx.penalty));
-  if (c.mode == ContactMode::Lock) {
-    out.push_back(rank_one(world, c, relative_along(world, ctx, c, c.edge_point(c.t_lock), c.tangent),
+  if (c.state.mode == ContactMode::Lock) {
+    const Vec2 anchor = c.edge_point(c.state.t_lock);
+    out.push_back(rank_one(world, c, relative_along(world, ctx, c, anchor, c.tangent),
                            kShearSpringRatio * ctx.penalty));
   }
 }
@@ -158,17 +159,17 @@ void add_contact_terms(const World& world, std::vector<Contact>& contacts,
   const double ks = kShearSpringRatio * ctx.penalty;
   for (const Contact& c : contacts) {
     assembler.touch(c);
-    if (c.mode == ContactMode::Open) continue;
+    if (c.state.mode == ContactMode::Open) continue;
     assembler.add_spring(c, relative_along(world, ctx, c, projection_point(c), c.normal), kn, c.gap);
-    if (c.mode == ContactMode::Lock) {
-      const Vec2 anchor = c.edge_point(c.t_lock);
+    if (c.state.mode == ContactMode::Lock) {
+      const Vec2 anchor = c.edge_point(c.state.t_lock);
       assembler.add_spring(c, relative_along(world, ctx, c, anchor, c.tangent), ks,
                            c.tangent.dot(c.vertex - anchor));
     } else {
       // Sliding: friction tan(phi) N on the vertex, against its slip direction.
-      const double friction = world.joint_laws[c.joint].tan_phi * c.normal_force;
+      const double friction = world.joint_laws[c.joint].tan_phi * c.state.normal_force;
       assembler.add_force(c, relative_along(world, ctx, c, projection_point(c), c.tangent),
-                          -c.slide_sign * friction);
+                          -c.state.slide_sign * friction);
     }
   }
 }
@@ -199,18 +200,19 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     trial.slip_tolerance = kSlipToleranceShare * world.allowed_penetration;
     trial.open_tolerance = kOpenToleranceShare * world.allowed_penetration;
     const JointLaw& law = world.joint_laws[c.joint];
-    if (c.mode == ContactMode::Lock) {
-      const Vec2 anchor = c.edge_point(c.t_lock);
+    if (c.state.mode == ContactMode::Lock) {
+      const Vec2 anchor = c.edge_point(c.state.t_lock);
       const double shear = c.tangent.dot(c.vertex - anchor) +
                            evaluate(world, c, relative_along(world, ctx, c, anchor, c.tangent), d);
       trial.shear_force = -ks * shear;
-    } else if (c.mode == ContactMode::Open) {
+    } else if (c.state.mode == ContactMode::Open) {
       trial.shear_force = -ks * trial.slip;
-    } else if (c.mode == ContactMode::Slide) {
-      trial.shear_force = -c.slide_sign * law.tan_phi * c.normal_force;
+    } else if (c.state.mode == ContactMode::Slide) {
+      trial.shear_force = -c.state.slide_sign * law.tan_phi * c.state.normal_force;
     }
     const auto differs = [&c](const ContactDecision& next) {
-      return next.mode != c.mode || next.slide_sign != c.slide_sign || next.bonded != c.bonded;
+      return next.mode != c.state.mode || next.slide_sign != c.state.slide_sign ||
+             next.bonded != c.state.bonded;
     };
     ContactDecision next = decide_contact_mode(c, trial, law);
     bool changes = differs(next);
@@ -228,10 +230,10 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     p.changes = changes && change_allowed(c, next, kFreeModeChanges);
     if (!p.changes && wants_to_open && trial.new_gap > tension_band) ++result.held_in_tension;
     p.deferrable = p.changes && change_within_resolution(c, next, trial, law, ks, resolution);
-    c.new_gap = trial.new_gap;
-    c.slip = trial.slip;
-    c.normal_force = trial.normal_force;
-    c.shear_force = trial.shear_force;
+    c.iterate.new_gap = trial.new_gap;
+    c.iterate.slip = trial.slip;
+    c.state.normal_force = trial.normal_force;
+    c.iterate.shear_force = trial.shear_force;
   }
   // Changes within the resolution alone do not make the loop go on: if nothing else
   // changed, the step ends on this solve and those contacts start the next step in their
@@ -242,28 +244,29 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     Contact& c = contacts[i];
     const Pending& p = pending[i];
-    c.deferred.reset();
+    c.state.deferred.reset();
     if (p.changes && p.deferrable && defer) {
-      c.deferred = ModeChange{p.next.mode, p.next.slide_sign, p.next.relock};
+      c.state.deferred = ModeChange{p.next.mode, p.next.slide_sign, p.next.relock};
       ++result.deferred;
     } else if (p.changes) {
       if (!p.deferrable) ++result.changed;
-      ++c.mode_changes;
-      c.mode = p.next.mode;
-      c.slide_sign = p.next.slide_sign;
-      c.bonded = p.next.bonded;
-      if (p.next.relock) c.t_lock = c.t;
+      ++c.iterate.mode_changes;
+      c.state.mode = p.next.mode;
+      c.state.slide_sign = p.next.slide_sign;
+      c.state.bonded = p.next.bonded;
+      if (p.next.relock) c.state.t_lock = c.t;
     }
     // A sliding contact's normal spring moves to where the vertex now slides to (see
-    // Contact::predicted_slip); the next iteration measures there.
+    // ContactState::predicted_slip); the next iteration measures there.
     // (Bounded by the step's displacement limit: an iteration far from the solution must not
     // carry the measure point off the edge; a larger slip is cut by the displacement check.)
     const double reach = 2.0 * ctx.allowed_displacement;
-    c.predicted_slip = c.mode == ContactMode::Slide ? std::clamp(c.slip, -reach, reach) : 0.0;
+    c.state.predicted_slip =
+        c.state.mode == ContactMode::Slide ? std::clamp(c.iterate.slip, -reach, reach) : 0.0;
     // (A held contact keeps its mode, but its forces follow the latest solve.)
-    if (c.mode == ContactMode::Open) {
-      c.normal_force = 0.0;
-      c.shear_force = 0.0;
+    if (c.state.mode == ContactMode::Open) {
+      c.state.normal_force = 0.0;
+      c.iterate.shear_force = 0.0;
     }
   }
   return result;
@@ -272,7 +275,9 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
 std::vector<SpringState> spring_states(const std::vector<Contact>& contacts) {
   std::vector<SpringState> states;
   states.reserve(contacts.size());
-  for (const Contact& c : contacts) states.push_back({c.mode, c.t_lock, c.predicted_slip});
+  for (const Contact& c : contacts) {
+    states.push_back({c.state.mode, c.state.t_lock, c.state.predicted_slip});
+  }
   return states;
 }
 
@@ -284,14 +289,14 @@ void spring_changes(const World& world, const std::vector<Contact>& contacts,
   removed.clear();
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& now = contacts[i];
-    if (now.mode == before[i].mode && now.t_lock == before[i].t_lock &&
-        now.predicted_slip == before[i].predicted_slip) {
+    if (now.state.mode == before[i].mode && now.state.t_lock == before[i].t_lock &&
+        now.state.predicted_slip == before[i].predicted_slip) {
       continue;
     }
     Contact then = now;
-    then.mode = before[i].mode;
-    then.t_lock = before[i].t_lock;
-    then.predicted_slip = before[i].predicted_slip;
+    then.state.mode = before[i].mode;
+    then.state.t_lock = before[i].t_lock;
+    then.state.predicted_slip = before[i].predicted_slip;
     contact_spring_terms(world, then, ctx, removed);
     contact_spring_terms(world, now, ctx, added);
   }
@@ -300,7 +305,7 @@ void spring_changes(const World& world, const std::vector<Contact>& contacts,
 double max_penetration(const std::vector<Contact>& contacts) {
   // Open contacts count too: one held open by the chatter limit may have closed meanwhile.
   double deepest = 0.0;
-  for (const Contact& c : contacts) deepest = std::max(deepest, -c.new_gap);
+  for (const Contact& c : contacts) deepest = std::max(deepest, -c.iterate.new_gap);
   return deepest;
 }
 

@@ -46,8 +46,9 @@ double contact_energy(const World& world, const std::vector<Contact>& contacts, 
   for (const Contact& c : contacts) {
     // An open contact that ends penetrating holds that energy too: the next step's spring
     // gives it back although no work put it there (the account then shows it).
-    if (c.mode != ContactMode::Open || c.new_gap < 0.0) e += 0.5 * penalty * c.new_gap * c.new_gap;
-    if (c.mode == ContactMode::Lock) e += c.shear_force * c.shear_force / (2.0 * ks);
+    const double g = c.iterate.new_gap, f = c.iterate.shear_force;
+    if (c.state.mode != ContactMode::Open || g < 0.0) e += 0.5 * penalty * g * g;
+    if (c.state.mode == ContactMode::Lock) e += f * f / (2.0 * ks);
   }
   for (const Pin& pin : world.pins) {
     if (world.blocks[static_cast<std::size_t>(pin.block)].fixed) continue;
@@ -116,23 +117,23 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     if (s.suspects.size() > 3) s.suspects.pop_back();
   };
   for (const Contact& c : contacts) {
-    if (c.mode == ContactMode::Open) continue;
+    if (c.state.mode == ContactMode::Open) continue;
     // The normal spring's force is taken at the step's end, -k g_end, over the whole step:
     // its work -k g_end (g_end - g_start) falls short of the rise of the stored energy
     // (k/2 g^2 while penetrating) by what the scheme removes: k/2 (g_end - g_start)^2 for
     // a contact closed throughout, k/2 g_end^2 + k |g_end| g_start for one that closed
     // during the step from a gap g_start > 0 (the impact's loss).
-    const double g0 = c.gap, g1 = c.new_gap;
+    const double g0 = c.gap, g1 = c.iterate.new_gap;
     const double stored_start = 0.5 * kn * std::min(g0, 0.0) * std::min(g0, 0.0);
     s.damping_dissipation += kn * g1 * (g1 - g0) - (0.5 * kn * g1 * g1 - stored_start);
     double brought = stored_start;
-    if (c.mode == ContactMode::Lock) {
-      const double s_start = c.tangent.dot(c.vertex - c.edge_point(c.t_lock));
-      const double s_end = -c.shear_force / ks;
+    if (c.state.mode == ContactMode::Lock) {
+      const double s_start = c.tangent.dot(c.vertex - c.edge_point(c.state.t_lock));
+      const double s_end = -c.iterate.shear_force / ks;
       s.damping_dissipation += 0.5 * ks * (s_end - s_start) * (s_end - s_start);
       brought += 0.5 * ks * s_start * s_start;
     } else {
-      const double work = c.shear_force * c.slip;
+      const double work = c.iterate.shear_force * c.iterate.slip;
       s.friction_dissipation += std::max(0.0, -work);
       s.friction_gain += std::max(0.0, work);
       brought += std::max(0.0, work);

@@ -122,7 +122,7 @@ std::string describe_failure(const World& world, const std::string& what) {
 
 int closed_contacts(const std::vector<Contact>& contacts) {
   return static_cast<int>(std::count_if(contacts.begin(), contacts.end(), [](const Contact& c) {
-    return c.mode != ContactMode::Open;
+    return c.state.mode != ContactMode::Open;
   }));
 }
 
@@ -135,7 +135,7 @@ void count_step(const World& world, int open_close, RunStats& stats) {
   stats.contacts_final = closed;
   stats.deepest_penetration = std::max(stats.deepest_penetration, max_penetration(world.contacts));
   for (const Contact& c : world.contacts) {
-    stats.largest_normal_force = std::max(stats.largest_normal_force, c.normal_force);
+    stats.largest_normal_force = std::max(stats.largest_normal_force, c.state.normal_force);
   }
 }
 
@@ -288,7 +288,8 @@ std::optional<CutReason> check_step(const World& world, const Eigen::VectorXd& d
   if (max_penetration(world.contacts) > world.allowed_penetration) return CutReason::Penetration;
   deepest_overshoot = 0.0;
   for (const Contact& c : world.contacts) {
-    if (c.mode == ContactMode::Open) deepest_overshoot = std::max(deepest_overshoot, overshoot(world, c, d));
+    if (c.state.mode != ContactMode::Open) continue;
+    deepest_overshoot = std::max(deepest_overshoot, overshoot(world, c, d));
   }
   if (deepest_overshoot > kOvershootShare * world.allowed_penetration) return CutReason::Overshoot;
   return std::nullopt;
