@@ -423,3 +423,51 @@ TEST_CASE("a vertex that a step's linearised gap sees open but the update puts i
   const double gap = (Vec2::Zero() - bar[0]).dot(Vec2(edge.y(), -edge.x()));
   CHECK(gap >= -0.01 * world.allowed_penetration);
 }
+
+TEST_CASE("augmented Lagrangian: a block the penalty alone would sink 13 times too deep rests "
+          "within the allowed penetration, its weight carried", "[contact]") {
+  // A 1 m square (2700 kg/m^3: weight 26.5 kN/m) on a fixed base, penalty 1e6 N/m: its two
+  // corner springs alone would carry it at 13 mm, the allowed penetration is 1 mm. Static
+  // analysis, 400 steps of 0.01 s: it comes to rest.
+  const auto resting = [](int max_augmentations) {
+    Scene s = test::base_scene(400, 0.01);
+    s.control.penalty = 1e6;
+    s.control.allowed_penetration = 1e-3;
+    s.control.dynamic_coefficient = 0.0;
+    s.control.max_augmentations = max_augmentations;
+    s.joint_materials[0].friction_angle = 30.0;
+    BlockSpec base = test::block(test::rectangle(-1.5, -1.0, 3.0, 1.0));
+    base.fixed = true;
+    s.blocks.push_back(base);
+    s.blocks.push_back(test::block(test::rectangle(-0.5, 0.0, 1.0, 1.0)));
+    return s;
+  };
+  SECTION("with the multipliers") {
+    World world = make_world(resting(5));
+    const RunStats stats = run(world, [](const World&, const RunStats&) { return true; });
+    REQUIRE_FALSE(stats.diverged);
+    CHECK(stats.augmentations > 0);
+    CHECK(stats.deepest_penetration <= 1e-3);
+    // At rest about the multipliers' target, half the allowed penetration (the last round
+    // leaves it within one round's overshoot of it: between the target and the limit).
+    const double sink = 0.5 - world.blocks[1].moments.centroid.y();
+    CHECK(sink >= 0.5e-3);
+    CHECK(sink <= 1e-3);
+    // Equilibrium: the contacts' normal forces carry the weight, rho g times the block's
+    // present area (its elastic squeeze changes the area by ~1e-5). (1e-6: the block still
+    // creeps at ~4e-9 m/s after 400 static steps, an inertia force of ~1e-3 N against 2.6e4 N.)
+    const double weight = 2700.0 * 9.81 * world.blocks[1].moments.area;
+    double carried = 0.0;
+    for (const Contact& c : world.contacts) carried += c.state.normal_force;
+    CHECK_THAT(carried, WithinRel(weight, 1e-6));
+    // No energy created: with the multipliers' work in the account (multiplier_work), the
+    // remainder never rises above round-off of the energy scale (m g w0 ~ 4e4 J/m).
+    CHECK(world.energy.remainder_max <= 1e-9 * world.energy.scale);
+  }
+  SECTION("without them the step is cut, and the run stops saying why") {
+    World world = make_world(resting(0));
+    const RunStats stats = run(world, [](const World&, const RunStats&) { return true; });
+    CHECK(stats.diverged);
+    CHECK(stats.message.find("allowed_penetration") != std::string::npos);
+  }
+}

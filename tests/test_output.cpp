@@ -138,7 +138,7 @@ std::vector<double> expected_row(const World& w, int i) {
           b.stress[2],        b.velocity[0],   b.velocity[1],   b.velocity[2],
           e.kinetic,          e.potential,     e.strain_energy, e.contact_energy,
           w.energy.load_work, w.energy.friction_dissipation, w.energy.plastic_dissipation,
-          w.energy.damping_dissipation, w.energy.remainder};
+          w.energy.damping_dissipation, w.energy.remainder, w.energy.multiplier_work};
 }
 
 // Writes three frames (steps 0, 10, 20) and the summary; keeps a copy of each recorded world.
@@ -182,7 +182,7 @@ TEST_CASE("history.csv has the exact header and one full-precision row per block
   CHECK(lines[0] ==
         "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega,"
         "kinetic,potential,strain_energy,contact_energy,load_work,friction_dissipation,"
-        "plastic_dissipation,damping_dissipation,energy_remainder");
+        "plastic_dissipation,damping_dissipation,energy_remainder,multiplier_work");
 
   // Exact comparison, no tolerance: 17 significant digits identify a double uniquely, so
   // writing with %.17g and reading with strtod must give back the very same double.

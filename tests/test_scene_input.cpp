@@ -254,6 +254,12 @@ std::vector<BadScene> bad_scenes() {
        "control.max_open_close", {"at least 2, got 1"}},
       {"max_open_close not an integer", edit(s, "\"max_open_close\": 5", "\"max_open_close\": 2.5"),
        "control.max_open_close", {"expected an integer", "2.5"}},
+      {"max_augmentations negative",
+       edit(s, "\"max_open_close\": 5", "\"max_open_close\": 5, \"max_augmentations\": -1"),
+       "control.max_augmentations", {"at least 0, got -1"}},
+      {"max_augmentations above 50",
+       edit(s, "\"max_open_close\": 5", "\"max_open_close\": 5, \"max_augmentations\": 51"),
+       "control.max_augmentations", {"at most 50, got 51"}},
       {"allowed_penetration zero", edit(s, "2e-4", "0"), "control.allowed_penetration",
        {"must be positive, got 0"}},
       {"allowed_penetration unknown word", edit(s, "2e-4", "\"small\""),
@@ -587,6 +593,7 @@ TEST_CASE("optional keys take their documented defaults", "[scene][input]") {
   CHECK_FALSE(scene.control.penalty.has_value());  // "auto"
   CHECK(scene.control.output_every == 10);
   CHECK(scene.control.max_open_close == 8);
+  CHECK(scene.control.max_augmentations == 5);
   CHECK_FALSE(scene.control.allowed_penetration.has_value());  // "auto"
   // One block needs no joint materials: the built-in frictionless, unbonded default stays.
   REQUIRE(scene.joint_materials.size() == 1);
@@ -882,12 +889,14 @@ TEST_CASE("every scene in scenes/ parses", "[scene][input]") {
 TEST_CASE("a diverging run stops with a message, exit code 3, and keeps what it wrote",
           "[scene][input]") {
   // A block resting on a fixed base under gravity compresses its contacts by m g / 2p
-  // (~1e-6 m with the auto penalty); an allowed penetration of 1e-12 m cannot be met: the step
-  // is cut six times, the penalty is left as it is, and the run gives up at step 1.
+  // (~1e-6 m with the auto penalty); without the augmented-Lagrangian rounds
+  // (max_augmentations 0) an allowed penetration of 1e-12 m cannot be met: the step is cut
+  // six times, the penalty is left as it is, and the run gives up at step 1.
   TempDir dir;
   const fs::path scene = dir.path / "diverge.json";
   write_file(scene, R"({
-    "control": {"time_step": 0.01, "steps": 5, "allowed_penetration": 1e-12},
+    "control": {"time_step": 0.01, "steps": 5, "allowed_penetration": 1e-12,
+                "max_augmentations": 0},
     "materials": {"rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}},
     "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
     "blocks": [

@@ -51,6 +51,12 @@ struct ContactState {
   // within the contact resolution (solver/contact_assembly.cpp, kDeferShare): the contact
   // starts the next step in this mode (carry_over), anchored there if it locks.
   std::optional<ModeChange> deferred;
+  // The augmented-Lagrangian multiplier of the normal spring, as a length (m; lambda / p):
+  // the spring acts on gap - rest_shift, so it pushes with p rest_shift more than its
+  // penetration says (Lin, Amadei et al. 1996). Grown by solver/step.cpp when a contact ends
+  // an iteration deeper than allowed, kept while the contact stays closed (so a resting
+  // load stays carried), zero once it opens.
+  double rest_shift = 0.0;
 };
 
 // Results of the latest open-close iteration (mode_changes: counted over the loop), written

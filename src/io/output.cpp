@@ -27,7 +27,7 @@ using json = nlohmann::ordered_json;
 constexpr const char* kHistoryHeader =
     "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega,"
     "kinetic,potential,strain_energy,contact_energy,load_work,friction_dissipation,"
-    "plastic_dissipation,damping_dissipation,energy_remainder";
+    "plastic_dissipation,damping_dissipation,energy_remainder,multiplier_work";
 
 std::string num(double x) { return format_full_precision(x); }
 
@@ -219,6 +219,7 @@ json settings_json(const World& w) {
       {"output_every", c.output_every},
       {"w0", w.w0},
       {"max_open_close", c.max_open_close},
+      {"max_augmentations", c.max_augmentations},
       {"allowed_penetration", w.allowed_penetration},
       {"allowed_penetration_rule", c.allowed_penetration ? "user" : "auto"},
       {"search_distance", w.search_distance},
@@ -289,7 +290,7 @@ void OutputWriter::record(const World& world) {
                              energy.strain_energy,   energy.contact_energy,
                              world.energy.load_work, world.energy.friction_dissipation,
                              world.energy.plastic_dissipation, world.energy.damping_dissipation,
-                             world.energy.remainder};
+                             world.energy.remainder, world.energy.multiplier_work};
     history_ << world.step << ',' << num(world.time) << ',' << i;
     for (double v : values) history_ << ',' << num(v);
     history_ << '\n';
@@ -331,6 +332,7 @@ json energy_json(const World& world) {
           {"strain_energy", e.strain_energy},
           {"contact_energy", e.contact_energy},
           {"load_work", led.load_work},
+          {"multiplier_work", led.multiplier_work},
           {"friction_dissipation", led.friction_dissipation},
           {"plastic_dissipation", led.plastic_dissipation},
           {"damping_dissipation", led.damping_dissipation},
@@ -368,6 +370,7 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
                     {"deepest_penetration", stats.deepest_penetration},
                     {"largest_normal_force", stats.largest_normal_force}}},
       {"penalty_raises", stats.penalty_raises},
+      {"augmentations", stats.augmentations},
       {"energy", energy_json(world)},
       {"stages_run", stages_run_json(world)},
       {"end_time", world.time},

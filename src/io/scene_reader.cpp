@@ -92,7 +92,8 @@ std::optional<double> positive_or_auto(const Field& f, std::string_view unit) {
 ControlSettings read_control(const Field& f, bool staged) {
   f.expect_keys({"time_step", "steps", "end_time", "max_displacement_ratio",
                  "dynamic_coefficient", "rotation_update", "penalty", "output_every",
-                 "max_open_close", "allowed_penetration", "energy_tolerance"});
+                 "max_open_close", "max_augmentations", "allowed_penetration",
+                 "energy_tolerance"});
   ControlSettings c;
   c.time_steps = read_time_steps(f.member("time_step"));
   read_run_length(f, c, staged);
@@ -111,6 +112,13 @@ ControlSettings read_control(const Field& f, bool staged) {
   // The open-close loop needs one iteration to change a contact's state and another to
   // confirm it, so fewer than 2 would cut every step in which a contact opens or closes.
   if (auto g = f.optional_member("max_open_close")) c.max_open_close = integer_at_least(*g, 2);
+  if (auto g = f.optional_member("max_augmentations")) {
+    // More rounds than 50 would only hide a load the penalty cannot carry.
+    c.max_augmentations = integer_at_least(*g, 0);
+    if (c.max_augmentations > 50) {
+      g->fail("must be at most 50, got " + std::to_string(c.max_augmentations));
+    }
+  }
   if (auto g = f.optional_member("allowed_penetration")) {
     c.allowed_penetration = positive_or_auto(*g, "m");
   }

@@ -160,7 +160,8 @@ void add_contact_terms(const World& world, std::vector<Contact>& contacts,
   for (const Contact& c : contacts) {
     assembler.touch(c);
     if (c.state.mode == ContactMode::Open) continue;
-    assembler.add_spring(c, relative_along(world, ctx, c, projection_point(c), c.normal), kn, c.gap);
+    assembler.add_spring(c, relative_along(world, ctx, c, projection_point(c), c.normal), kn,
+                         c.gap - c.state.rest_shift);
     if (c.state.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.state.t_lock);
       assembler.add_spring(c, relative_along(world, ctx, c, anchor, c.tangent), ks,
@@ -194,8 +195,11 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     const Vec2 p0 = projection_point(c);
     ContactTrial trial;
     trial.new_gap = c.gap + evaluate(world, c, relative_along(world, ctx, c, p0, c.normal), d);
-    trial.normal_force = kn * std::max(0.0, -trial.new_gap);
-    trial.tension = kn * std::max(0.0, trial.new_gap);
+    // The spring acts on the gap less the multiplier's shift (zero unless augmented); the
+    // contact opens and closes by the geometric gap, so a shift never holds a gap open.
+    const double spring_gap = trial.new_gap - c.state.rest_shift;
+    trial.normal_force = kn * std::max(0.0, -spring_gap);
+    trial.tension = kn * std::max(0.0, spring_gap);
     trial.slip = evaluate(world, c, relative_along(world, ctx, c, p0, c.tangent), d);
     trial.slip_tolerance = kSlipToleranceShare * world.allowed_penetration;
     trial.open_tolerance = kOpenToleranceShare * world.allowed_penetration;
@@ -265,6 +269,7 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
         c.state.mode == ContactMode::Slide ? std::clamp(c.iterate.slip, -reach, reach) : 0.0;
     // (A held contact keeps its mode, but its forces follow the latest solve.)
     if (c.state.mode == ContactMode::Open) {
+      c.state.rest_shift = 0.0;
       c.state.normal_force = 0.0;
       c.iterate.shear_force = 0.0;
     }
@@ -300,6 +305,17 @@ void spring_changes(const World& world, const std::vector<Contact>& contacts,
     contact_spring_terms(world, then, ctx, removed);
     contact_spring_terms(world, now, ctx, added);
   }
+}
+
+int augment_multipliers(std::vector<Contact>& contacts, double target) {
+  int grown = 0;
+  for (Contact& c : contacts) {
+    const double excess = -c.iterate.new_gap - target;
+    if (c.state.mode == ContactMode::Open || excess <= 0.0) continue;
+    c.state.rest_shift += excess;
+    ++grown;
+  }
+  return grown;
 }
 
 double max_penetration(const std::vector<Contact>& contacts) {

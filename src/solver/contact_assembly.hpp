@@ -56,6 +56,12 @@ void spring_changes(const World& world, const std::vector<Contact>& contacts,
                     const std::vector<SpringState>& before, const StepContext& ctx,
                     std::vector<RankOneTerm>& added, std::vector<RankOneTerm>& removed);
 
+// One augmented-Lagrangian update (Lin, Amadei et al. 1996): every closed contact that
+// penetrates deeper than `target` (m) adds the excess to its multiplier
+// (ContactState::rest_shift; lambda += p (|g| - target), as a length), so the next solve,
+// with the same matrix, pushes it back to about `target`. Returns how many grew.
+int augment_multipliers(std::vector<Contact>& contacts, double target);
+
 // The deepest penetration of any contact after the step (m); 0 if none.
 double max_penetration(const std::vector<Contact>& contacts);
 

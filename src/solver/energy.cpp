@@ -46,6 +46,8 @@ double contact_energy(const World& world, const std::vector<Contact>& contacts, 
   for (const Contact& c : contacts) {
     // An open contact that ends penetrating holds that energy too: the next step's spring
     // gives it back although no work put it there (the account then shows it).
+    // (An augmented contact's multiplier force p s is not a spring: its work is a term of
+    // its own, multiplier_work.)
     const double g = c.iterate.new_gap, f = c.iterate.shear_force;
     if (c.state.mode != ContactMode::Open || g < 0.0) e += 0.5 * penalty * g * g;
     if (c.state.mode == ContactMode::Lock) e += f * f / (2.0 * ks);
@@ -122,8 +124,11 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     // its work -k g_end (g_end - g_start) falls short of the rise of the stored energy
     // (k/2 g^2 while penetrating) by what the scheme removes: k/2 (g_end - g_start)^2 for
     // a contact closed throughout, k/2 g_end^2 + k |g_end| g_start for one that closed
-    // during the step from a gap g_start > 0 (the impact's loss).
+    // during the step from a gap g_start > 0 (the impact's loss). An augmented contact adds
+    // the multiplier's force p s (ContactState::rest_shift), constant over the step; its work
+    // on the blocks, p s (g_end - g_start), is multiplier_work.
     const double g0 = c.gap, g1 = c.iterate.new_gap;
+    s.multiplier_work += kn * c.state.rest_shift * (g1 - g0);
     const double stored_start = 0.5 * kn * std::min(g0, 0.0) * std::min(g0, 0.0);
     s.damping_dissipation += kn * g1 * (g1 - g0) - (0.5 * kn * g1 * g1 - stored_start);
     double brought = stored_start;
@@ -147,6 +152,7 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
                         const Eigen::VectorXd& d, double penalty) {
   EnergyLedger& led = world.energy;
   led.load_work += step.load_work;
+  led.multiplier_work += step.multiplier_work;
   led.friction_dissipation += step.friction_dissipation;
   led.damping_dissipation += step.damping_dissipation;
   led.friction_gain += step.friction_gain;
@@ -169,7 +175,8 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
   }
   led.contact_energy = contact_energy(world, contacts, penalty);
   const EnergyTotals totals = scene_energy(world);
-  led.remainder = totals.total() - led.initial_total - led.load_work + led.friction_dissipation +
+  led.remainder = totals.total() - led.initial_total - led.load_work - led.multiplier_work +
+                  led.friction_dissipation +
                   led.plastic_dissipation + led.damping_dissipation;
   led.scale = std::max({led.scale, totals.kinetic, std::abs(led.load_work)});
   if (led.remainder > led.remainder_max) {

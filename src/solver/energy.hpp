@@ -26,6 +26,7 @@ struct EnergyTotals {
 // the contacts as the open-close loop left them, before the configuration update).
 struct StepEnergy {
   double load_work = 0.0;             // point loads and initial stresses on the increments
+  double multiplier_work = 0.0;       // the contacts' multiplier forces p s on the normal motion
   double friction_dissipation = 0.0;  // sum over sliding contacts of max(0, -F . slip)
   double damping_dissipation = 0.0;   // implicit springs and strains, dynamic coefficient
   double friction_gain = 0.0;         // sum of max(0, F . slip): friction pushing forward

@@ -39,6 +39,9 @@ struct RunStats {
   // Times the penalty was raised: always 0 since the penalty stays as the scene sets it
   // (kept in the summary for the scripts that read it).
   int penalty_raises = 0;
+  // Augmented-Lagrangian rounds (solver/step.cpp, control.max_augmentations): solves spent pushing
+  // contacts deeper than allowed_penetration back out at the fixed penalty.
+  long augmentations = 0;
   StageTimes stage_times;
   bool diverged = false;
   std::string message;     // why the run stopped early, empty otherwise

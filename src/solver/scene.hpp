@@ -164,6 +164,10 @@ struct ControlSettings {
   // Open-close iterations allowed per step before the step is cut (dt x 0.3) and redone
   // (Shi's usual limit; verification catalogue). Range >= 2.
   int max_open_close = 8;
+  // Augmented-Lagrangian rounds allowed per step (penetration control at a fixed penalty,
+  // solver/step.cpp) before a step whose contacts are deeper than allowed_penetration is
+  // cut. Range 0 (off: cutting only, as Shi) to 50.
+  int max_augmentations = 5;
   // Largest penetration allowed at a contact after a step (m); nullopt means "auto":
   // 4e-4 x w0 (Shi's usual value). A step exceeding it is cut and redone.
   std::optional<double> allowed_penetration;

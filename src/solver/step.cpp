@@ -49,6 +49,16 @@ constexpr double kTimeRoundOff = 1e-9;
 // 1e-12 x 5 m per step on the paper's swinging octagon (5e-9 m over its 5000 steps). A
 // block that barely turns is done after one solve.
 constexpr double kSecantDisplacementShare = 1e-12;
+// Penetration control at a fixed penalty (Lin, Amadei et al. 1996): when the settled loop
+// leaves a contact deeper than the allowed penetration, every closed contact deeper than
+// kAugmentTargetShare of it adds the excess to its multiplier (ContactState::rest_shift) and
+// the loop goes on with the same matrix (a back-substitution), up to
+// control.max_augmentations rounds a step (allowed beyond max_open_close); what they do not
+// cure, cutting dt does. The multiplier stays while the contact is closed, so a load the
+// penalty alone would carry at g is carried at about half the allowed penetration; aiming
+// at half, not at zero, keeps the contact clear of its opening threshold (it opens by its
+// geometric gap and then drops the multiplier).
+constexpr double kAugmentTargetShare = 0.5;
 // A scene with plastic blocks allows this many loop iterations beyond max_open_close: the
 // loop is then also the Newton iteration of the blocks' material equilibrium (quadratic
 // with associated flow, linear with non-associated; solver/material_coupling.hpp).
@@ -178,6 +188,7 @@ struct LoopResult {
   bool solved = true;         // false: the global system could not be solved
   std::optional<CutReason> unsettled;  // the loop did not settle: the reason to cut
   double material_fraction = 1.0;      // with CutReason::Material: the return's suggestion
+  int augmentations = 0;               // augmented-Lagrangian rounds (penetration control)
 };
 
 // 3. The open-close loop: assemble, solve, let every contact choose its next mode, until no
@@ -196,7 +207,9 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   }
   const bool plastic = has_plastic_blocks(world);
   if (plastic) ctx.material_terms = start_linearization(world);
-  const int iteration_limit = world.control.max_open_close + (plastic ? kExtraNewtonIterations : 0);
+  const int iteration_limit =
+      world.control.max_open_close + world.control.max_augmentations +
+      (plastic ? kExtraNewtonIterations : 0);
 
   assemble(world, ctx, ws.block_terms);
   LoopResult r;
@@ -204,6 +217,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   int secants_moved = 0;
   MaterialFollowUp materials;
   bool factor_stale = false;
+  int augmented = 0;  // contacts whose multiplier grew after this solve
   do {
     ws.system = ws.block_terms;
     add_contact_terms(world, world.contacts, ctx, ws.system);
@@ -242,12 +256,22 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
       }
     }
     if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
+    augmented = 0;
+    const bool settled = contacts.changed == 0 && contacts.held_in_tension == 0 &&
+                         secants_moved == 0 && materials.unconverged == 0;
+    if (settled && r.augmentations < world.control.max_augmentations &&
+        max_penetration(world.contacts) > world.allowed_penetration) {
+      augmented =
+          augment_multipliers(world.contacts, kAugmentTargetShare * world.allowed_penetration);
+      if (augmented > 0) ++r.augmentations;
+    }
     clock.lap(times.contact_update);
-  } while ((contacts.changed > 0 || secants_moved > 0 || materials.unconverged > 0) &&
+  } while ((contacts.changed > 0 || secants_moved > 0 || materials.unconverged > 0 ||
+            augmented > 0) &&
            r.iterations < iteration_limit);
   if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, r.d);
   if (contacts.changed > 0 || contacts.held_in_tension > 0 || secants_moved > 0 ||
-      materials.unconverged > 0) {
+      materials.unconverged > 0 || augmented > 0) {
     r.unsettled = CutReason::OpenClose;
   }
   return r;
@@ -364,6 +388,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     world.contacts = contacts_at_start;  // states as they entered the step, no changes counted
     // 3. The open-close loop.
     const LoopResult loop = solve_open_close(world, ws, ctx, stats, clock);
+    stats.augmentations += loop.augmentations;
     if (!loop.solved) {
       return {false, describe_failure(world, "the global system could not be solved "
                                              "(not positive definite or not finite)")};

@@ -87,6 +87,9 @@ struct PointLoad {
 // solver/energy.hpp, docs/energy-balance.md).
 struct EnergyLedger {
   double load_work = 0.0;             // work of point loads and initial stresses
+  // Work of the contacts' augmented-Lagrangian multipliers (ContactState::rest_shift), the
+  // force p s each closed contact adds to its spring, on the contact's normal motion.
+  double multiplier_work = 0.0;
   double friction_dissipation = 0.0;  // by sliding contacts (never negative)
   double plastic_dissipation = 0.0;   // by plastic blocks' plastic strain
   double damping_dissipation = 0.0;   // by the implicit time integration and the dynamic coefficient
