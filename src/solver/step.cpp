@@ -207,9 +207,8 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   }
   const bool plastic = has_plastic_blocks(world);
   if (plastic) ctx.material_terms = start_linearization(world);
-  const int iteration_limit =
-      world.control.max_open_close + world.control.max_augmentations +
-      (plastic ? kExtraNewtonIterations : 0);
+  // (Each augmented-Lagrangian round used adds one more: the rounds are allowed beyond it.)
+  const int iteration_limit = world.control.max_open_close + (plastic ? kExtraNewtonIterations : 0);
 
   assemble(world, ctx, ws.block_terms);
   LoopResult r;
@@ -268,7 +267,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     clock.lap(times.contact_update);
   } while ((contacts.changed > 0 || secants_moved > 0 || materials.unconverged > 0 ||
             augmented > 0) &&
-           r.iterations < iteration_limit);
+           r.iterations < iteration_limit + r.augmentations);
   if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, r.d);
   if (contacts.changed > 0 || contacts.held_in_tension > 0 || secants_moved > 0 ||
       materials.unconverged > 0 || augmented > 0) {
