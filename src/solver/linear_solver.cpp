@@ -45,6 +45,10 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve_modified(const BlockSystem& 
       block_pattern(system) != factored_blocks_) {
     return solve(system);
   }
+  if (factor_.modification_cost(added) + factor_.modification_cost(removed) >
+      kModifyShareOfRefactor * factor_.refactorisation_cost()) {
+    return solve(system);
+  }
   ++modifications_;
   // Updates first: the matrix stays positive definite all along.
   if (!factor_.modify(added, true) || !factor_.modify(removed, false)) return solve(system);

@@ -114,6 +114,36 @@ bool SparseCholesky::modify(const std::vector<RankOneTerm>& terms, bool update) 
   return factored_;
 }
 
+double SparseCholesky::refactorisation_cost() const {
+  assert(has_factor());
+  const auto* nz = static_cast<const int*>(factor_->nz);
+  double cost = 0.0;
+  for (size_t j = 0; j < factor_->n; ++j) cost += static_cast<double>(nz[j]) * nz[j];
+  return cost;
+}
+
+double SparseCholesky::modification_cost(const std::vector<RankOneTerm>& terms) const {
+  assert(has_factor());
+  const auto* p = static_cast<const int*>(factor_->p);
+  const auto* i = static_cast<const int*>(factor_->i);
+  const auto* nz = static_cast<const int*>(factor_->nz);
+  const int n = static_cast<int>(factor_->n);
+  double cost = 0.0;
+  for (const RankOneTerm& t : terms) {
+    int j = n;
+    for (const auto& entry : t.entries) j = std::min(j, inverse_perm_[entry.first]);
+    while (j < n) {
+      cost += nz[j];
+      // The parent in the elimination tree: the first row below the diagonal in column j
+      // (the column's entries after the diagonal need not be sorted once it was modified).
+      int parent = n;
+      for (int k = p[j] + 1; k < p[j] + nz[j]; ++k) parent = std::min(parent, i[k]);
+      j = parent;
+    }
+  }
+  return cost;
+}
+
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) {
   assert(has_factor());
   cholmod_dense rhs{};

@@ -32,6 +32,17 @@ class SparseCholesky {
   // result is not positive definite (the factor is then unusable until factorize()).
   bool modify(const std::vector<RankOneTerm>& terms, bool update);
 
+  // A cost model of the two ways to the factor of a modified matrix, in "entry operations"
+  // (deterministic, from the present factor's structure, so a run's path does not depend on
+  // the machine's timing):
+  //  - refactorisation_cost(): sum over columns j of L of nnz(L(:,j))^2, the flop count of
+  //    a left-looking LDL';
+  //  - modification_cost(terms): for each rank-one term, the sum of nnz(L(:,j)) over the
+  //    columns j that cholmod_updown visits, the elimination-tree path from the term's first
+  //    row (in the factor's order) to the root.
+  double refactorisation_cost() const;
+  double modification_cost(const std::vector<RankOneTerm>& terms) const;
+
   // Solves with the present factor. Requires a successful factorize().
   Eigen::VectorXd solve(const Eigen::VectorXd& b);
 
