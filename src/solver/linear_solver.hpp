@@ -41,8 +41,8 @@ class CholmodSolver {
   // (SparseCholesky::modification_cost) exceeds this share of a refactorisation's
   // (refactorisation_cost). Measured on the 1000-brick wall, pinned to one core: while it
   // settles (5 to 8 solves a step, tens of changed springs each), 668 ms a step updating
-  // always, 569 ms at share 1, 545 ms at 0.1 (refactorising at nearly every iteration); the
-  // settled wall (1.2 solves) 49 to 50 ms either way. An updated entry costs far more than a
+  // always, 246 ms at share 0.1 (refactorising at nearly every iteration; 29 ms each); the
+  // settled wall (1.2 solves) 49 to 51 ms either way. An updated entry costs far more than a
   // factorisation's multiply-add (cholmod_updown revisits each column once per term).
   static constexpr double kModifyShareOfRefactor = 0.1;
 

@@ -79,6 +79,7 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   }
   if (!cholmod_factorize(&a, factor_, &common_)) return false;
   factored_ = common_.status == CHOLMOD_OK && positive_pivots();
+  if (factored_) make_cost_tables();
   return factored_;
 }
 
@@ -116,32 +117,36 @@ bool SparseCholesky::modify(const std::vector<RankOneTerm>& terms, bool update) 
 
 double SparseCholesky::refactorisation_cost() const {
   assert(has_factor());
-  const auto* nz = static_cast<const int*>(factor_->nz);
-  double cost = 0.0;
-  for (size_t j = 0; j < factor_->n; ++j) cost += static_cast<double>(nz[j]) * nz[j];
-  return cost;
+  return refactorisation_cost_;
 }
 
 double SparseCholesky::modification_cost(const std::vector<RankOneTerm>& terms) const {
   assert(has_factor());
+  const int n = static_cast<int>(path_cost_.size());
+  double cost = 0.0;
+  for (const RankOneTerm& t : terms) {
+    int first = n;
+    for (const auto& entry : t.entries) first = std::min(first, inverse_perm_[entry.first]);
+    if (first < n) cost += path_cost_[static_cast<std::size_t>(first)];
+  }
+  return cost;
+}
+
+void SparseCholesky::make_cost_tables() {
   const auto* p = static_cast<const int*>(factor_->p);
   const auto* i = static_cast<const int*>(factor_->i);
   const auto* nz = static_cast<const int*>(factor_->nz);
   const int n = static_cast<int>(factor_->n);
-  double cost = 0.0;
-  for (const RankOneTerm& t : terms) {
-    int j = n;
-    for (const auto& entry : t.entries) j = std::min(j, inverse_perm_[entry.first]);
-    while (j < n) {
-      cost += nz[j];
-      // The parent in the elimination tree: the first row below the diagonal in column j
-      // (the column's entries after the diagonal need not be sorted once it was modified).
-      int parent = n;
-      for (int k = p[j] + 1; k < p[j] + nz[j]; ++k) parent = std::min(parent, i[k]);
-      j = parent;
-    }
+  path_cost_.assign(static_cast<std::size_t>(n), 0.0);
+  refactorisation_cost_ = 0.0;
+  // A parent's index is larger than its child's: fill the table from the root down.
+  for (int j = n - 1; j >= 0; --j) {
+    int parent = n;  // the first row below the diagonal in column j
+    for (int k = p[j] + 1; k < p[j] + nz[j]; ++k) parent = std::min(parent, i[k]);
+    path_cost_[static_cast<std::size_t>(j)] =
+        nz[j] + (parent < n ? path_cost_[static_cast<std::size_t>(parent)] : 0.0);
+    refactorisation_cost_ += static_cast<double>(nz[j]) * nz[j];
   }
-  return cost;
 }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) {
