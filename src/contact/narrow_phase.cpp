@@ -168,9 +168,13 @@ void vertex_pair_contacts(const Polygon& a, int ia, const Polygon& b, int ib,
 
 EdgeFrame edge_frame(const Polygon& poly, int edge) {
   const int n = static_cast<int>(poly.size());
+  return edge_frame(poly[wrap(edge, n)], poly[wrap(edge + 1, n)]);
+}
+
+EdgeFrame edge_frame(const Vec2& start, const Vec2& end) {
   EdgeFrame f;
-  f.start = poly[wrap(edge, n)];
-  f.end = poly[wrap(edge + 1, n)];
+  f.start = start;
+  f.end = end;
   const Vec2 d = f.end - f.start;
   f.length = d.norm();
   f.tangent = d / f.length;

@@ -26,6 +26,8 @@ struct EdgeFrame {
 };
 
 EdgeFrame edge_frame(const Polygon& poly, int edge);
+// The frame of the edge from `start` to `end` of a counter-clockwise polygon.
+EdgeFrame edge_frame(const Vec2& start, const Vec2& end);
 
 // Where a point lies relative to an edge: `gap` its signed distance from the edge's line,
 // positive outside the edge's polygon; `t` the parameter of its projection (0 at start).

@@ -126,7 +126,6 @@ class ContactAssembler {
 
 Vec2 projection_point(const Contact& c) { return c.measure_point(); }
 
-
 RankOneTerm rank_one(const World& w, const Contact& c, const Measure& m, double k) {
   RankOneTerm term;
   const double scale = std::sqrt(k);
@@ -251,7 +250,6 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     c.state.deferred.reset();
     if (p.changes && p.deferrable && defer) {
       c.state.deferred = ModeChange{p.next.mode, p.next.slide_sign, p.next.relock};
-      ++result.deferred;
     } else if (p.changes) {
       if (!p.deferrable) ++result.changed;
       ++c.iterate.mode_changes;

@@ -28,9 +28,6 @@ struct ContactUpdate {
   // the held-tension band: a step that ends with any is not accepted (it is cut), since the
   // held spring pulls its vertex across the gap it started with and so creates energy.
   int held_in_tension = 0;
-  // Changes within the contact resolution left for the next step (ContactState::deferred);
-  // non-zero only when they were the only changes, so the loop has converged.
-  int deferred = 0;
 };
 
 // From the step's increments d: each contact's new gap, forces and next mode.

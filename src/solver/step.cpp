@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "contact/narrow_phase.hpp"
 #include "kinematics/polygon.hpp"
 #include "solver/assembly.hpp"
 #include "solver/configuration_update.hpp"
@@ -288,18 +289,14 @@ double overshoot(const World& world, const Contact& c, const Eigen::VectorXd& d)
   const std::size_t n = be.vertices.size();
   const std::size_t k = static_cast<std::size_t>(c.key.edge);
   const Vec2 v = vertex_after(treatment, bv, static_cast<std::size_t>(c.key.vertex), increments(bv));
-  const Vec2 a = vertex_after(treatment, be, k, increments(be));
-  const Vec2 b = vertex_after(treatment, be, (k + 1) % n, increments(be));
-  const Vec2 edge = b - a;
-  const double length = edge.norm();
-  const Vec2 tangent = edge / length;
-  const double gap = (v - a).dot(Vec2(tangent.y(), -tangent.x()));
-  const double t = (v - a).dot(tangent) / length;
-  if (gap >= 0.0 || t < 0.0 || t > 1.0) return 0.0;
+  const EdgeProjection p = project_on_edge(
+      v, edge_frame(vertex_after(treatment, be, k, increments(be)),
+                    vertex_after(treatment, be, (k + 1) % n, increments(be))));
+  if (p.gap >= 0.0 || p.t < 0.0 || p.t > 1.0) return 0.0;
   // Behind the edge's line is not always inside (an acute corner): ask the polygon.
   Polygon after(n);
   for (std::size_t i = 0; i < n; ++i) after[i] = vertex_after(treatment, be, i, increments(be));
-  return contains_point(after, v) ? -gap : 0.0;
+  return contains_point(after, v) ? -p.gap : 0.0;
 }
 
 // 4. The checks on a settled step: too large a motion, a contact deeper than allowed, or an
