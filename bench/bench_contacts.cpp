@@ -26,7 +26,7 @@ void run_wall(benchmark::State& state, int warmup_steps) {
   dda::RunStats warmup;
   for (int k = 0; k < warmup_steps; ++k) dda::advance_step(world, ws, warmup);
   dda::RunStats stats;
-  const int factorisations_before = ws.solver.factorisations();
+  const dda::LinearSolveStats before = ws.solver.stats();
   for (auto _ : state) {
     const dda::StepOutcome outcome = dda::advance_step(world, ws, stats);
     if (!outcome.ok) state.SkipWithError(outcome.message.c_str());
@@ -42,7 +42,10 @@ void run_wall(benchmark::State& state, int warmup_steps) {
   state.counters["update_ms"] = 1e3 * t.update / steps;
   state.counters["open_close"] = static_cast<double>(stats.open_close_total) / steps;
   state.counters["contacts"] = stats.contacts_final;
-  state.counters["factorisations"] = (ws.solver.factorisations() - factorisations_before) / steps;
+  const dda::LinearSolveStats& after = ws.solver.stats();
+  state.counters["factorisations"] = (after.factorisations - before.factorisations) / steps;
+  state.counters["cg_iterations"] =
+      static_cast<double>(after.cg_iterations - before.cg_iterations) / steps;
 }
 
 // A wall just built: its contacts are established (5 steps; 1 at 10000 bricks), it is

@@ -2,10 +2,12 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+#include "../bench/brick_wall.hpp"
 #include "kinematics/block_matrices.hpp"
 #include "scene_builders.hpp"
 #include "solver/assembly.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/step.hpp"
 #include "solver/world.hpp"
 
 using namespace dda;
@@ -109,105 +111,43 @@ TEST_CASE("a matrix that is not positive definite is reported, not solved", "[so
 }
 
 TEST_CASE("a factor updated by rank-one springs solves like a fresh factorisation", "[solver]") {
-  // The open-close loop changes K only by the springs of contacts that changed mode; the
-  // factor is updated and downdated in place. Reference: dense LDLT of the new matrix.
+  // The open-close loop changes K by the springs of contacts that changed mode; the factor is
+  // updated and downdated in place. Reference: dense LDLT of the new matrix.
   World w = assorted_world(12, 11);
   BlockSystem sys;
   assemble(w, context(w, 0.01), sys);
-  add_block_couplings(w, sys, 1e9);  // springs between neighbours, some removed below
-  CholmodSolver cholmod;
-  REQUIRE(cholmod.solve(sys));
+  add_block_couplings(w, sys, 1e9);  // springs between neighbours
+  Eigen::SparseMatrix<double> lower = sys.lower_triangle();
+  lower.makeCompressed();
+  SparseCholesky factor;
+  REQUIRE(factor.factorize(lower));
 
-  // A new spring p c c^T between blocks 1 and 2, and the removal of the coupling spring
-  // between the first two free neighbours (added by add_block_couplings with p = 1e9).
+  // A new spring p c c^T between blocks 1 and 2.
   const LinearT t = shi_t();
-  auto spring_term = [&](const Block& a, const Block& b, const Vec2& x, double p) {
-    const Mat26 ta = t.at(x - a.moments.centroid);
-    const Mat26 tb = t.at(x - b.moments.centroid);
-    const Vec6 ca = std::sqrt(p) * ta.transpose() * Vec2(0.6, 0.8);
-    const Vec6 cb = -std::sqrt(p) * tb.transpose() * Vec2(0.6, 0.8);
-    RankOneTerm term;
-    for (int i = 0; i < 6; ++i) {
-      term.entries.emplace_back(a.first_dof + i, ca[i]);
-      term.entries.emplace_back(b.first_dof + i, cb[i]);
-    }
-    return term;
-  };
-  auto add_term = [&](const RankOneTerm& term, double sign) {
-    // The same term added to the assembled blocks, for the reference.
-    Eigen::MatrixXd k = sys.dense();
-    for (const auto& [ri, vi] : term.entries) {
-      for (const auto& [rj, vj] : term.entries) k(ri, rj) += sign * vi * vj;
-    }
-    return k;
-  };
-  const Block& b1 = w.blocks[1];
-  const Block& b2 = w.blocks[2];
-  REQUIRE((!b1.fixed && !b2.fixed));
-  const RankOneTerm added = spring_term(b1, b2, 0.5 * (b1.moments.centroid + b2.moments.centroid), 3e9);
-  const Eigen::MatrixXd k_new = add_term(added, +1.0);
-  // Put the new matrix into the block system too (solve_modified checks its answer on it).
-  BlockSystem modified = sys;
-  for (int r = 0; r < modified.block_rows(); ++r) modified.diagonal[r] = k_new.block<6, 6>(6 * r, 6 * r);
-  for (BlockSystem::Coupling& c : modified.couplings) c.k = k_new.block<6, 6>(6 * c.row, 6 * c.col);
-  REQUIRE(modified.couplings.size() == sys.couplings.size());  // 1-2 already coupled
-  const auto x = cholmod.solve_modified(modified, {added}, {});
-  REQUIRE(x);
-  CHECK(cholmod.factorisations() == 1);  // updated, not refactorised
-  const Eigen::VectorXd reference = Eigen::LDLT<Eigen::MatrixXd>(k_new).solve(modified.rhs);
-  // Update and solve are backward stable like the factorisation: 1e-10 as for CHOLMOD vs dense.
-  CHECK((*x - reference).norm() <= 1e-10 * reference.norm());
-
-  // And back: downdating the same spring returns the first system's solution.
-  const auto back = cholmod.solve_modified(sys, {}, {added});
-  REQUIRE(back);
-  CHECK(cholmod.factorisations() == 1);
-  const Eigen::VectorXd first = *solve_dense(sys);
-  CHECK((*back - first).norm() <= 1e-10 * first.norm());
-}
-
-TEST_CASE("a modification that costs more than a tenth of a factorisation is refactorised",
-          "[solver]") {
-  // The cost model (SparseCholesky::modification_cost against refactorisation_cost): one
-  // spring between two blocks is cheap, and is an update; the same spring added 40 times over
-  // walks the factor's elimination tree 40 times and costs more than a tenth of factorising
-  // (kModifyShareOfRefactor), so the system is factorised afresh. Both answers agree with
-  // dense LDLT of the modified matrix.
-  World w = assorted_world(12, 11);
-  BlockSystem sys;
-  assemble(w, context(w, 0.01), sys);
-  add_block_couplings(w, sys, 1e9);
   const Block& a = w.blocks[1];
   const Block& b = w.blocks[2];
   REQUIRE((!a.fixed && !b.fixed));
-  RankOneTerm term;
-  const LinearT t = shi_t();
   const Vec2 x = 0.5 * (a.moments.centroid + b.moments.centroid);
-  const Vec6 ca = 1e4 * t.at(x - a.moments.centroid).transpose() * Vec2(0.6, 0.8);
-  const Vec6 cb = -1e4 * t.at(x - b.moments.centroid).transpose() * Vec2(0.6, 0.8);
+  const Vec6 ca = std::sqrt(3e9) * t.at(x - a.moments.centroid).transpose() * Vec2(0.6, 0.8);
+  const Vec6 cb = -std::sqrt(3e9) * t.at(x - b.moments.centroid).transpose() * Vec2(0.6, 0.8);
+  RankOneTerm term;
   for (int i = 0; i < 6; ++i) {
     term.entries.emplace_back(a.first_dof + i, ca[i]);
     term.entries.emplace_back(b.first_dof + i, cb[i]);
   }
-  for (int copies : {1, 40}) {
-    INFO(copies << " copies of the spring");
-    CholmodSolver cholmod;
-    REQUIRE(cholmod.solve(sys));
-    const std::vector<RankOneTerm> added(static_cast<std::size_t>(copies), term);
-    BlockSystem modified = sys;
-    Eigen::MatrixXd k = sys.dense();
-    for (const auto& [ri, vi] : term.entries) {
-      for (const auto& [rj, vj] : term.entries) k(ri, rj) += copies * vi * vj;
-    }
-    for (int r = 0; r < modified.block_rows(); ++r) modified.diagonal[r] = k.block<6, 6>(6 * r, 6 * r);
-    for (BlockSystem::Coupling& c : modified.couplings) c.k = k.block<6, 6>(6 * c.row, 6 * c.col);
-    const auto solved = cholmod.solve_modified(modified, added, {});
-    REQUIRE(solved);
-    CHECK(cholmod.factorisations() == (copies == 1 ? 1 : 2));
-    const Eigen::VectorXd reference = Eigen::LDLT<Eigen::MatrixXd>(k).solve(modified.rhs);
-    // Backward stable either way: 1e-10 as for CHOLMOD against dense above.
-    CHECK((*solved - reference).norm() <= 1e-10 * reference.norm());
+  Eigen::MatrixXd k_new = sys.dense();
+  for (const auto& [ri, vi] : term.entries) {
+    for (const auto& [rj, vj] : term.entries) k_new(ri, rj) += vi * vj;
   }
+  REQUIRE(factor.modify({term}, true));
+  const Eigen::VectorXd reference = Eigen::LDLT<Eigen::MatrixXd>(k_new).solve(sys.rhs);
+  // Update and solve are backward stable like the factorisation: 1e-10 as for CHOLMOD vs dense.
+  CHECK((factor.solve(sys.rhs) - reference).norm() <= 1e-10 * reference.norm());
+
+  // And back: downdating the same spring returns the first system's solution.
+  REQUIRE(factor.modify({term}, false));
+  const Eigen::VectorXd first = *solve_dense(sys);
+  CHECK((factor.solve(sys.rhs) - first).norm() <= 1e-10 * first.norm());
 }
 
 TEST_CASE("KLU solves an unsymmetric block system like a dense LU", "[solver]") {
@@ -238,4 +178,190 @@ TEST_CASE("KLU solves an unsymmetric block system like a dense LU", "[solver]") 
   CHECK((*x - reference).norm() <= 1e-12 * reference.norm());
   // And the residual of the assembled system itself.
   CHECK((multiply(s, *x) - s.rhs).norm() <= 1e-12 * s.rhs.norm());
+}
+
+namespace {
+
+// The system of the last open-close iteration of a brick wall (bench/brick_wall.hpp) after
+// `steps` steps: contacts, penalty springs, finite_rotation's T.
+BlockSystem settling_wall_system(int bricks, int steps) {
+  World world = make_world(bench::brick_wall_scene(bricks, elastic_material("rock", 2700.0, 1e9, 0.25)));
+  StepWorkspace ws;
+  RunStats stats;
+  for (int k = 0; k < steps; ++k) REQUIRE(advance_step(world, ws, stats).ok);
+  return ws.system;
+}
+
+}  // namespace
+
+TEST_CASE("conjugate gradients on a kept factor solve a changed system like LDLT", "[solver]") {
+  // The kept factor is that of the system K; the new system is K + a spring between two
+  // blocks (rank one) with all values scaled by 1 +- 1e-4 (a step later, T and the contact
+  // geometry moved a little). CG preconditioned by the old factor needs a few iterations,
+  // and its answer meets the energy-norm tolerance 1e-13 (kCgTolerance): within 1e-8 of
+  // dense LDLT in the 2-norm (the 2-norm error may exceed the energy-norm one by the square
+  // root of the condition, ~1e4 with the penalty springs, and dense LDLT's own error is
+  // ~1e-16 x condition ~1e-8; measured ~1e-12).
+  World w = assorted_world(25, 5);
+  BlockSystem sys;
+  assemble(w, context(w, 0.01), sys);
+  add_block_couplings(w, sys, 1e9);
+  CholmodSolver cholmod;
+  REQUIRE(cholmod.solve(sys));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1e-6, 1e-6);
+  BlockSystem moved = sys;
+  for (Mat6& d : moved.diagonal) d *= 1.0 + u(rng);
+  for (BlockSystem::Coupling& c : moved.couplings) c.k *= 1.0 + u(rng);
+  const auto x = cholmod.solve_reusing(moved);
+  REQUIRE(x);
+  CHECK(cholmod.stats().factorisations == 1);  // no new factorisation
+  CHECK(cholmod.stats().reused == 1);
+  // A drift of 1e-6 shrinks the preconditioned residual by ~1e-6 an iteration: 3 reach
+  // 1e-13 (the cap of so small a system is 4 iterations).
+  CHECK(cholmod.stats().cg_iterations <= 4);
+  const Eigen::VectorXd reference = *solve_dense(moved);
+  CHECK((*x - reference).norm() <= 1e-8 * reference.norm());
+
+  // A system far from the factor's (every diagonal block doubled, couplings halved): CG does
+  // not converge within its cap, and the solver factorises instead: the answer is exact.
+  BlockSystem far = sys;
+  for (Mat6& d : far.diagonal) d *= 2.0;
+  for (BlockSystem::Coupling& c : far.couplings) c.k *= -0.5;
+  far.rhs.setRandom();
+  const auto y = cholmod.solve_reusing(far);
+  REQUIRE(y);
+  const Eigen::VectorXd far_reference = *solve_dense(far);
+  CHECK((*y - far_reference).norm() <= 1e-10 * far_reference.norm());
+  CHECK(cholmod.stats().factorisations + cholmod.stats().cg_failures >= 2);
+
+  // With reuse off every call is the plain path.
+  CholmodSolver plain;
+  plain.set_reuse(false);
+  REQUIRE(plain.solve(sys));
+  REQUIRE(plain.solve_reusing(moved));
+  CHECK(plain.stats().factorisations == 2);
+  CHECK(plain.stats().reused == 0);
+}
+
+TEST_CASE("the supernodal factor of a wall's system agrees with dense LDLT, updated or not",
+          "[solver]") {
+  // 400 bricks (2400 unknowns): CHOLMOD's automatic choice is the supernodal LL' here (about
+  // 60 flops per factor entry). Its answer, the answer after rank-one springs (which converts
+  // it to a simplicial LDL'), and the answer of a refactorisation afterwards (which starts
+  // again from the kept supernodal analysis) all agree with dense LDLT to 1e-10 relative, as
+  // CHOLMOD against dense above.
+  const BlockSystem sys = settling_wall_system(400, 3);
+  CholmodSolver cholmod;
+  const auto x = cholmod.solve(sys);
+  REQUIRE(x);
+  const Eigen::VectorXd reference = *solve_dense(sys);
+  CHECK((*x - reference).norm() <= 1e-10 * reference.norm());
+
+  SparseCholesky factor;
+  Eigen::SparseMatrix<double> lower = sys.lower_triangle();
+  lower.makeCompressed();
+  REQUIRE(factor.factorize(lower));
+  CHECK(factor.supernodal());
+  // One spring p c c^T between the unknowns of blocks 3 and 4 (u0 of one, v0 of the other).
+  RankOneTerm term;
+  term.entries = {{6 * 3 + 0, 3e4}, {6 * 4 + 1, -3e4}};
+  REQUIRE(factor.modify({term}, true));
+  CHECK_FALSE(factor.supernodal());
+  Eigen::MatrixXd k = sys.dense();
+  for (const auto& [ri, vi] : term.entries) {
+    for (const auto& [rj, vj] : term.entries) k(ri, rj) += vi * vj;
+  }
+  const Eigen::VectorXd updated = Eigen::LDLT<Eigen::MatrixXd>(k).solve(sys.rhs);
+  const Eigen::VectorXd from_update = factor.solve(sys.rhs);
+  CHECK((from_update - updated).norm() <= 1e-10 * updated.norm());
+  REQUIRE(factor.factorize(lower));
+  CHECK(factor.supernodal());
+  CHECK((factor.solve(sys.rhs) - reference).norm() <= 1e-10 * reference.norm());
+}
+
+TEST_CASE("the fast linear paths give the plain path's answers on a settling wall", "[solver]") {
+  // Issue 10: every fast path (CG on a kept factor, rank-one updates with CG on top) against
+  // the plain factorise-and-solve of the same system, at every solve of 120 steps of a
+  // 100-brick wall settling under gravity (contacts close, slide and lock meanwhile). The
+  // answers differ by at most 1e-8 relative (the CG tolerance is 1e-13 in energy norm; see
+  // the first CG test for the 2-norm). Then the whole run against a run on the plain path:
+  // the same steps, the same contacts, and brick positions within 1e-9 m (the per-solve
+  // differences, ~1e-11 of motions of ~1e-4 m, do not add up to more over 120 steps).
+  const Scene scene = bench::brick_wall_scene(100, elastic_material("rock", 2700.0, 1e9, 0.25));
+  Scene plain_scene = scene;
+  plain_scene.control.reuse_factor = false;  // "linear_solver": "factorise"
+  World fast = make_world(scene);
+  World plain = make_world(plain_scene);
+  StepWorkspace fast_ws, plain_ws;
+  fast_ws.solver.set_check_against_plain(true);
+  RunStats fast_stats, plain_stats;
+  for (int k = 0; k < 120; ++k) {
+    REQUIRE(advance_step(fast, fast_ws, fast_stats).ok);
+    REQUIRE(advance_step(plain, plain_ws, plain_stats).ok);
+  }
+  const LinearSolveStats& s = fast_ws.solver.stats();
+  INFO("factorisations " << s.factorisations << ", reused " << s.reused << ", modified "
+                         << s.modifications << ", CG iterations " << s.cg_iterations);
+  INFO("plain path: " << plain_ws.solver.stats().factorisations << " factorisations");
+  CHECK(s.reused >= 100);  // the paths under test were taken
+  CHECK(s.factorisations < plain_ws.solver.stats().factorisations);
+  CHECK(s.largest_difference_from_plain <= 1e-8);
+  CHECK(fast_stats.open_close_total == plain_stats.open_close_total);
+  CHECK(fast.contacts.size() == plain.contacts.size());
+  double largest = 0.0;
+  for (std::size_t i = 0; i < fast.blocks.size(); ++i) {
+    for (std::size_t v = 0; v < fast.blocks[i].vertices.size(); ++v) {
+      largest = std::max(largest, (fast.blocks[i].vertices[v] - plain.blocks[i].vertices[v]).norm());
+    }
+  }
+  CHECK(largest <= 1e-9);
+}
+
+TEST_CASE("solve_modified chooses update, CG or factorisation by the modelled cost", "[solver]") {
+  // On a 400-brick wall's system (2400 unknowns): one changed spring costs far less to
+  // update (or to leave to CG) than a factorisation, so the factor is kept; 1500 springs
+  // between distinct block pairs would need ~1500 CG iterations or as many updates, more
+  // than a factorisation, so the system is factorised. Every answer agrees with dense LDLT
+  // of the modified matrix to 1e-8 (CG's tolerance, as in the CG test above).
+  const BlockSystem sys = settling_wall_system(400, 3);
+  for (int springs : {1, 1500}) {
+    INFO(springs << " changed springs");
+    std::vector<RankOneTerm> added;
+    Eigen::MatrixXd k = sys.dense();
+    for (int s = 0; s < springs; ++s) {
+      // Block rows r and r + 1: u0 of one against v0 of the other, stiffness 9e8.
+      const int r = s % (sys.block_rows() - 1);
+      RankOneTerm term;
+      term.entries = {{6 * r, 3e4}, {6 * (r + 1) + 1, -3e4 * (1.0 + s / 1500.0)}};
+      for (const auto& [ri, vi] : term.entries) {
+        for (const auto& [rj, vj] : term.entries) k(ri, rj) += vi * vj;
+      }
+      added.push_back(term);
+    }
+    BlockSystem modified = sys;
+    for (int r = 0; r < modified.block_rows(); ++r) modified.diagonal[r] = k.block<6, 6>(6 * r, 6 * r);
+    for (BlockSystem::Coupling& c : modified.couplings) c.k = k.block<6, 6>(6 * c.row, 6 * c.col);
+    // Couplings the springs add where the system had none.
+    for (int r = 0; r + 1 < modified.block_rows(); ++r) {
+      bool coupled = false;
+      for (const BlockSystem::Coupling& c : modified.couplings) coupled |= (c.row == r + 1 && c.col == r);
+      if (!coupled && !k.block<6, 6>(6 * (r + 1), 6 * r).isZero(0.0)) {
+        modified.couplings.push_back({r + 1, r, k.block<6, 6>(6 * (r + 1), 6 * r)});
+      }
+    }
+    CholmodSolver cholmod;
+    REQUIRE(cholmod.solve(sys));
+    const auto x = cholmod.solve_modified(modified, added, {});
+    REQUIRE(x);
+    if (springs == 1) {
+      CHECK(cholmod.last_path() != CholmodSolver::Path::Factorised);
+      CHECK(cholmod.factorisations() == 1);
+    } else {
+      CHECK(cholmod.last_path() == CholmodSolver::Path::Factorised);
+      CHECK(cholmod.factorisations() == 2);
+    }
+    const Eigen::VectorXd reference = Eigen::LDLT<Eigen::MatrixXd>(k).solve(modified.rhs);
+    CHECK((*x - reference).norm() <= 1e-8 * reference.norm());
+  }
 }

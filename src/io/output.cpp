@@ -224,6 +224,7 @@ json settings_json(const World& w) {
       {"allowed_penetration_rule", c.allowed_penetration ? "user" : "auto"},
       {"search_distance", w.search_distance},
       {"energy_tolerance", c.energy_tolerance},
+      {"linear_solver", c.reuse_factor ? "reuse" : "factorise"},
   };
   if (staged) settings["stages"] = stages_json(w.stages);
   return settings;

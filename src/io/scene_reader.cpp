@@ -93,7 +93,7 @@ ControlSettings read_control(const Field& f, bool staged) {
   f.expect_keys({"time_step", "steps", "end_time", "max_displacement_ratio",
                  "dynamic_coefficient", "rotation_update", "penalty", "output_every",
                  "max_open_close", "max_augmentations", "allowed_penetration",
-                 "energy_tolerance"});
+                 "energy_tolerance", "linear_solver"});
   ControlSettings c;
   c.time_steps = read_time_steps(f.member("time_step"));
   read_run_length(f, c, staged);
@@ -123,6 +123,13 @@ ControlSettings read_control(const Field& f, bool staged) {
     c.allowed_penetration = positive_or_auto(*g, "m");
   }
   if (auto g = f.optional_member("energy_tolerance")) c.energy_tolerance = positive_number(*g);
+  if (auto g = f.optional_member("linear_solver")) {
+    const std::string name = g->string();
+    if (name != "reuse" && name != "factorise") {
+      g->fail("unknown linear solver \"" + name + "\" (known: \"reuse\", \"factorise\")");
+    }
+    c.reuse_factor = name == "reuse";
+  }
   return c;
 }
 

@@ -1,5 +1,7 @@
 #include "solver/linear_solver.hpp"
 
+#include <algorithm>
+
 namespace dda {
 
 std::optional<Eigen::VectorXd> solve_dense(const BlockSystem& system) {
@@ -30,32 +32,130 @@ std::vector<std::pair<int, int>> CholmodSolver::block_pattern(const BlockSystem&
 std::optional<Eigen::VectorXd> CholmodSolver::solve(const BlockSystem& system) {
   Eigen::SparseMatrix<double> k = system.lower_triangle();
   k.makeCompressed();
-  ++factorisations_;
+  ++stats_.factorisations;
+  last_path_ = Path::Factorised;
   factored_rows_ = -1;
+  refresh_ = false;
   if (!factor_.factorize(k)) return std::nullopt;
   factored_blocks_ = block_pattern(system);
   factored_rows_ = system.block_rows();
   return factor_.solve(system.rhs);
 }
 
+std::optional<Eigen::VectorXd> CholmodSolver::solve_reusing(const BlockSystem& system) {
+  if (!reuse_ || refresh_ || !factor_.has_factor() || system.block_rows() != factored_rows_) {
+    return solve(system);
+  }
+  std::optional<Eigen::VectorXd> x = conjugate_gradients(system);
+  if (!x) return solve(system);
+  last_path_ = Path::Reused;
+  if (check_) compare_with_plain(system, *x);
+  return x;
+}
+
 std::optional<Eigen::VectorXd> CholmodSolver::solve_modified(const BlockSystem& system,
                                                              const std::vector<RankOneTerm>& added,
                                                              const std::vector<RankOneTerm>& removed) {
-  if (!factor_.has_factor() || system.block_rows() != factored_rows_ ||
-      block_pattern(system) != factored_blocks_) {
+  if (!reuse_ || refresh_ || !factor_.has_factor() || system.block_rows() != factored_rows_) {
     return solve(system);
   }
-  if (factor_.modification_cost(added) + factor_.modification_cost(removed) >
-      kModifyShareOfRefactor * factor_.refactorisation_cost()) {
-    return solve(system);
+  if (added.empty() && removed.empty()) return solve_reusing(system);
+  // Three ways to the answer, by the modelled cost (multiply-adds; deterministic, so a run's
+  // path does not depend on the machine): factorise; update the factor by the springs and
+  // run CG for the drift; or run CG on the factor as it is, about one more iteration per
+  // changed spring.
+  const double iteration = cg_iteration_cost(system);
+  const double factorise = factor_.refactorisation_cost();
+  const double update = kUpdateEntryCost * (factor_.modification_cost(added) +
+                                            factor_.modification_cost(removed)) +
+                        kExpectedCgIterations * iteration;
+  const double cg_only =
+      (static_cast<double>(added.size() + removed.size()) + kExpectedCgIterations) * iteration;
+  if (std::min(update, cg_only) > factorise) return solve(system);
+  if (cg_only <= update) {
+    std::optional<Eigen::VectorXd> x = conjugate_gradients(system);
+    if (!x) return solve(system);
+    last_path_ = Path::Reused;
+    if (check_) compare_with_plain(system, *x);
+    return x;
   }
-  ++modifications_;
+  ++stats_.modifications;
   // Updates first: the matrix stays positive definite all along.
   if (!factor_.modify(added, true) || !factor_.modify(removed, false)) return solve(system);
-  Eigen::VectorXd x = factor_.solve(system.rhs);
-  const double residual = (multiply(system, x) - system.rhs).norm();
-  if (!(residual <= kModifiedResidualTolerance * system.rhs.norm())) return solve(system);
+  // The updated factor is the factor of the previous solve's matrix plus the changed springs:
+  // exact when that matrix was factorised in this iteration's step, close to K when it was
+  // an earlier step's (CG makes up the difference).
+  std::optional<Eigen::VectorXd> x = conjugate_gradients(system);
+  if (!x) return solve(system);
+  last_path_ = Path::Modified;
+  if (check_) compare_with_plain(system, *x);
   return x;
+}
+
+double CholmodSolver::cg_iteration_cost(const BlockSystem& system) const {
+  // A solve with the factor and a product with K (36 multiply-adds for a diagonal block, 72
+  // for a coupling used both ways).
+  const double product = 36.0 * system.block_rows() + 72.0 * static_cast<double>(system.couplings.size());
+  return factor_.solve_cost() + product;
+}
+
+int CholmodSolver::cg_cap(const BlockSystem& system) const {
+  const double affordable =
+      kCgShareOfRefactor * factor_.refactorisation_cost() / cg_iteration_cost(system);
+  return static_cast<int>(std::clamp(affordable, static_cast<double>(kCgMinIterations),
+                                     static_cast<double>(kCgMaxIterations)));
+}
+
+std::optional<Eigen::VectorXd> CholmodSolver::conjugate_gradients(const BlockSystem& system) {
+  const Eigen::VectorXd& b = system.rhs;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  Eigen::VectorXd r = b;
+  Eigen::VectorXd z = factor_.solve(r);
+  const double start = r.dot(z);
+  ++stats_.reused;
+  if (!(start > 0.0)) {
+    // b = 0 (nothing moves), or F is not positive definite on b: no CG.
+    if (b.isZero(0.0)) return x;
+    ++stats_.cg_failures;
+    return std::nullopt;
+  }
+  const int cap = cg_cap(system);
+  Eigen::VectorXd p = z;
+  double rz = start;
+  for (int k = 1; k <= cap; ++k) {
+    ++stats_.cg_iterations;
+    const Eigen::VectorXd q = multiply(system, p);
+    const double curvature = p.dot(q);
+    if (!(curvature > 0.0)) break;  // K is not positive definite along p: factorise
+    const double alpha = rz / curvature;
+    x.noalias() += alpha * p;
+    r.noalias() -= alpha * q;
+    z = factor_.solve(r);
+    const double rz_next = r.dot(z);
+    if (rz_next <= kCgTolerance * kCgTolerance * start) {
+      // Converged. A matrix that took more than half the cap has drifted from the factor:
+      // the next reuse factorises instead.
+      if (2 * k > cap) refresh_ = true;
+      return x;
+    }
+    p = z + (rz_next / rz) * p;
+    rz = rz_next;
+  }
+  ++stats_.cg_failures;
+  return std::nullopt;
+}
+
+void CholmodSolver::compare_with_plain(const BlockSystem& system, const Eigen::VectorXd& x) {
+  Eigen::SparseMatrix<double> k = system.lower_triangle();
+  k.makeCompressed();
+  SparseCholesky plain;
+  if (!plain.factorize(k)) return;
+  const Eigen::VectorXd reference = plain.solve(system.rhs);
+  const double scale = reference.norm();
+  if (scale > 0.0) {
+    stats_.largest_difference_from_plain =
+        std::max(stats_.largest_difference_from_plain, (x - reference).norm() / scale);
+  }
 }
 
 }  // namespace dda

@@ -22,45 +22,102 @@ std::optional<Eigen::VectorXd> solve_klu(const BlockSystem& system);
 // y = K x for the symmetric block system (diagonal blocks plus couplings both ways).
 Eigen::VectorXd multiply(const BlockSystem& system, const Eigen::VectorXd& x);
 
-// Sparse LDL' with CHOLMOD.
-//  - solve(): factorise and solve; the symbolic analysis is kept while the sparsity pattern
-//    is unchanged (a scene without contacts keeps it for the whole run).
-//  - solve_modified(): the system differs from the one last factorised only by the springs
-//    of contacts that changed mode (`added` now present, `removed` gone): the factor is
-//    updated and downdated in place (rank one per spring) instead of refactorised. The
-//    answer is checked against the assembled system and refactorised if it falls short.
+// What CholmodSolver did (counts since construction).
+struct LinearSolveStats {
+  int factorisations = 0;  // numeric factorisations (plain path, fallbacks, refreshes)
+  int modifications = 0;   // factors updated by rank-one springs
+  int reused = 0;          // answers by conjugate gradients on the kept factor
+  long cg_iterations = 0;  // their iterations
+  int cg_failures = 0;     // CG runs that did not converge in their cap (then factorised)
+  // With CholmodSolver::check_against_plain: the largest relative difference between a
+  // reused or modified factor's answer and a fresh factorisation's of the same system.
+  double largest_difference_from_plain = 0.0;
+};
+
+// Sparse Cholesky with CHOLMOD, and three ways of not factorising (issue 10):
+//  - solve(): the plain path: factorise and solve; the symbolic analysis is kept while the
+//    sparsity pattern is unchanged (a scene without contacts keeps it for the whole run).
+//  - solve_reusing(): the system is close to the one last factorised (the next step, a
+//    finite_rotation secant that moved, a plastic tangent): conjugate gradients
+//    preconditioned by the kept factor, which converges in a few iterations when the two
+//    matrices differ little (in exact arithmetic, in at most rank(K - F) + 1). If CG does not
+//    converge within its cap, or the last CG needed more than half of it (the matrix has
+//    drifted from the factor), the system is factorised.
+//  - solve_modified(): the system differs from the kept factor's matrix by the springs
+//    `added` (now present) and `removed` (gone; FactorSprings finds both) and by a small
+//    drift: the factor is updated and downdated in place (rank one per spring) when the cost
+//    model says that is cheaper than factorising, and the answer taken by CG on the updated
+//    factor, as solve_reusing does (which it is when there are no springs to change).
+// With reuse off (set_reuse(false)) every call is the plain path: the reference that tests
+// compare the fast paths with.
 class CholmodSolver {
  public:
+  // How the last answer was found.
+  enum class Path { Factorised, Modified, Reused };
+
   // nullopt when the matrix is not positive definite.
   std::optional<Eigen::VectorXd> solve(const BlockSystem& system);
+  std::optional<Eigen::VectorXd> solve_reusing(const BlockSystem& system);
   std::optional<Eigen::VectorXd> solve_modified(const BlockSystem& system,
                                                 const std::vector<RankOneTerm>& added,
                                                 const std::vector<RankOneTerm>& removed);
 
-  // solve_modified refactorises instead when the modification's modelled cost
-  // (SparseCholesky::modification_cost) exceeds this share of a refactorisation's
-  // (refactorisation_cost). Measured on the 1000-brick wall, pinned to one core: while it
-  // settles (5 to 8 solves a step, tens of changed springs each), 668 ms a step updating
-  // always, 246 ms at share 0.1 (refactorising at nearly every iteration; 29 ms each); the
-  // settled wall (1.2 solves) 49 to 51 ms either way. An updated entry costs far more than a
-  // factorisation's multiply-add (cholmod_updown revisits each column once per term).
-  static constexpr double kModifyShareOfRefactor = 0.1;
+  void set_reuse(bool reuse) { reuse_ = reuse; }
+  // Verification: every answer not from a fresh factorisation is compared with one (a second
+  // factor, so the fast path's own state is untouched); the largest relative difference is
+  // kept in stats(). Costs a factorisation per solve: tests only.
+  void set_check_against_plain(bool check) { check_ = check; }
 
-  // A modified factor's answer must leave a residual below this share of |rhs|; a fresh
-  // factorisation leaves ~1e-16 x condition, so 1e-9 only catches a factor gone astray.
-  static constexpr double kModifiedResidualTolerance = 1e-9;
+  // The cost model of solve_modified: an entry that cholmod_updown updates costs this many
+  // multiply-adds of a factorisation (it revisits each column once per term, where a
+  // factorisation streams through it). Measured on the 1000-brick wall, pinned to one core:
+  // while it settles (5 to 8 solves a step, tens of changed springs each), 668 ms a step
+  // updating always, 246 ms refactorising when updates cost more than 0.1 of a factorisation
+  // by this model (29 ms each, simplicial).
+  static constexpr double kUpdateEntryCost = 10.0;
+  // CG iterations taken for the drift of the matrix from the factor's besides the changed
+  // springs (2 to 4 on the walls a step after the factor was made).
+  static constexpr double kExpectedCgIterations = 3.0;
 
-  int factorisations() const { return factorisations_; }
-  int modifications() const { return modifications_; }
+  // CG stops when the preconditioned residual r' F^-1 r has fallen below kCgTolerance^2 of
+  // its start b' F^-1 b. With F close to K these are the squared energy norms of the error
+  // and of the answer, so the answer is within 1e-13 of the exact one in energy norm; a
+  // contact's gap is then exact far below the contact resolution 1e-5 x allowed_penetration
+  // that decides modes. 1e-10 would do for that, but the hard-case column (20 squares
+  // dropped onto each other, symmetric) amplifies any asymmetry of the answers: with 1e-10
+  // it drifted sideways 5 mm in 1 s, with 1e-13 2.3 mm, with fresh factorisations 1 mm (its
+  // check allows 2.5 mm). CG on a settled wall takes 2 to 3 iterations either way.
+  static constexpr double kCgTolerance = 1e-13;
+  // CG's cap: the iterations that cost this share of a factorisation (modelled by
+  // SparseCholesky's costs: an iteration is a solve with the factor and a product with K),
+  // kept within [kCgMinIterations, kCgMaxIterations]. So a failed CG wastes at most about
+  // half a factorisation.
+  static constexpr double kCgShareOfRefactor = 0.5;
+  static constexpr int kCgMinIterations = 4;
+  static constexpr int kCgMaxIterations = 60;
+
+  int factorisations() const { return stats_.factorisations; }
+  int modifications() const { return stats_.modifications; }
+  const LinearSolveStats& stats() const { return stats_; }
+  Path last_path() const { return last_path_; }
 
  private:
   std::vector<std::pair<int, int>> block_pattern(const BlockSystem& system) const;
+  // Conjugate gradients on `system` preconditioned by the present factor; nullopt when it
+  // does not converge within the cap.
+  std::optional<Eigen::VectorXd> conjugate_gradients(const BlockSystem& system);
+  int cg_cap(const BlockSystem& system) const;
+  double cg_iteration_cost(const BlockSystem& system) const;  // multiply-adds
+  void compare_with_plain(const BlockSystem& system, const Eigen::VectorXd& x);
 
   SparseCholesky factor_;
   std::vector<std::pair<int, int>> factored_blocks_;  // couplings of the factorised system
   int factored_rows_ = -1;
-  int factorisations_ = 0;
-  int modifications_ = 0;
+  bool reuse_ = true;
+  bool check_ = false;
+  bool refresh_ = false;  // the last CG was slow: factorise at the next reuse
+  Path last_path_ = Path::Factorised;
+  LinearSolveStats stats_;
 };
 
 }  // namespace dda

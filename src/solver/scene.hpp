@@ -168,6 +168,12 @@ struct ControlSettings {
   // solver/step.cpp) before a step whose contacts are deeper than allowed_penetration is
   // cut. Range 0 (off: cutting only, as Shi) to 50.
   int max_augmentations = 5;
+  // How the global system is solved (issue 10): true ("reuse", the default) keeps the
+  // factor across iterations and steps (rank-one updates by changed contact springs,
+  // conjugate gradients for the rest, refactorised when that costs less); false
+  // ("factorise") factorises every system afresh, the plain reference path. Both give the
+  // same answer to ~1e-10 relative (CholmodSolver::kCgTolerance).
+  bool reuse_factor = true;
   // Largest penetration allowed at a contact after a step (m); nullopt means "auto":
   // 4e-4 x w0 (Shi's usual value). A step exceeding it is cut and redone.
   std::optional<double> allowed_penetration;

@@ -1,5 +1,7 @@
 #include "solver/sparse_cholesky.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cassert>
 
@@ -27,19 +29,26 @@ cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& k) {
 }  // namespace
 
 SparseCholesky::SparseCholesky() {
+  // Debian's CHOLMOD asks OpenMP for teams of 4 threads in some loops of the supernodal
+  // factorisation. On a process pinned to one core (or two cores shared with other work)
+  // the team's threads wait on each other: at 1000 bricks the settling wall spent ~12 % of
+  // its time in libgomp. Dynamic adjustment lets the runtime give a team no more threads
+  // than the cores it may use.
+  omp_set_dynamic(1);
   cholmod_start(&common_);
-  common_.supernodal = CHOLMOD_SIMPLICIAL;  // updown works on simplicial LDL'
-  common_.final_ll = 0;
+  common_.supernodal = CHOLMOD_AUTO;  // simplicial LDL' when small, supernodal LL' when not
+  common_.final_ll = 0;               // a simplicial factor stays LDL' (what updown needs)
   common_.print = 0;
 }
 
 SparseCholesky::~SparseCholesky() {
   if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
+  if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &common_);
   cholmod_finish(&common_);
 }
 
 bool SparseCholesky::same_pattern(const Eigen::SparseMatrix<double>& k) const {
-  if (factor_ == nullptr || static_cast<int>(outer_.size()) != k.outerSize() + 1 ||
+  if (symbolic_ == nullptr || static_cast<int>(outer_.size()) != k.outerSize() + 1 ||
       static_cast<long>(inner_.size()) != k.nonZeros()) {
     return false;
   }
@@ -47,10 +56,12 @@ bool SparseCholesky::same_pattern(const Eigen::SparseMatrix<double>& k) const {
          std::equal(inner_.begin(), inner_.end(), k.innerIndexPtr());
 }
 
-// LDL' of a positive definite matrix has D > 0. (CHOLMOD's LDL' does not stop at a negative
-// pivot, so the check is made here.) D(j) is the first entry of column j of the factor.
+// A positive definite matrix has an LL' without a failed column (CHOLMOD stops there and
+// sets minor) and an LDL' with D > 0 (CHOLMOD's LDL' does not stop at a negative pivot, so
+// the check is made here: D(j) is the first entry of column j of a simplicial factor).
 bool SparseCholesky::positive_pivots() const {
   if (factor_->minor < factor_->n) return false;
+  if (factor_->is_ll) return true;
   const auto* p = static_cast<const int*>(factor_->p);
   const auto* x = static_cast<const double*>(factor_->x);
   for (size_t j = 0; j < factor_->n; ++j) {
@@ -63,22 +74,40 @@ bool SparseCholesky::positive_pivots() const {
 bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   assert(lower.isCompressed());
   cholmod_sparse a = view_lower(lower);
+  const bool was_factored = factored_;
   factored_ = false;
   if (!same_pattern(lower)) {
     if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
-    factor_ = cholmod_analyze(&a, &common_);
-    if (factor_ == nullptr) return false;
+    if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &common_);
+    if (lower.rows() >= kNestedDissectionRows) {
+      common_.nmethods = 2;  // AMD and METIS, the smaller factor kept
+      common_.method[0].ordering = CHOLMOD_AMD;
+      common_.method[1].ordering = CHOLMOD_METIS;
+    } else {
+      common_.nmethods = 1;
+      common_.method[0].ordering = CHOLMOD_AMD;
+    }
+    symbolic_ = cholmod_analyze(&a, &common_);
+    if (symbolic_ == nullptr) return false;
     outer_.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + lower.outerSize() + 1);
     inner_.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
-    const auto* perm = static_cast<const int*>(factor_->Perm);
-    inverse_perm_.assign(factor_->n, 0);
-    for (size_t i = 0; i < factor_->n; ++i) inverse_perm_[perm[i]] = static_cast<int>(i);
-  } else if (!factor_->is_ll && factor_->xtype != CHOLMOD_PATTERN) {
-    // Refactorising a modified factor: start from its symbolic form again.
-    cholmod_change_factor(CHOLMOD_PATTERN, 0, 0, 0, 1, factor_, &common_);
+    const auto* perm = static_cast<const int*>(symbolic_->Perm);
+    inverse_perm_.assign(symbolic_->n, 0);
+    for (size_t i = 0; i < symbolic_->n; ++i) inverse_perm_[perm[i]] = static_cast<int>(i);
   }
+  // A factor that was refactorised in place keeps its form; one that was converted for
+  // updates (or failed) starts again from the analysis.
+  const bool reusable = was_factored && factor_ != nullptr &&
+                        factor_->is_super == symbolic_->is_super &&
+                        factor_->xtype != CHOLMOD_PATTERN && !modified_;
+  if (!reusable) {
+    if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
+    factor_ = cholmod_copy_factor(symbolic_, &common_);
+    if (factor_ == nullptr) return false;
+  }
+  modified_ = false;
   if (!cholmod_factorize(&a, factor_, &common_)) return false;
-  factored_ = common_.status == CHOLMOD_OK && positive_pivots();
+  factored_ = (common_.status == CHOLMOD_OK) && positive_pivots();
   if (factored_) make_cost_tables();
   return factored_;
 }
@@ -86,6 +115,17 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
 bool SparseCholesky::modify(const std::vector<RankOneTerm>& terms, bool update) {
   assert(has_factor());
   if (terms.empty()) return true;
+  if (!modified_) {
+    // updown needs a simplicial LDL': convert a supernodal LL' (a copy of its entries) or
+    // take the simplicial one as it is.
+    if (factor_->is_super || factor_->is_ll) {
+      if (!cholmod_change_factor(CHOLMOD_REAL, 0, 0, 1, 1, factor_, &common_)) {
+        factored_ = false;
+        return false;
+      }
+    }
+    modified_ = true;
+  }
   std::size_t nnz = 0;
   for (const RankOneTerm& t : terms) nnz += t.entries.size();
   cholmod_sparse* c = cholmod_allocate_sparse(factor_->n, terms.size(), nnz, 1, 1, 0,
@@ -132,20 +172,50 @@ double SparseCholesky::modification_cost(const std::vector<RankOneTerm>& terms) 
   return cost;
 }
 
+// Column counts and elimination-tree parents of the factor just made, from its own
+// structure: a simplicial factor stores each column's rows (the parent is the first row below
+// the diagonal); a supernodal one stores each supernode's rows once, its columns j, j+1, ...
+// are a chain, and the last one's parent is the first row below the supernode.
 void SparseCholesky::make_cost_tables() {
-  const auto* p = static_cast<const int*>(factor_->p);
-  const auto* i = static_cast<const int*>(factor_->i);
-  const auto* nz = static_cast<const int*>(factor_->nz);
   const int n = static_cast<int>(factor_->n);
+  std::vector<int> count(static_cast<std::size_t>(n), 0);
+  std::vector<int> parent(static_cast<std::size_t>(n), n);  // n: a root
+  if (factor_->is_super) {
+    const auto* super = static_cast<const int*>(factor_->super);
+    const auto* pi = static_cast<const int*>(factor_->pi);
+    const auto* rows = static_cast<const int*>(factor_->s);
+    for (size_t s = 0; s < factor_->nsuper; ++s) {
+      const int k1 = super[s], k2 = super[s + 1];
+      const int nrows = pi[s + 1] - pi[s];
+      const int ncols = k2 - k1;
+      int below = n;
+      for (int k = pi[s] + ncols; k < pi[s + 1]; ++k) below = std::min(below, rows[k]);
+      for (int j = k1; j < k2; ++j) {
+        count[static_cast<std::size_t>(j)] = nrows - (j - k1);
+        parent[static_cast<std::size_t>(j)] = j + 1 < k2 ? j + 1 : below;
+      }
+    }
+  } else {
+    const auto* p = static_cast<const int*>(factor_->p);
+    const auto* i = static_cast<const int*>(factor_->i);
+    const auto* nz = static_cast<const int*>(factor_->nz);
+    for (int j = 0; j < n; ++j) {
+      count[static_cast<std::size_t>(j)] = nz[j];
+      for (int k = p[j] + 1; k < p[j] + nz[j]; ++k) {
+        parent[static_cast<std::size_t>(j)] = std::min(parent[static_cast<std::size_t>(j)], i[k]);
+      }
+    }
+  }
   path_cost_.assign(static_cast<std::size_t>(n), 0.0);
   refactorisation_cost_ = 0.0;
+  factor_entries_ = 0.0;
   // A parent's index is larger than its child's: fill the table from the root down.
   for (int j = n - 1; j >= 0; --j) {
-    int parent = n;  // the first row below the diagonal in column j
-    for (int k = p[j] + 1; k < p[j] + nz[j]; ++k) parent = std::min(parent, i[k]);
-    path_cost_[static_cast<std::size_t>(j)] =
-        nz[j] + (parent < n ? path_cost_[static_cast<std::size_t>(parent)] : 0.0);
-    refactorisation_cost_ += static_cast<double>(nz[j]) * nz[j];
+    const auto u = static_cast<std::size_t>(j);
+    const int up = parent[u];
+    path_cost_[u] = count[u] + (up < n ? path_cost_[static_cast<std::size_t>(up)] : 0.0);
+    refactorisation_cost_ += static_cast<double>(count[u]) * count[u];
+    factor_entries_ += count[u];
   }
 }
 

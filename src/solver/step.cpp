@@ -192,11 +192,21 @@ struct LoopResult {
   int augmentations = 0;               // augmented-Lagrangian rounds (penetration control)
 };
 
+// The ledger of the factor's springs follows what the solver did with the factor.
+void follow_factor(const World& world, const StepContext& ctx, StepWorkspace& ws) {
+  switch (ws.solver.last_path()) {
+    case CholmodSolver::Path::Factorised: ws.factor_springs.record_all(world, world.contacts, ctx); break;
+    case CholmodSolver::Path::Modified: ws.factor_springs.commit(); break;
+    case CholmodSolver::Path::Reused: break;  // no springs changed
+  }
+}
+
 // 3. The open-close loop: assemble, solve, let every contact choose its next mode, until no
 //    contact changes (and, for finite_rotation, until each block's secant angle is its own
-//    r0; for plastic blocks, until their Newton iteration has converged). The first
-//    iteration factorises; later ones update the factor by the springs of the contacts that
-//    changed (CholmodSolver::solve_modified), unless T or a material tangent changed.
+//    r0; for plastic blocks, until their Newton iteration has converged). Every
+//    iteration solves with the factor kept from earlier iterations and steps, updated by the
+//    springs of the contacts whose mode changed since it was made, and CG for the rest
+//    (CholmodSolver::solve_modified); it is refactorised when that costs less.
 LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, RunStats& stats,
                             StageClock& clock) {
   StageTimes& times = stats.stage_times;
@@ -216,7 +226,6 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   ContactUpdate contacts;
   int secants_moved = 0;
   MaterialFollowUp materials;
-  bool factor_stale = false;
   int augmented = 0;  // contacts whose multiplier grew after this solve
   do {
     ws.system = ws.block_terms;
@@ -225,13 +234,17 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     // A non-associated plastic block makes the system unsymmetric: KLU then, and CHOLMOD's
     // factor (which no longer follows the contact springs) is rebuilt when next used.
     const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
-    const bool refactor =
-        r.iterations == 0 || secants_moved > 0 || materials.unconverged > 0 || factor_stale;
-    const std::optional<Eigen::VectorXd> solved =
-        unsymmetric ? solve_klu(ws.system)
-        : refactor  ? ws.solver.solve(ws.system)
-                    : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
-    factor_stale = unsymmetric;
+    // The kept factor (from this step or an earlier one) is brought to the present springs
+    // by rank-one updates when that is cheap, and CG on it makes up the rest (T, geometry,
+    // material tangents); CholmodSolver factorises when either would cost more (issue 10).
+    std::optional<Eigen::VectorXd> solved;
+    if (unsymmetric) {
+      solved = solve_klu(ws.system);
+    } else {
+      ws.factor_springs.differences(world, world.contacts, ctx, ws.springs_added, ws.springs_removed);
+      solved = ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
+      if (solved) follow_factor(world, ctx, ws);
+    }
     clock.lap(times.solve);
     ++stats.iterations;
     ++r.iterations;
@@ -240,9 +253,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
       return r;
     }
     r.d = *solved;
-    const std::vector<SpringState> before = spring_states(world.contacts);
     contacts = update_contact_modes(world, world.contacts, r.d, ctx);
-    spring_changes(world, world.contacts, before, ctx, ws.springs_added, ws.springs_removed);
     if (treatment == RotationUpdate::FiniteRotation) {
       secants_moved = follow_secant_angles(world, r.d, angles);
       if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
@@ -365,6 +376,7 @@ void commit_step(World& world, const Eigen::VectorXd& d,
 
 StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   StageClock clock;
+  ws.solver.set_reuse(world.control.reuse_factor);
   // 1. Choose dt.
   const double scheduled_dt = scheduled_time_step(world);
   double dt = scheduled_dt;

@@ -8,6 +8,7 @@
 #include "contact/contact.hpp"
 
 #include "solver/block_system.hpp"
+#include "solver/factor_springs.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/run.hpp"
 #include "solver/world.hpp"
@@ -20,8 +21,9 @@ struct StepWorkspace {
   BlockSystem block_terms;        // the blocks' own terms, assembled once per attempt
   BlockSystem system;             // block terms plus the contacts of one open-close iteration
   CholmodSolver solver;
-  std::vector<RankOneTerm> springs_added;    // contact springs that appeared in the last
-  std::vector<RankOneTerm> springs_removed;  // open-close iteration, and those that went
+  FactorSprings factor_springs;              // the contact springs in the solver's factor
+  std::vector<RankOneTerm> springs_added;    // contact springs to put into the factor,
+  std::vector<RankOneTerm> springs_removed;  // and those to take out (scratch)
 };
 
 // Why an attempt of a step is thrown away and redone with a shorter dt (one cut rule,

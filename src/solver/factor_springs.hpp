@@ -1,0 +1,56 @@
+// The contact springs inside CholmodSolver's kept factor (issue 10, item 4). The factor is
+// kept from step to step; between its matrix and the present one lie (a) the springs of
+// contacts whose mode changed, which appeared or which went (tens a step on a settled
+// 1000-brick wall: deferred changes, chatter between lock and slide), and (b) the small drift
+// of everything else (geometry, T). CG on the kept factor needs about one iteration per
+// changed spring, so (a) is taken out of the factor by rank-one updates before CG: this
+// ledger records, per contact, the spring terms the factor holds, so that exactly those are
+// removed and the present ones added. (b) is left to CG.
+#pragma once
+
+#include <unordered_map>
+#include <vector>
+
+#include "contact/contact.hpp"
+#include "solver/contact_assembly.hpp"
+#include "solver/sparse_cholesky.hpp"
+#include "solver/step_context.hpp"
+#include "solver/world.hpp"
+
+namespace dda {
+
+class FactorSprings {
+ public:
+  // After a factorisation of a system assembled with `contacts` as they are now: the factor
+  // holds exactly their present springs.
+  void record_all(const World& world, const std::vector<Contact>& contacts, const StepContext& ctx);
+
+  // The terms that turn the factor's springs into the contacts' present ones: `removed`
+  // (recorded, as the factor holds them) and `added` (at the present geometry and T). Both
+  // vectors are cleared first. Kept as pending until commit().
+  void differences(const World& world, const std::vector<Contact>& contacts, const StepContext& ctx,
+                   std::vector<RankOneTerm>& added, std::vector<RankOneTerm>& removed);
+
+  // The pending differences were applied to the factor.
+  void commit();
+
+  // Nothing recorded (no factor yet, or it was dropped).
+  void clear();
+
+ private:
+  struct Entry {
+    SpringState state;
+    std::vector<RankOneTerm> terms;
+  };
+  struct KeyHash {
+    std::size_t operator()(const ContactKey& k) const;
+  };
+  using Ledger = std::unordered_map<ContactKey, Entry, KeyHash>;
+
+  static bool same_springs(const SpringState& a, const SpringState& b);
+
+  Ledger recorded_;
+  std::vector<std::pair<ContactKey, Entry>> pending_;  // new entries (terms empty: gone)
+};
+
+}  // namespace dda
