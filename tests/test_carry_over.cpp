@@ -1,5 +1,8 @@
 // contact/carry_over: what a contact keeps from one step to the next (a pure function).
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <random>
+#include <vector>
 
 #include "contact/carry_over.hpp"
 
@@ -90,4 +93,57 @@ TEST_CASE("carry_over: a change the last step deferred is made as the contact is
   CHECK(found[2].state.normal_force == 0.0);
   CHECK(found[2].state.predicted_slip == 0.0);
   for (const Contact& c : found) CHECK_FALSE(c.state.deferred.has_value());
+}
+
+TEST_CASE("carry_over: each contact finds its own predecessor whatever the two lists' order",
+          "[contact][carry]") {
+  // carry_over looks for a predecessor first where the last one was found and then by key:
+  // lists in the same order, one with contacts gone and new ones in between, one reversed
+  // and one shuffled must all give every contact the state of the contact with its key.
+  // Each previous contact carries its index as its normal force (N/m), so a wrong match
+  // shows; the new contacts are open (gap 1 mm) and keep the default state.
+  const std::vector<JointLaw> laws = {{0.5, 0.0, 0.0}};
+  std::vector<Contact> previous;
+  for (int k = 0; k < 40; ++k) {
+    Contact c = contact(k % 4, 1e-3);
+    c.key = {k / 4, k % 4, 40 + k / 4, (k * 7) % 4};
+    c.state.mode = ContactMode::Lock;
+    c.state.normal_force = k;
+    previous.push_back(c);
+  }
+  const auto fresh = [](const Contact& c) {
+    Contact f = contact(c.key.vertex, 1e-3);
+    f.key = c.key;
+    return f;
+  };
+  std::vector<std::vector<Contact>> orders(4);
+  for (const Contact& c : previous) orders[0].push_back(fresh(c));  // the same order
+  for (std::size_t k = 0; k < previous.size(); ++k) {  // every third gone, new ones between
+    if (k % 3 == 1) continue;
+    orders[1].push_back(fresh(previous[k]));
+    if (k % 5 == 0) {
+      Contact added = contact(0, 1e-3);
+      added.key = {100 + static_cast<int>(k), 0, 200, 1};
+      orders[1].push_back(added);
+    }
+  }
+  orders[2] = std::vector<Contact>(orders[0].rbegin(), orders[0].rend());
+  orders[3] = orders[1];
+  std::shuffle(orders[3].begin(), orders[3].end(), std::mt19937(20261123u));
+  for (std::size_t o = 0; o < orders.size(); ++o) {
+    INFO("order " << o);
+    std::vector<Contact> found = orders[o];
+    carry_over(previous, found, 1e-12, false, laws);
+    for (const Contact& c : found) {
+      const auto old = std::find_if(previous.begin(), previous.end(),
+                                    [&](const Contact& p) { return p.key == c.key; });
+      if (old == previous.end()) {
+        CHECK(c.state.mode == ContactMode::Open);
+        CHECK(c.state.normal_force == 0.0);
+      } else {
+        CHECK(c.state.mode == ContactMode::Lock);
+        CHECK(c.state.normal_force == old->state.normal_force);
+      }
+    }
+  }
 }

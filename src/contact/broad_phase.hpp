@@ -13,8 +13,15 @@ namespace dda {
 // Box of a polygon grown by `margin` on every side.
 Box grown_box(const Polygon& poly, double margin);
 
-// All pairs (i, j), i < j, whose boxes overlap (touching counts), in increasing (i, j)
-// order.
+// True when the two boxes overlap (touching counts): the rule overlapping_pairs applies.
+inline bool boxes_overlap(const Box& a, const Box& b) {
+  return a.min.x() <= b.max.x() && b.min.x() <= a.max.x() && a.min.y() <= b.max.y() &&
+         b.min.y() <= a.max.y();
+}
+
+// All pairs (i, j), i < j, whose boxes overlap (boxes_overlap), in increasing (i, j) order.
+// (The sweep tests only the ends boxes_overlap needs: a box met later in the sweep starts no
+// earlier in x, so it cannot end before the first one starts.)
 std::vector<std::pair<int, int>> overlapping_pairs(const std::vector<Box>& boxes);
 
 }  // namespace dda

@@ -15,7 +15,8 @@ namespace dda {
 // any) made now, a new lock anchored where the vertex now is; a new contact already closed
 // (gap <= `touching`: blocks placed face to face keep a few ulps of gap) starts locked,
 // anchored where it is, and bonded when `bond_new_closed` (the first step) and its joint law
-// has cohesion or tensile strength.
+// has cohesion or tensile strength. The keys in `previous` are unique (detection finds one
+// contact per vertex and edge).
 void carry_over(const std::vector<Contact>& previous, std::vector<Contact>& found, double touching,
                 bool bond_new_closed, const std::vector<JointLaw>& laws);
 

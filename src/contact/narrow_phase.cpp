@@ -24,6 +24,12 @@ double half_shortest_edge_at(const Polygon& poly, int v) {
   return 0.5 * std::min((poly[v] - poly[wrap(v - 1, n)]).norm(), (poly[wrap(v + 1, n)] - poly[v]).norm());
 }
 
+// wedge_score of vertex v from its features: the same expression on the same unit vectors.
+double wedge_score(const PolygonFeatures& f, int v, const Vec2& normal) {
+  const VertexFeatures& k = f[static_cast<std::size_t>(v)];
+  return std::min(k.to_prev.dot(normal), k.to_next.dot(normal));
+}
+
 bool in_vertex_pair(const std::vector<VertexPair>& pairs, int va, int vb) {
   return std::any_of(pairs.begin(), pairs.end(),
                      [&](const VertexPair& p) { return p.va == va && p.vb == vb; });
@@ -31,18 +37,19 @@ bool in_vertex_pair(const std::vector<VertexPair>& pairs, int va, int vb) {
 
 // Vertex `v` of `vp` against every edge of `ep`, skipping edges that end at a vertex paired
 // with `v` (those meetings are decided by the vertex-to-vertex rule).
-void vertex_to_edge(const Polygon& vp, int vblock, const Polygon& ep, int eblock, double d0,
+void vertex_to_edge(const Polygon& vp, const PolygonFeatures& vf, int vblock, const Polygon& ep,
+                    const PolygonFeatures& ef, int eblock, double d0,
                     const std::vector<VertexPair>& pairs, bool v_is_a,
                     std::vector<ContactCandidate>& out) {
   const int nv = static_cast<int>(vp.size());
   const int ne = static_cast<int>(ep.size());
   for (int v = 0; v < nv; ++v) {
-    if (!is_convex_vertex(vp, v)) continue;
+    if (!vf[static_cast<std::size_t>(v)].convex) continue;
     for (int e = 0; e < ne; ++e) {
       const int e_end = wrap(e + 1, ne);
       const bool paired_start = v_is_a ? in_vertex_pair(pairs, v, e) : in_vertex_pair(pairs, e, v);
       const bool paired_end = v_is_a ? in_vertex_pair(pairs, v, e_end) : in_vertex_pair(pairs, e_end, v);
-      const EdgeFrame frame = edge_frame(ep, e);
+      const EdgeFrame& frame = ef[static_cast<std::size_t>(e)].edge;
       const EdgeProjection proj = project_on_edge(vp[v], frame);
       // A paired vertex is left to the vertex-pair rule only where it projects near the
       // paired end: two faces that overlap by more than that (blocks face to face, offset
@@ -59,9 +66,10 @@ void vertex_to_edge(const Polygon& vp, int vblock, const Polygon& ep, int eblock
         continue;
       }
       // Outside by up to d0, or inside by no more than half the local edge lengths.
-      const double reach = std::min({d0, half_shortest_edge_at(vp, v), 0.5 * frame.length});
+      const double reach =
+          std::min({d0, vf[static_cast<std::size_t>(v)].half_shortest_edge, 0.5 * frame.length});
       if (proj.t < 0.0 || proj.t > 1.0 || proj.gap > d0 || proj.gap < -reach) continue;
-      if (wedge_score(vp, v, frame.normal) < -kCandidateWedgeTolerance) continue;
+      if (wedge_score(vf, v, frame.normal) < -kCandidateWedgeTolerance) continue;
       // Behind the edge's line but outside its block: beyond the other edge of an acute
       // corner, where the line's extension says "deep inside" (a pack of random blocks had
       // such a vertex enter 3.5 cm deep and lock). Not a contact of this edge.
@@ -81,7 +89,8 @@ void vertex_to_edge(const Polygon& vp, int vblock, const Polygon& ep, int eblock
 // angles of the two wedges, df05 in ntdda). Ties (within round-off) go to the first in a
 // fixed order, so that the choice does not flicker in face-to-face stacks. If no edge passes
 // the wedge test, the squarest one is taken.
-ContactCandidate resolve_convex_pair(const Polygon& a, int ia, const Polygon& b, int ib,
+ContactCandidate resolve_convex_pair(const Polygon& a, const PolygonFeatures& fa, int ia,
+                                     const Polygon& b, const PolygonFeatures& fb, int ib,
                                      const VertexPair& pair) {
   const int na = static_cast<int>(a.size());
   const int nb = static_cast<int>(b.size());
@@ -90,15 +99,18 @@ ContactCandidate resolve_convex_pair(const Polygon& a, int ia, const Polygon& b,
     double score;
     double gap;
   };
-  auto option = [](const Polygon& vp, int vblock, int v, const Polygon& ep, int eblock, int e) {
-    const EdgeFrame frame = edge_frame(ep, e);
-    return Option{{vblock, v, eblock, e, true}, wedge_score(vp, v, frame.normal),
+  auto option = [](const Polygon& vp, const PolygonFeatures& vf, int vblock, int v,
+                   const PolygonFeatures& ef, int eblock, int e) {
+    const EdgeFrame& frame = ef[static_cast<std::size_t>(e)].edge;
+    return Option{{vblock, v, eblock, e, true}, wedge_score(vf, v, frame.normal),
                   project_on_edge(vp[v], frame).gap};
   };
   // Vertex of b on the edges of a at va (before and after it), then vertex of a on b's.
   const std::array<Option, 4> options = {
-      option(b, ib, pair.vb, a, ia, wrap(pair.va - 1, na)), option(b, ib, pair.vb, a, ia, pair.va),
-      option(a, ia, pair.va, b, ib, wrap(pair.vb - 1, nb)), option(a, ia, pair.va, b, ib, pair.vb)};
+      option(b, fb, ib, pair.vb, fa, ia, wrap(pair.va - 1, na)),
+      option(b, fb, ib, pair.vb, fa, ia, pair.va),
+      option(a, fa, ia, pair.va, fb, ib, wrap(pair.vb - 1, nb)),
+      option(a, fa, ia, pair.va, fb, ib, pair.vb)};
   constexpr double kTie = 1e-12;  // m: gaps equal up to the round-off of O(1) coordinates
   const Option* best = nullptr;
   for (const Option& o : options) {
@@ -135,11 +147,12 @@ ContactCandidate resolve_convex_pair(const Polygon& a, int ia, const Polygon& b,
 // Both projections may fall just past the reflex end of their edges (the vertex is then
 // inside the corner, behind both edges); the constraints still hold there, since the block
 // behind each edge's line near r is the block itself.
-void reflex_pair_contacts(const Polygon& vp, int vblock, int v, const Polygon& ep, int eblock,
-                          int r, std::vector<ContactCandidate>& out) {
-  const int ne = static_cast<int>(ep.size());
+void reflex_pair_contacts(const PolygonFeatures& vf, int vblock, int v, const PolygonFeatures& ef,
+                          int eblock, int r, std::vector<ContactCandidate>& out) {
+  const int ne = static_cast<int>(ef.size());
   for (const int e : {wrap(r - 1, ne), r}) {  // the edge ending at r, then the one leaving it
-    if (wedge_score(vp, v, edge_frame(ep, e).normal) < -kCandidateWedgeTolerance) continue;
+    const Vec2& normal = ef[static_cast<std::size_t>(e)].edge.normal;
+    if (wedge_score(vf, v, normal) < -kCandidateWedgeTolerance) continue;
     out.push_back({vblock, v, eblock, e, true});
   }
 }
@@ -151,16 +164,17 @@ void reflex_pair_contacts(const Polygon& vp, int vblock, int v, const Polygon& e
 //  - both reflex: none. Two reflex angles cannot meet without overlapping (their angles add
 //    up to more than 360 degrees), and a reflex vertex is never the first point of its block
 //    to reach another block, so the neighbouring convex vertices carry such a meeting.
-void vertex_pair_contacts(const Polygon& a, int ia, const Polygon& b, int ib,
-                          const VertexPair& pair, std::vector<ContactCandidate>& out) {
-  const bool a_convex = is_convex_vertex(a, pair.va);
-  const bool b_convex = is_convex_vertex(b, pair.vb);
+void vertex_pair_contacts(const Polygon& a, const PolygonFeatures& fa, int ia, const Polygon& b,
+                          const PolygonFeatures& fb, int ib, const VertexPair& pair,
+                          std::vector<ContactCandidate>& out) {
+  const bool a_convex = fa[static_cast<std::size_t>(pair.va)].convex;
+  const bool b_convex = fb[static_cast<std::size_t>(pair.vb)].convex;
   if (a_convex && b_convex) {
-    out.push_back(resolve_convex_pair(a, ia, b, ib, pair));
+    out.push_back(resolve_convex_pair(a, fa, ia, b, fb, ib, pair));
   } else if (b_convex) {
-    reflex_pair_contacts(b, ib, pair.vb, a, ia, pair.va, out);
+    reflex_pair_contacts(fb, ib, pair.vb, fa, ia, pair.va, out);
   } else if (a_convex) {
-    reflex_pair_contacts(a, ia, pair.va, b, ib, pair.vb, out);
+    reflex_pair_contacts(fa, ia, pair.va, fb, ib, pair.vb, out);
   }
 }
 
@@ -203,36 +217,66 @@ bool is_convex_vertex(const Polygon& poly, int vertex) {
   return turn >= -1e-12 * in.norm() * out.norm();  // straight (180 deg) counts as convex
 }
 
+void polygon_features(const Polygon& poly, PolygonFeatures& out) {
+  const int n = static_cast<int>(poly.size());
+  out.resize(poly.size());
+  for (int i = 0; i < n; ++i) {
+    VertexFeatures& k = out[static_cast<std::size_t>(i)];
+    k.edge = edge_frame(poly, i);
+    // As wedge_score makes them.
+    k.to_prev = (poly[wrap(i - 1, n)] - poly[i]).normalized();
+    k.to_next = (poly[wrap(i + 1, n)] - poly[i]).normalized();
+    k.half_shortest_edge = half_shortest_edge_at(poly, i);
+    k.convex = is_convex_vertex(poly, i);
+  }
+}
+
 void find_contacts(const Polygon& a, int ia, const Polygon& b, int ib, double search_distance,
+                   std::vector<ContactCandidate>& out) {
+  PolygonFeatures fa, fb;
+  polygon_features(a, fa);
+  polygon_features(b, fb);
+  find_contacts(a, fa, ia, b, fb, ib, search_distance, out);
+}
+
+void find_contacts(const Polygon& a, const PolygonFeatures& fa, int ia, const Polygon& b,
+                   const PolygonFeatures& fb, int ib, double search_distance,
                    std::vector<ContactCandidate>& out) {
   const std::size_t start = out.size();  // this pair of polygons' contacts begin here
   std::vector<VertexPair> pairs;
   for (int va = 0; va < static_cast<int>(a.size()); ++va) {
     for (int vb = 0; vb < static_cast<int>(b.size()); ++vb) {
       const double reach =
-          std::min({search_distance, half_shortest_edge_at(a, va), half_shortest_edge_at(b, vb)});
+          std::min({search_distance, fa[static_cast<std::size_t>(va)].half_shortest_edge,
+                    fb[static_cast<std::size_t>(vb)].half_shortest_edge});
       if ((a[va] - b[vb]).norm() <= reach) pairs.push_back({va, vb});
     }
   }
-  vertex_to_edge(a, ia, b, ib, search_distance, pairs, true, out);
-  vertex_to_edge(b, ib, a, ia, search_distance, pairs, false, out);
+  vertex_to_edge(a, fa, ia, b, fb, ib, search_distance, pairs, true, out);
+  vertex_to_edge(b, fb, ib, a, fa, ia, search_distance, pairs, false, out);
   // A pair's contact may be one the vertex-to-edge rule has already found (its vertex
-  // projects clear of the paired end): keep one of each.
+  // projects clear of the paired end): keep one of each. Compacted in place: out[start,
+  // kept) holds this pair of polygons' kept contacts, and kept <= i, so a write never
+  // overtakes the read (the earlier pairs' contacts before `start` are not touched: copying
+  // them here made detection quadratic in the number of contacts).
   const std::size_t first_pair_contact = out.size();
-  for (const VertexPair& pair : pairs) vertex_pair_contacts(a, ia, b, ib, pair, out);
-  std::vector<ContactCandidate> kept(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(first_pair_contact));
+  for (const VertexPair& pair : pairs) vertex_pair_contacts(a, fa, ia, b, fb, ib, pair, out);
+  std::size_t kept = first_pair_contact;
   for (std::size_t i = first_pair_contact; i < out.size(); ++i) {
-    const ContactCandidate& c = out[i];
-    const auto same = std::find_if(kept.begin() + static_cast<std::ptrdiff_t>(start), kept.end(), [&](const ContactCandidate& k) {
-      return k.vertex_block == c.vertex_block && k.vertex == c.vertex && k.edge_block == c.edge_block && k.edge == c.edge;
+    const ContactCandidate c = out[i];
+    const auto first = out.begin() + static_cast<std::ptrdiff_t>(start);
+    const auto last = out.begin() + static_cast<std::ptrdiff_t>(kept);
+    const auto same = std::find_if(first, last, [&](const ContactCandidate& k) {
+      return k.vertex_block == c.vertex_block && k.vertex == c.vertex &&
+             k.edge_block == c.edge_block && k.edge == c.edge;
     });
-    if (same == kept.end()) {
-      kept.push_back(c);
+    if (same == last) {
+      out[kept++] = c;
     } else {
       same->vertex_to_vertex = true;  // found by both rules
     }
   }
-  out = std::move(kept);
+  out.resize(kept);
 }
 
 }  // namespace dda

@@ -6,11 +6,9 @@
 
 #include "contact/broad_phase.hpp"
 #include "contact/carry_over.hpp"
-#include "contact/narrow_phase.hpp"
 
 namespace dda {
 namespace {
-
 
 // The share of a face-to-face contact this vertex carries: half of each of its two edges
 // that lies along the contact edge (within the entrance tolerance). A vertex meeting the edge
@@ -25,10 +23,9 @@ double contact_length(const Polygon& vp, int v, const Vec2& edge_normal) {
   return length;
 }
 
-Contact make_contact(const World& world, const ContactCandidate& c) {
+// `frame`: the frame of the candidate's edge, edge_frame(edge block's vertices, c.edge).
+Contact make_contact(const World& world, const ContactCandidate& c, const EdgeFrame& frame) {
   const Polygon& vp = world.blocks[c.vertex_block].vertices;
-  const Polygon& ep = world.blocks[c.edge_block].vertices;
-  const EdgeFrame frame = edge_frame(ep, c.edge);
   const EdgeProjection proj = project_on_edge(vp[c.vertex], frame);
   Contact k;
   k.key = {c.vertex_block, c.vertex, c.edge_block, c.edge};
@@ -47,27 +44,75 @@ Contact make_contact(const World& world, const ContactCandidate& c) {
   return k;
 }
 
+// Both paths end here: `found` holds this step's contacts with fresh geometry; they take the
+// state carried from `contacts` and replace them (`found` is left holding the old ones).
+void carry_and_replace(const World& world, std::vector<Contact>& contacts,
+                       std::vector<Contact>& found) {
+  // Blocks placed face to face are "closed" although round-off may leave a gap of a few ulps.
+  const double touching = 1e-9 * world.w0;
+  carry_over(contacts, found, touching, world.step == 0, world.joint_laws);
+  std::swap(contacts, found);
+}
+
+bool both_fixed(const World& world, int i, int j) {
+  return world.blocks[i].fixed && world.blocks[j].fixed;  // nothing can move
+}
+
 }  // namespace
 
-void detect_contacts(const World& world, std::vector<Contact>& contacts) {
+void detect_contacts_full(const World& world, std::vector<Contact>& contacts) {
   std::vector<Box> boxes;
   boxes.reserve(world.blocks.size());
   for (const Block& b : world.blocks) boxes.push_back(grown_box(b.vertices, 0.5 * world.search_distance));
 
   std::vector<ContactCandidate> candidates;
   for (const auto& [i, j] : overlapping_pairs(boxes)) {
-    if (world.blocks[i].fixed && world.blocks[j].fixed) continue;  // nothing can move
+    if (both_fixed(world, i, j)) continue;
     find_contacts(world.blocks[i].vertices, i, world.blocks[j].vertices, j, world.search_distance,
                   candidates);
   }
-
-  // Blocks placed face to face are "closed" although round-off may leave a gap of a few ulps.
-  const double touching = 1e-9 * world.w0;
   std::vector<Contact> found;
   found.reserve(candidates.size());
-  for (const ContactCandidate& cand : candidates) found.push_back(make_contact(world, cand));
-  carry_over(contacts, found, touching, world.step == 0, world.joint_laws);
-  contacts = std::move(found);
+  for (const ContactCandidate& c : candidates) {
+    const EdgeFrame frame = edge_frame(world.blocks[c.edge_block].vertices, c.edge);
+    found.push_back(make_contact(world, c, frame));
+  }
+  carry_and_replace(world, contacts, found);
+}
+
+void detect_contacts(const World& world, std::vector<Contact>& contacts, DetectionCache& cache) {
+  const std::size_t n = world.blocks.size();
+  cache.boxes.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    cache.boxes[i] = grown_box(world.blocks[i].vertices, 0.5 * world.search_distance);
+  }
+  carried_overlapping_pairs(cache.boxes, kCarriedPairMargin * world.search_distance, cache.pairs,
+                            cache.close);
+
+  // Each block's edge frames and vertex data once, not once per neighbour: a block whose
+  // every pair is between fixed blocks needs none, but they cost little.
+  cache.features.resize(n);
+  for (std::size_t i = 0; i < n; ++i) polygon_features(world.blocks[i].vertices, cache.features[i]);
+
+  cache.candidates.clear();
+  for (const auto& [i, j] : cache.close) {
+    if (both_fixed(world, i, j)) continue;
+    find_contacts(world.blocks[i].vertices, cache.features[i], i, world.blocks[j].vertices,
+                  cache.features[j], j, world.search_distance, cache.candidates);
+  }
+  cache.found.clear();
+  cache.found.reserve(cache.candidates.size());
+  for (const ContactCandidate& c : cache.candidates) {
+    // The same frame edge_frame would make (polygon_features made it so).
+    const PolygonFeatures& edges = cache.features[static_cast<std::size_t>(c.edge_block)];
+    cache.found.push_back(make_contact(world, c, edges[static_cast<std::size_t>(c.edge)].edge));
+  }
+  carry_and_replace(world, contacts, cache.found);
+}
+
+void detect_contacts(const World& world, std::vector<Contact>& contacts) {
+  DetectionCache cache;
+  detect_contacts(world, contacts, cache);
 }
 
 }  // namespace dda

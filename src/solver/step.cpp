@@ -381,8 +381,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   const double scheduled_dt = scheduled_time_step(world);
   double dt = scheduled_dt;
   // 2. Contact detection on the configuration at the step's start; contacts keep the state
-  //    they had last step. A redone attempt starts again from these.
-  detect_contacts(world, world.contacts);
+  //    they had last step. A redone attempt starts again from these. (The pair list the
+  //    workspace carries is only a shortcut: the contacts are those of a full detection.)
+  detect_contacts(world, world.contacts, ws.detection);
   const std::vector<Contact> contacts_at_start = world.contacts;
   clock.lap(stats.stage_times.detect);
   int penetration_cuts = 0;

@@ -8,6 +8,7 @@
 #include "contact/contact.hpp"
 
 #include "solver/block_system.hpp"
+#include "solver/contact_detection.hpp"
 #include "solver/factor_springs.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/run.hpp"
@@ -15,9 +16,10 @@
 
 namespace dda {
 
-// What the step loop keeps between steps: buffers and the factorisation's analysis (the
-// contacts are the world's).
+// What the step loop keeps between steps: buffers, the factorisation's analysis and the
+// broad phase's pair list (the contacts are the world's).
 struct StepWorkspace {
+  DetectionCache detection;       // checked against the world on every detection
   BlockSystem block_terms;        // the blocks' own terms, assembled once per attempt
   BlockSystem system;             // block terms plus the contacts of one open-close iteration
   CholmodSolver solver;
