@@ -193,9 +193,9 @@ struct LoopResult {
 };
 
 // The ledger of the factor's springs follows what the solver did with the factor.
-void follow_factor(const World& world, const StepContext& ctx, StepWorkspace& ws) {
+void follow_factor(const World& world, StepWorkspace& ws) {
   switch (ws.solver.last_path()) {
-    case CholmodSolver::Path::Factorised: ws.factor_springs.record_all(world, world.contacts, ctx); break;
+    case CholmodSolver::Path::Factorised: ws.factor_springs.record_all(world.contacts); break;
     case CholmodSolver::Path::Modified: ws.factor_springs.commit(); break;
     case CholmodSolver::Path::Reused: break;  // no springs changed
   }
@@ -243,7 +243,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     } else {
       ws.factor_springs.differences(world, world.contacts, ctx, ws.springs_added, ws.springs_removed);
       solved = ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
-      if (solved) follow_factor(world, ctx, ws);
+      if (solved) follow_factor(world, ws);
     }
     clock.lap(times.solve);
     ++stats.iterations;
