@@ -13,6 +13,7 @@
 #include "solver/contact_detection.hpp"
 #include "solver/energy.hpp"
 #include "solver/material_coupling.hpp"
+#include "solver/step_solve.hpp"
 
 namespace dda {
 namespace {
@@ -227,10 +228,9 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
     const bool refactor =
         r.iterations == 0 || secants_moved > 0 || materials.unconverged > 0 || factor_stale;
-    const std::optional<Eigen::VectorXd> solved =
-        unsymmetric ? solve_klu(ws.system)
-        : refactor  ? ws.solver.solve(ws.system)
-                    : ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
+    // (The solvers see only a rigid block's u0, v0, r0; solve_system, step_solve.hpp.)
+    const std::optional<Eigen::VectorXd> solved = solve_system(
+        ws, unsymmetric ? SolvePath::Klu : refactor ? SolvePath::Factorise : SolvePath::Modify);
     factor_stale = unsymmetric;
     clock.lap(times.solve);
     ++stats.iterations;
