@@ -431,6 +431,21 @@ std::vector<BadSpec> bad_specs() {
        with(s, "/material/young", -5),
        "material.young",
        {"must be positive, got -5"}},
+      // ---- rigid (a scene key of materials, issue 10, item 7) ----
+      {"rigid not a boolean",
+       with(s, "/material/rigid", "yes"),
+       "material.rigid",
+       {"expected true or false"}},
+      {"rigid plastic material",
+       with(s, "/material/rigid", true),
+       "material.rigid",
+       {"a rigid material cannot be plastic (\"drucker_prager\")"}},
+      {"rigid elastic material",
+       with(without(s, "/initial_stress"), "/material",
+            json(R"({"model": "elastic", "density": 2000, "young": 5e7, "poisson": 0.3,
+                     "rigid": true})")),
+       "material.rigid",
+       {"a rigid material does not deform", "leave \"rigid\" out of a material-point spec"}},
   };
 }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,7 @@
 #include "io/json_input.hpp"
 #include "io/scene_reader.hpp"
 #include "kinematics/polygon.hpp"
+#include "solver/world.hpp"
 
 namespace fs = std::filesystem;
 
@@ -377,6 +379,24 @@ std::vector<BadScene> bad_scenes() {
        "materials.soil.hardening", {"at least one [eps_p, cohesion] row", "got 0"}},
       {"plastic model in plane stress", with(p, "/plane", "stress"), "materials.clay.model",
        {"need plane strain", "plane stress"}},
+      // ---- rigid blocks (issue 10, item 7) ----
+      {"rigid not a boolean (block)", edit(s, "\"fixed\": true", "\"fixed\": true, \"rigid\": 1"),
+       "blocks[0].rigid", {"expected true or false", "the number 1"}},
+      {"rigid not a boolean (material)",
+       edit(s, "\"poisson\": 0.25}", "\"poisson\": 0.25, \"rigid\": \"yes\"}"),
+       "materials.rock.rigid", {"expected true or false", "a string (\"yes\")"}},
+      {"rigid plastic material", with(p, "/materials/soil/rigid", true), "materials.soil.rigid",
+       {"a rigid material cannot be plastic (\"mohr_coulomb\")", "no strain to yield"}},
+      {"rigid block of a plastic material", with(p, "/blocks/1/rigid", true), "blocks[1].rigid",
+       {"a rigid block cannot be of a plastic material (\"clay\")", "elastic material"}},
+      {"rigid block with an initial stress",
+       edit(s, "\"initial_stress\": [-1e5, -2e5, 3e4]}",
+            "\"initial_stress\": [-1e5, -2e5, 3e4], \"rigid\": true}"),
+       "blocks[1].initial_stress",
+       {"must be [0, 0, 0] or left out: the block is rigid", "carries no stress"}},
+      {"block of a rigid material with an initial stress", with(s, "/materials/clay/rigid", true),
+       "blocks[1].initial_stress",
+       {"must be [0, 0, 0] or left out: its material \"clay\" is rigid"}},
       // ---- blocks overlapping at the start ----
       // The triangle pushed 0.5 m down into block 0: its base edge crosses block 0's sides.
       {"block overlaps another", edit(s, triangle, "[[1, 0.5], [2, 0.5], [1.5, 2]]"), "blocks[1]",
@@ -553,6 +573,43 @@ TEST_CASE("plastic materials land in the Material struct, defaults where left ou
   CHECK(*dda::parse_scene_text(with(kPlasticScene, "/materials/soil/tensile_strength", 0), "t.json")
              .materials[2]
              .tensile_strength == 0.0);
+}
+
+TEST_CASE("rigid: a block's key overrides its material's, and the world follows",
+          "[scene][input][rigid]") {
+  // Material "rock" rigid, "clay" not; block 0 takes rock's, block 1 says rigid on clay,
+  // block 2 says not rigid on rock. A zero initial stress on a rigid block is accepted.
+  const std::string text = R"json({
+  "control": {"time_step": 0.01, "steps": 1},
+  "materials": {
+    "rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25, "rigid": true},
+    "clay": {"model": "elastic", "density": 1800, "young": 5e7, "poisson": 0.4}
+  },
+  "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
+  "blocks": [
+    {"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock", "initial_stress": [0, 0, 0]},
+    {"vertices": [[1, 0], [2, 0], [2, 1], [1, 1]], "material": "clay", "rigid": true},
+    {"vertices": [[2, 0], [3, 0], [3, 1], [2, 1]], "material": "rock", "rigid": false}
+  ]
+}
+)json";
+  const dda::Scene scene = dda::parse_scene_text(text, "rigid.json");
+  REQUIRE(scene.materials.size() == 2);
+  CHECK(scene.materials[0].name == "clay");
+  CHECK_FALSE(scene.materials[0].rigid);
+  CHECK(scene.materials[1].rigid);
+  CHECK_FALSE(scene.blocks[0].rigid.has_value());
+  CHECK(scene.blocks[1].rigid == std::optional<bool>(true));
+  CHECK(scene.blocks[2].rigid == std::optional<bool>(false));
+  const dda::World world = dda::make_world(scene);
+  CHECK(world.blocks[0].rigid);
+  CHECK(world.blocks[1].rigid);
+  CHECK_FALSE(world.blocks[2].rigid);
+  // Six slots of d per free block, rigid or not (the solvers see fewer).
+  CHECK(world.dof_count == 18);
+  CHECK(world.blocks[1].elastic == dda::Mat3::Zero());
+  // Left out, "rigid" is false.
+  CHECK_FALSE(dda::parse_scene_text(kValidScene, "valid.json").materials[0].rigid);
 }
 
 TEST_CASE("every rotation update is read by its name", "[scene][input]") {

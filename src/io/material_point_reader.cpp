@@ -78,6 +78,13 @@ MaterialPointSpec read_spec(const Field& root, const std::string& source) {
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
   if (auto g = root.optional_member("plane")) spec.plane = input::read_plane(*g);
   spec.material = input::read_material("material", root.member("material"), spec.plane);
+  if (spec.material.rigid) {
+    // The key belongs to scenes (blocks of the material get no strain); a point of a
+    // rigid material would have no strain path to follow.
+    root.member("material").member("rigid").fail(
+        "a rigid material does not deform, so it has no stress-strain path to follow; leave "
+        "\"rigid\" out of a material-point spec (it marks blocks rigid in a scene)");
+  }
   if (auto g = root.optional_member("initial_stress")) {
     spec.initial_stress = g->vec4("[sxx, syy, szz, sxy]");
     check_initial_stress(*g, spec);

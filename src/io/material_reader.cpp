@@ -114,8 +114,9 @@ PlaneMode read_plane(const Field& f) {
 Material read_material(const std::string& name, const Field& f, PlaneMode plane) {
   // Keys first (against every model's keys, so a typo gets its suggestion), then the model,
   // then whether each key belongs to it.
+  // ("rigid" is a key of every model, so it is not in kModelKeys; a plastic one refuses it.)
   f.expect_keys({"model", "density", "young", "poisson", "cohesion", "friction_angle",
-                 "dilation_angle", "tensile_strength", "hardening", "match"});
+                 "dilation_angle", "tensile_strength", "hardening", "match", "rigid"});
   const Field model_field = f.member("model");
   const std::string model_text = model_field.string();
   const std::optional<MaterialModel> model = parse_model(model_text);
@@ -148,6 +149,15 @@ Material read_material(const std::string& name, const Field& f, PlaneMode plane)
   }
   if (const std::optional<ParameterError> e = validate_material(parameters_of(m, plane))) {
     place_of(f, e->key).fail(e->message);
+  }
+  if (auto g = f.optional_member("rigid")) {
+    m.rigid = g->boolean();
+    // A rigid block has no strain, so a yield surface would never be reached: asking for
+    // both is a contradiction, not something to ignore silently.
+    if (m.rigid && is_plastic(m.model)) {
+      g->fail("a rigid material cannot be plastic (\"" + std::string(model_name(m.model)) +
+              "\"): a rigid block has no strain to yield; use \"model\": \"elastic\"");
+    }
   }
   return m;
 }

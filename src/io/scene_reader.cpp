@@ -449,8 +449,25 @@ Polygon read_polygon(const Field& f) {
 
 // ---- blocks, pins, loads ----
 
+// A rigid block (its own "rigid", else its material's) has no strain, hence no stress and
+// no yield: a plastic material or a non-zero initial stress contradicts it. (A rigid
+// material is never plastic: material_reader refuses that at the material.)
+void check_rigid_block(const Field& f, const BlockSpec& b, const Material& m) {
+  if (!is_rigid(b, m)) return;
+  const std::string why =
+      b.rigid.has_value() ? "the block is rigid" : "its material \"" + m.name + "\" is rigid";
+  if (is_plastic(m.model)) {
+    f.member("rigid").fail("a rigid block cannot be of a plastic material (\"" + m.name +
+                           "\"): it has no strain to yield; give it an elastic material");
+  }
+  if (b.initial_stress != Vec3::Zero()) {
+    f.member("initial_stress").fail("must be [0, 0, 0] or left out: " + why +
+                                    ", and a rigid block carries no stress");
+  }
+}
+
 BlockSpec read_block(const Field& f, const std::vector<Material>& materials) {
-  f.expect_keys({"vertices", "material", "fixed", "velocity", "initial_stress"});
+  f.expect_keys({"vertices", "material", "fixed", "velocity", "initial_stress", "rigid"});
   BlockSpec b;
   b.vertices = read_polygon(f.member("vertices"));
   b.material = material_index(f.member("material"), materials);
@@ -459,6 +476,8 @@ BlockSpec read_block(const Field& f, const std::vector<Material>& materials) {
   if (auto g = f.optional_member("initial_stress")) {
     b.initial_stress = g->vec3("[sxx, syy, sxy]");
   }
+  if (auto g = f.optional_member("rigid")) b.rigid = g->boolean();
+  check_rigid_block(f, b, materials[static_cast<std::size_t>(b.material)]);
   return b;
 }
 

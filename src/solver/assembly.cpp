@@ -19,7 +19,7 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
     const MaterialLinearization& l = ctx.material_terms[static_cast<std::size_t>(index)];
     k.block<3, 3>(kEx, kEx) += b.moments.area * l.tangent;
     f.segment<3>(kEx) -= b.moments.area * (l.stress - l.tangent * l.strain_increment);
-  } else {
+  } else if (!b.rigid) {
     k += elastic_stiffness(b.moments, b.elastic);
     f += initial_stress_force(b.moments, b.stress);
   }
@@ -27,8 +27,16 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
 
 }  // namespace
 
+std::vector<bool> rigid_rows(const World& world) {
+  std::vector<bool> rigid(static_cast<std::size_t>(world.dof_count / 6), false);
+  for (const Block& b : world.blocks) {
+    if (!b.fixed) rigid[static_cast<std::size_t>(b.first_dof / 6)] = b.rigid;
+  }
+  return rigid;
+}
+
 void assemble(const World& world, const StepContext& ctx, BlockSystem& system) {
-  system.reset(world.dof_count / 6);
+  system.reset(rigid_rows(world));
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
     if (b.fixed) continue;

@@ -40,15 +40,16 @@ Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
 
 int residual(N_Vector u, N_Vector r, void* data) {
   Problem& p = *static_cast<Problem*>(data);
-  const Eigen::VectorXd d = view(u);
-  if (!assemble_at(p, d)) return 1;  // recoverable: KINSOL may shorten the step
-  view(r) = p.system.full() * d - p.system.rhs;
+  // KINSOL's unknowns are the dof map's (a rigid block's u0, v0, r0 only); the assembly
+  // reads six slots per block. A failed return is recoverable: KINSOL may shorten the step.
+  if (!assemble_at(p, p.system.expand(view(u)))) return 1;
+  view(r) = p.system.full() * view(u) - p.system.reduce(p.system.rhs);
   return 0;
 }
 
 int jacobian(N_Vector u, N_Vector, SUNMatrix j, void* data, N_Vector, N_Vector) {
   Problem& p = *static_cast<Problem*>(data);
-  if (!assemble_at(p, view(u))) return 1;
+  if (!assemble_at(p, p.system.expand(view(u)))) return 1;
   Eigen::SparseMatrix<double> k = p.system.full();
   k.makeCompressed();
   const sunindextype nnz = k.nonZeros();
@@ -67,7 +68,8 @@ KinsolStepResult solve_step_with_kinsol(const World& world, const std::vector<Co
                                         const StepContext& ctx, double tolerance) {
   KinsolStepResult result;
   Problem problem{world, contacts, ctx, {}, 0};
-  const sunindextype n = world.dof_count;
+  problem.system.reset(rigid_rows(world));  // the dof map, for the number of unknowns
+  const sunindextype n = problem.system.unknowns();
   SUNContext sunctx = nullptr;
   if (SUNContext_Create(nullptr, &sunctx) != 0) {
     result.message = "SUNContext_Create failed";
@@ -92,7 +94,7 @@ KinsolStepResult solve_step_with_kinsol(const World& world, const std::vector<Co
   if (!result.ok) result.message = KINGetReturnFlagName(flag);
   KINGetNumNonlinSolvIters(mem, &result.iterations);
   result.residual_evals = problem.residual_evals;
-  result.d = view(u);
+  result.d = problem.system.expand(view(u));
   KINFree(&mem);
   SUNLinSolFree(ls);
   SUNMatDestroy(jac);

@@ -10,17 +10,24 @@ std::optional<Eigen::VectorXd> solve_dense(const BlockSystem& system) {
   return Eigen::VectorXd(ldlt.solve(system.rhs));
 }
 
+// ---- rigid blocks (issue 10, item 7): x and y in the dof map's reduced layout; each block
+// acts by its leading unknowns_of(row) x unknowns_of(col) corner (BlockSystem) ----
 Eigen::VectorXd multiply(const BlockSystem& system, const Eigen::VectorXd& x) {
+  const std::vector<int>& o = system.offset;
   Eigen::VectorXd y(x.size());
   for (int b = 0; b < system.block_rows(); ++b) {
-    y.segment<6>(6 * b).noalias() = system.diagonal[b] * x.segment<6>(6 * b);
+    const int u = system.unknowns_of(b);
+    y.segment(o[b], u).noalias() = system.diagonal[b].topLeftCorner(u, u) * x.segment(o[b], u);
   }
   for (const BlockSystem::Coupling& c : system.couplings) {
-    y.segment<6>(6 * c.row).noalias() += c.k * x.segment<6>(6 * c.col);
-    y.segment<6>(6 * c.col).noalias() += c.k.transpose() * x.segment<6>(6 * c.row);
+    const int ur = system.unknowns_of(c.row), uc = system.unknowns_of(c.col);
+    y.segment(o[c.row], ur).noalias() += c.k.topLeftCorner(ur, uc) * x.segment(o[c.col], uc);
+    y.segment(o[c.col], uc).noalias() +=
+        c.k.topLeftCorner(ur, uc).transpose() * x.segment(o[c.row], ur);
   }
   return y;
 }
+// ---- end rigid blocks ----
 
 std::vector<std::pair<int, int>> CholmodSolver::block_pattern(const BlockSystem& system) const {
   std::vector<std::pair<int, int>> pattern;

@@ -19,7 +19,8 @@ std::optional<Eigen::VectorXd> solve_dense(const BlockSystem& system);
 // analysed and factorised at every call. nullopt when the matrix is singular.
 std::optional<Eigen::VectorXd> solve_klu(const BlockSystem& system);
 
-// y = K x for the symmetric block system (diagonal blocks plus couplings both ways).
+// y = K x for the symmetric block system (diagonal blocks plus couplings both ways), x and
+// y in the reduced layout of its dof map (BlockSystem: a rigid block's strain slots dropped).
 Eigen::VectorXd multiply(const BlockSystem& system, const Eigen::VectorXd& x);
 
 // What CholmodSolver did (counts since construction).

@@ -72,6 +72,10 @@ struct Material {
   std::optional<double> tensile_strength;  // Pa; Mohr-Coulomb's tension cut-off, absent: none
   std::vector<HardeningPoint> hardening;   // [[eps_p, cohesion], ...]; empty: constant
   DruckerPragerMatch match = DruckerPragerMatch::PlaneStrain;
+  // Blocks of this material are rigid unless their own `rigid` says otherwise (BlockSpec).
+  // Elastic models only (the reader rejects a rigid plastic material: a block without
+  // strain cannot yield); young still counts towards the "auto" penalty.
+  bool rigid = false;
 };
 
 // An elastic material (the common case in code-built scenes and tests).
@@ -128,7 +132,13 @@ struct BlockSpec {
   bool fixed = false;            // fixed blocks carry no unknowns
   Vec3 velocity = Vec3::Zero();  // [vx, vy, omega] at the centroid (m/s, rad/s)
   Vec3 initial_stress = Vec3::Zero();  // [sxx, syy, sxy] (Pa), tension positive
+  // Rigid: 3 unknowns (u0, v0, r0), no strain, no stress (initial_stress must be zero).
+  // Unset: the material's Material::rigid; set, it overrides the material's.
+  std::optional<bool> rigid;
 };
+
+// Whether block `b` of material `m` is rigid: its own key if given, else its material's.
+inline bool is_rigid(const BlockSpec& b, const Material& m) { return b.rigid.value_or(m.rigid); }
 
 // A fixed point: the material point of `block` at `point` is held there by a penalty spring.
 struct PinSpec {

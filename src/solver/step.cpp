@@ -13,6 +13,7 @@
 #include "solver/contact_detection.hpp"
 #include "solver/energy.hpp"
 #include "solver/material_coupling.hpp"
+#include "solver/step_solve.hpp"
 
 namespace dda {
 namespace {
@@ -237,12 +238,13 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     // The kept factor (from this step or an earlier one) is brought to the present springs
     // by rank-one updates when that is cheap, and CG on it makes up the rest (T, geometry,
     // material tangents); CholmodSolver factorises when either would cost more (issue 10).
+    // (The solvers see only a rigid block's u0, v0, r0; solve_system, step_solve.hpp.)
     std::optional<Eigen::VectorXd> solved;
     if (unsymmetric) {
-      solved = solve_klu(ws.system);
+      solved = solve_system(ws, SolvePath::Klu);
     } else {
       ws.factor_springs.differences(world, world.contacts, ctx, ws.springs_added, ws.springs_removed);
-      solved = ws.solver.solve_modified(ws.system, ws.springs_added, ws.springs_removed);
+      solved = solve_system(ws, SolvePath::Modify);
       if (solved) follow_factor(world, ws);
     }
     clock.lap(times.solve);

@@ -45,10 +45,14 @@ World make_world(const Scene& scene) {
     b.material = spec.material;
     b.fixed = spec.fixed;
     b.density = mat.density;
-    b.elastic = elastic_matrix(mat.young, mat.poisson, scene.plane);
+    // A rigid block has no strain and so no stiffness and no stress: D = 0 makes every
+    // strain term (assembly, stress, strain energy) vanish even where the zero strain does
+    // not already; the reader refuses an initial stress or a plastic material for it.
+    b.rigid = is_rigid(spec, mat);
+    b.elastic = b.rigid ? Mat3(Mat3::Zero()) : elastic_matrix(mat.young, mat.poisson, scene.plane);
     b.initial_stress = spec.initial_stress;
     b.stress = spec.initial_stress;
-    b.plastic = is_plastic(mat.model) && !spec.fixed;
+    b.plastic = is_plastic(mat.model) && !spec.fixed && !b.rigid;
     if (b.plastic) {
       b.material_parameters = parameters_of(mat, scene.plane);
       const Vec3& s0 = spec.initial_stress;

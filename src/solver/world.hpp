@@ -30,6 +30,10 @@ struct Block {
   Vec3 initial_stress = Vec3::Zero();
   double initial_area = 0.0;
   int first_dof = -1;  // index of u0 in the global system; -1 for fixed blocks
+  // A rigid block (issue 10, item 7) keeps the six slots of d like any block, but the
+  // linear system solves only its u0, v0, r0 (BlockSystem's dof map): its strain increments
+  // are exactly zero, it has no elastic matrix (D = 0) and no initial stress.
+  bool rigid = false;
   // Plastic blocks (issue 5) take their stress from the material library over the strain
   // their treatment accumulates (src/solver/material_coupling.hpp); elastic blocks never
   // touch it. Their initial stress as (sxx, syy, szz, sxy): szz = nu (sxx + syy), the
@@ -120,7 +124,9 @@ struct World {
   // Joint laws: index 0 "default", used by every block pair not in `pair_joint`.
   std::vector<JointLaw> joint_laws;
   std::unordered_map<std::uint64_t, int> pair_joint;  // key pair_key(i, j), i < j
-  int dof_count = 0;     // unknowns in the global system (6 per free block)
+  // Slots of the step's increments d (6 per free block, rigid or not); the linear system
+  // solves fewer when blocks are rigid (BlockSystem::unknowns()).
+  int dof_count = 0;
 
   // The contacts of the present configuration and the state they carry from step to step
   // (mode, anchor, bond; contact/carry_over.hpp). Detected again at the start of every step.
