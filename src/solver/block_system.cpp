@@ -1,5 +1,6 @@
 #include "solver/block_system.hpp"
 
+#include <algorithm>
 #include <cassert>
 
 namespace dda {
@@ -39,27 +40,72 @@ Eigen::VectorXd BlockSystem::expand(const Eigen::VectorXd& unknowns) const {
 }
 
 // Each 6x6 block enters with its leading unknowns_of(row) x unknowns_of(col) corner at
-// (offset[row], offset[col]): the dof map.
+// (offset[row], offset[col]): the dof map. Written straight into compressed columns (issue
+// 10, item 5): the couplings are bucketed by block column and sorted by block row (several
+// couplings of one pair are summed into one block), so each scalar column is its diagonal
+// block's lower part followed by the coupled blocks in row order, already sorted. (Through
+// triplets this took 1.5 ms at 1000 bricks and 30 ms at 10000.)
 Eigen::SparseMatrix<double> BlockSystem::lower_triangle() const {
+  const int nb = block_rows();
   const int n = unknowns();
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(21 * diagonal.size() + 36 * couplings.size());
-  for (int b = 0; b < block_rows(); ++b) {
-    const int o = offset[b], u = unknowns_of(b);
-    for (int j = 0; j < u; ++j) {
-      for (int i = j; i < u; ++i) entries.emplace_back(o + i, o + j, diagonal[b](i, j));
+  // Couplings of each block column, by row.
+  std::vector<int> first(static_cast<std::size_t>(nb) + 1, 0);
+  for (const Coupling& c : couplings) ++first[static_cast<std::size_t>(c.col) + 1];
+  for (int b = 0; b < nb; ++b) first[b + 1] += first[b];
+  std::vector<int> order(couplings.size());
+  {
+    std::vector<int> next(first.begin(), first.end() - 1);
+    for (std::size_t k = 0; k < couplings.size(); ++k) {
+      order[static_cast<std::size_t>(next[static_cast<std::size_t>(couplings[k].col)]++)] =
+          static_cast<int>(k);
     }
   }
-  for (const Coupling& c : couplings) {
-    const int ur = unknowns_of(c.row), uc = unknowns_of(c.col);
-    for (int j = 0; j < uc; ++j) {
-      for (int i = 0; i < ur; ++i) {
-        entries.emplace_back(offset[c.row] + i, offset[c.col] + j, c.k(i, j));
-      }
+  // Entries below the diagonal block in each scalar column of block column b: the unknowns of
+  // its distinct coupled rows.
+  std::vector<int> below(static_cast<std::size_t>(nb), 0);
+  for (int b = 0; b < nb; ++b) {
+    auto* begin = order.data() + first[b];
+    auto* end = order.data() + first[b + 1];
+    std::sort(begin, end, [this](int x, int y) { return couplings[x].row < couplings[y].row; });
+    for (auto* k = begin; k != end; ++k) {
+      if (k == begin || couplings[*k].row != couplings[*(k - 1)].row) below[b] += unknowns_of(couplings[*k].row);
     }
   }
   Eigen::SparseMatrix<double> lower(n, n);
-  lower.setFromTriplets(entries.begin(), entries.end());  // sums duplicate couplings
+  long nnz = 0;
+  for (int b = 0; b < nb; ++b) {
+    const long u = unknowns_of(b);
+    nnz += u * (u + 1) / 2 + u * below[b];
+  }
+  lower.resizeNonZeros(nnz);
+  int* outer = lower.outerIndexPtr();
+  int* inner = lower.innerIndexPtr();
+  double* value = lower.valuePtr();
+  int at = 0;
+  for (int b = 0; b < nb; ++b) {
+    const int o = offset[b], u = unknowns_of(b);
+    for (int j = 0; j < u; ++j) {
+      outer[o + j] = at;
+      for (int i = j; i < u; ++i, ++at) {
+        inner[at] = o + i;
+        value[at] = diagonal[b](i, j);
+      }
+      for (int k = first[b]; k < first[b + 1]; ++k) {
+        const Coupling& c = couplings[static_cast<std::size_t>(order[k])];
+        const int ur = unknowns_of(c.row);
+        if (k > first[b] && couplings[static_cast<std::size_t>(order[k - 1])].row == c.row) {
+          for (int i = 0; i < ur; ++i) value[at - ur + i] += c.k(i, j);  // same pair: summed
+          continue;
+        }
+        for (int i = 0; i < ur; ++i, ++at) {
+          inner[at] = offset[c.row] + i;
+          value[at] = c.k(i, j);
+        }
+      }
+    }
+  }
+  outer[n] = at;
+  assert(at == nnz);
   return lower;
 }
 
