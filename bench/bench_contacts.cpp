@@ -63,8 +63,9 @@ BENCHMARK(BM_PackedWall)->Arg(10000)->Iterations(3)->Unit(benchmark::kMillisecon
 // The settled wall of issue 9 (at most 2 open-close iterations a step on average, ntdda's
 // 1 to 2.7): after 300 steps (0.6 s) its kinetic energy has fallen below 1e-7 of its
 // potential energy. Issue 10's targets: 1 ms a step at 100 bricks, 15 ms at 1000, 1 s at
-// 10000. The warm-up takes about 20 s at 1000 bricks and 8 to 10 minutes at 10000 (run
-// that one alone: --benchmark_filter='SettledWall/10000').
+// 10000. The warm-up takes about 20 s at 1000 bricks. At 10000 it takes 15 to 25 minutes
+// (3 to 5 s a step) and the taller wall is still settling after it (11 open-close
+// iterations a step at step 230): run that one alone, --benchmark_filter='SettledWall/10000'.
 void BM_SettledWall(benchmark::State& state) { run_wall(state, 300); }
 BENCHMARK(BM_SettledWall)->Arg(100)->Arg(1000)->Iterations(100)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SettledWall)->Arg(10000)->Iterations(10)->Unit(benchmark::kMillisecond);
