@@ -141,7 +141,7 @@ TEST_CASE("rigid system: the reduced solve is the six-slot solve with rigid stra
     const auto dense = solve_dense(reduced);
     REQUIRE(dense);
     CHECK((reduced.expand(*dense) - reference).norm() <= 1e-10 * reference.norm());
-    // The residual of the reduced system itself, by multiply (what solve_modified checks).
+    // The residual of the reduced system itself, by multiply (what CG on a kept factor iterates on).
     CHECK((multiply(reduced, *dense) - reduced.rhs).norm() <= 1e-9 * reduced.rhs.norm());
   }
 

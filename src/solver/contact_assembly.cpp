@@ -275,36 +275,6 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
   return result;
 }
 
-std::vector<SpringState> spring_states(const std::vector<Contact>& contacts) {
-  std::vector<SpringState> states;
-  states.reserve(contacts.size());
-  for (const Contact& c : contacts) {
-    states.push_back({c.state.mode, c.state.t_lock, c.state.predicted_slip});
-  }
-  return states;
-}
-
-void spring_changes(const World& world, const std::vector<Contact>& contacts,
-                    const std::vector<SpringState>& before, const StepContext& ctx,
-                    std::vector<RankOneTerm>& added, std::vector<RankOneTerm>& removed) {
-  assert(before.size() == contacts.size());
-  added.clear();
-  removed.clear();
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const Contact& now = contacts[i];
-    if (now.state.mode == before[i].mode && now.state.t_lock == before[i].t_lock &&
-        now.state.predicted_slip == before[i].predicted_slip) {
-      continue;
-    }
-    Contact then = now;
-    then.state.mode = before[i].mode;
-    then.state.t_lock = before[i].t_lock;
-    then.state.predicted_slip = before[i].predicted_slip;
-    contact_spring_terms(world, then, ctx, removed);
-    contact_spring_terms(world, now, ctx, added);
-  }
-}
-
 int augment_multipliers(std::vector<Contact>& contacts, double target) {
   int grown = 0;
   for (Contact& c : contacts) {

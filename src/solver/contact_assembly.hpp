@@ -39,20 +39,6 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
 void contact_spring_terms(const World& world, const Contact& c, const StepContext& ctx,
                           std::vector<RankOneTerm>& out);
 
-// What of a contact's state shapes its springs: the mode and the shear spring's anchor.
-struct SpringState {
-  ContactMode mode = ContactMode::Open;
-  double t_lock = 0.0;
-  double predicted_slip = 0.0;  // where a sliding contact's normal spring is measured
-};
-std::vector<SpringState> spring_states(const std::vector<Contact>& contacts);
-
-// The springs that appeared (`added`) and disappeared (`removed`) since `before`, for the
-// contacts whose mode or anchor changed; the vectors are cleared first.
-void spring_changes(const World& world, const std::vector<Contact>& contacts,
-                    const std::vector<SpringState>& before, const StepContext& ctx,
-                    std::vector<RankOneTerm>& added, std::vector<RankOneTerm>& removed);
-
 // One augmented-Lagrangian update (Lin, Amadei et al. 1996): every closed contact that
 // penetrates deeper than `target` (m) adds the excess to its multiplier
 // (ContactState::rest_shift; lambda += p (|g| - target), as a length), so the next solve,

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <unordered_set>
 
 namespace dda {
 
@@ -51,13 +52,12 @@ void FactorSprings::differences(const World& world, const std::vector<Contact>& 
     pending_.emplace_back(c.key, c.state.mode);
   }
   if (seen == recorded_.size()) return;
-  // Some recorded contacts are no longer detected: their springs go. Their vertex has left
-  // the search distance, so the spring is taken out where the contact was found last; as
-  // it is not in `contacts` any more, its terms are not available here, and the drift left
-  // in the factor (a spring that is no longer in K) is left to CG, as for any other.
-  std::unordered_map<ContactKey, bool, KeyHash> present;
+  // Some recorded contacts are no longer detected (their vertex left the search distance).
+  // Their terms cannot be made without the contact, so their springs stay in the factor as
+  // drift for CG, like any other; the ledger forgets them.
+  std::unordered_set<ContactKey, KeyHash> present;
   present.reserve(contacts.size());
-  for (const Contact& c : contacts) present.emplace(c.key, true);
+  for (const Contact& c : contacts) present.insert(c.key);
   for (const auto& [key, mode] : recorded_) {
     if (present.count(key) == 0) pending_.emplace_back(key, ContactMode::Open);
   }

@@ -29,13 +29,6 @@ Eigen::VectorXd multiply(const BlockSystem& system, const Eigen::VectorXd& x) {
 }
 // ---- end rigid blocks ----
 
-std::vector<std::pair<int, int>> CholmodSolver::block_pattern(const BlockSystem& system) const {
-  std::vector<std::pair<int, int>> pattern;
-  pattern.reserve(system.couplings.size());
-  for (const BlockSystem::Coupling& c : system.couplings) pattern.emplace_back(c.row, c.col);
-  return pattern;
-}
-
 std::optional<Eigen::VectorXd> CholmodSolver::solve(const BlockSystem& system) {
   Eigen::SparseMatrix<double> k = system.lower_triangle();
   k.makeCompressed();
@@ -44,7 +37,6 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve(const BlockSystem& system) {
   factored_rows_ = -1;
   refresh_ = false;
   if (!factor_.factorize(k)) return std::nullopt;
-  factored_blocks_ = block_pattern(system);
   factored_rows_ = system.block_rows();
   return factor_.solve(system.rhs);
 }
@@ -53,9 +45,13 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve_reusing(const BlockSystem& s
   if (!reuse_ || refresh_ || !factor_.has_factor() || system.block_rows() != factored_rows_) {
     return solve(system);
   }
+  return answer_by_cg(system, Path::Reused);
+}
+
+std::optional<Eigen::VectorXd> CholmodSolver::answer_by_cg(const BlockSystem& system, Path path) {
   std::optional<Eigen::VectorXd> x = conjugate_gradients(system);
   if (!x) return solve(system);
-  last_path_ = Path::Reused;
+  last_path_ = path;
   if (check_) compare_with_plain(system, *x);
   return x;
 }
@@ -79,24 +75,14 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve_modified(const BlockSystem& 
   const double cg_only =
       (static_cast<double>(added.size() + removed.size()) + kExpectedCgIterations) * iteration;
   if (std::min(update, cg_only) > factorise) return solve(system);
-  if (cg_only <= update) {
-    std::optional<Eigen::VectorXd> x = conjugate_gradients(system);
-    if (!x) return solve(system);
-    last_path_ = Path::Reused;
-    if (check_) compare_with_plain(system, *x);
-    return x;
-  }
+  if (cg_only <= update) return answer_by_cg(system, Path::Reused);
   ++stats_.modifications;
   // Updates first: the matrix stays positive definite all along.
   if (!factor_.modify(added, true) || !factor_.modify(removed, false)) return solve(system);
   // The updated factor is the factor of the previous solve's matrix plus the changed springs:
   // exact when that matrix was factorised in this iteration's step, close to K when it was
   // an earlier step's (CG makes up the difference).
-  std::optional<Eigen::VectorXd> x = conjugate_gradients(system);
-  if (!x) return solve(system);
-  last_path_ = Path::Modified;
-  if (check_) compare_with_plain(system, *x);
-  return x;
+  return answer_by_cg(system, Path::Modified);
 }
 
 double CholmodSolver::cg_iteration_cost(const BlockSystem& system) const {

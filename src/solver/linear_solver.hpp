@@ -103,16 +103,17 @@ class CholmodSolver {
   Path last_path() const { return last_path_; }
 
  private:
-  std::vector<std::pair<int, int>> block_pattern(const BlockSystem& system) const;
   // Conjugate gradients on `system` preconditioned by the present factor; nullopt when it
   // does not converge within the cap.
   std::optional<Eigen::VectorXd> conjugate_gradients(const BlockSystem& system);
+  // The answer by CG on the present factor, recorded as found by `path`; a fresh
+  // factorisation when CG does not converge.
+  std::optional<Eigen::VectorXd> answer_by_cg(const BlockSystem& system, Path path);
   int cg_cap(const BlockSystem& system) const;
   double cg_iteration_cost(const BlockSystem& system) const;  // multiply-adds
   void compare_with_plain(const BlockSystem& system, const Eigen::VectorXd& x);
 
   SparseCholesky factor_;
-  std::vector<std::pair<int, int>> factored_blocks_;  // couplings of the factorised system
   int factored_rows_ = -1;
   bool reuse_ = true;
   bool check_ = false;

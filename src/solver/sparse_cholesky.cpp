@@ -114,9 +114,8 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   }
   // A factor that was refactorised in place keeps its form; one that was converted for
   // updates (or failed) starts again from the analysis.
-  const bool reusable = was_factored && factor_ != nullptr &&
-                        factor_->is_super == symbolic_->is_super &&
-                        factor_->xtype != CHOLMOD_PATTERN && !modified_;
+  const bool reusable =
+      was_factored && factor_ != nullptr && factor_->is_super == symbolic_->is_super && !modified_;
   if (!reusable) {
     if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
     factor_ = cholmod_copy_factor(symbolic_, &common_);
@@ -124,7 +123,7 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   }
   modified_ = false;
   if (!cholmod_factorize(&a, factor_, &common_)) return false;
-  factored_ = (common_.status == CHOLMOD_OK) && positive_pivots();
+  factored_ = common_.status == CHOLMOD_OK && positive_pivots();
   if (factored_) make_cost_tables();
   return factored_;
 }

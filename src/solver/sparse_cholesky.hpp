@@ -62,7 +62,6 @@ class SparseCholesky {
   Eigen::VectorXd solve(const Eigen::VectorXd& b);
 
   bool has_factor() const { return factor_ != nullptr && factored_; }
-  int rows() const { return factor_ == nullptr ? 0 : static_cast<int>(factor_->n); }
   bool supernodal() const { return factor_ != nullptr && factor_->is_super; }
   // Multiply-adds of one solve with the factor (two triangular sweeps over nnz(L)).
   double solve_cost() const { return 2.0 * factor_entries_; }

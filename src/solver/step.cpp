@@ -232,8 +232,9 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     ws.system = ws.block_terms;
     add_contact_terms(world, world.contacts, ctx, ws.system);
     clock.lap(times.assemble);
-    // A non-associated plastic block makes the system unsymmetric: KLU then, and CHOLMOD's
-    // factor (which no longer follows the contact springs) is rebuilt when next used.
+    // A non-associated plastic block makes the system unsymmetric: KLU then, fresh each time.
+    // CHOLMOD's kept factor is left as it was (FactorSprings still describes it), and serves
+    // again when the system is symmetric.
     const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
     // The kept factor (from this step or an earlier one) is brought to the present springs
     // by rank-one updates when that is cheap, and CG on it makes up the rest (T, geometry,
