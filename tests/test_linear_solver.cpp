@@ -404,3 +404,83 @@ TEST_CASE("the lower triangle written straight into compressed columns is the de
     CHECK(sorted);
   }
 }
+
+TEST_CASE("the analysis is kept on a pattern that survives contact changes", "[solver]") {
+  // Issue 10, item 5: a system whose couplings all lie in the analysed pattern (a contact
+  // gone) is factorised on that analysis, with explicit zeros; a new coupling makes a new
+  // analysis, of the union, so the system without it is then factorised without another.
+  // Every answer agrees with dense LDLT of its own system to 1e-10 relative (the bound of the
+  // first test: two backward-stable factorisations of one SPD matrix).
+  const BlockSystem all = settling_wall_system(100, 3);
+  REQUIRE(all.couplings.size() > 10);
+  BlockSystem fewer = all;  // two contacts gone
+  fewer.couplings.erase(fewer.couplings.begin() + 3);
+  fewer.couplings.erase(fewer.couplings.begin() + 7);
+  BlockSystem more = fewer;  // a coupling no contact of `all` made: between rows 0 and last
+  const int last = more.block_rows() - 1;
+  bool coupled = false;
+  for (const BlockSystem::Coupling& c : all.couplings) coupled |= (c.row == last && c.col == 0);
+  REQUIRE_FALSE(coupled);
+  more.couplings.push_back({last, 0, 1e3 * Mat6::Identity()});
+
+  SparseCholesky factor;
+  auto solves_like_dense = [&factor](const BlockSystem& s) {
+    Eigen::SparseMatrix<double> lower = s.lower_triangle();
+    lower.makeCompressed();
+    REQUIRE(factor.factorize(lower));
+    const Eigen::VectorXd reference = *solve_dense(s);
+    CHECK((factor.solve(s.rhs) - reference).norm() <= 1e-10 * reference.norm());
+  };
+  solves_like_dense(all);
+  CHECK(factor.analyses() == 1);
+  solves_like_dense(fewer);  // inside the analysed pattern
+  CHECK(factor.analyses() == 1);
+  solves_like_dense(all);
+  CHECK(factor.analyses() == 1);
+  solves_like_dense(more);  // a new entry: analysed again, on the union
+  CHECK(factor.analyses() == 2);
+  solves_like_dense(all);  // inside the union
+  solves_like_dense(fewer);
+  CHECK(factor.analyses() == 2);
+
+  // Far more entries in the pattern than in the matrix: the next analysis drops them. A
+  // system of the diagonal blocks alone plus the new coupling needs a new analysis (the
+  // coupling (last, 0) is in the union, but take one outside it too), and the union would
+  // have ~6 times its entries, far past kPatternSlack: it is analysed on its own pattern,
+  // after which `all` needs an analysis again.
+  BlockSystem bare = all;
+  bare.couplings = {{last, 1, 1e3 * Mat6::Identity()}};
+  solves_like_dense(bare);
+  CHECK(factor.analyses() == 3);
+  solves_like_dense(all);
+  CHECK(factor.analyses() == 4);
+}
+
+TEST_CASE("a kept factor is refreshed when a CG costs more than the average solve since",
+          "[solver]") {
+  // The refresh rule (linear_solver.hpp): the system it was made for, solved again and
+  // again, takes CG one iteration each (F = K), which never costs more than the average
+  // (which carries the factorisation): no refactorisation in 30 solves. A drifted system
+  // then takes several iterations, more than the average by then: the solve after it
+  // factorises. Answers within 1e-8 of dense LDLT, as in the CG test above.
+  const BlockSystem sys = settling_wall_system(100, 3);
+  CholmodSolver cholmod;
+  REQUIRE(cholmod.solve(sys));
+  for (int k = 0; k < 30; ++k) REQUIRE(cholmod.solve_reusing(sys));
+  CHECK(cholmod.stats().factorisations == 1);
+  CHECK(cholmod.stats().cg_iterations <= 30);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1e-3, 1e-3);
+  BlockSystem drifted = sys;
+  for (Mat6& d : drifted.diagonal) d *= 1.0 + u(rng);
+  const long before = cholmod.stats().cg_iterations;
+  const auto x = cholmod.solve_reusing(drifted);
+  REQUIRE(x);
+  CHECK(cholmod.stats().factorisations == 1);
+  CHECK(cholmod.stats().cg_iterations - before >= 3);  // a drift of 1e-3: several
+  const Eigen::VectorXd reference = *solve_dense(drifted);
+  CHECK((*x - reference).norm() <= 1e-8 * reference.norm());
+  REQUIRE(cholmod.solve_reusing(drifted));
+  CHECK(cholmod.stats().factorisations == 2);
+  CHECK(cholmod.last_path() == CholmodSolver::Path::Factorised);
+}

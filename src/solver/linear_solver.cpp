@@ -36,8 +36,12 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve(const BlockSystem& system) {
   last_path_ = Path::Factorised;
   factored_rows_ = -1;
   refresh_ = false;
-  if (!factor_.factorize(k)) return std::nullopt;
+  const bool factored = factor_.factorize(k);
+  stats_.analyses = factor_.analyses();
+  if (!factored) return std::nullopt;
   factored_rows_ = system.block_rows();
+  since_factor_cost_ = factor_.refactorisation_cost() + factor_.solve_cost();
+  since_factor_solves_ = 1;
   return factor_.solve(system.rhs);
 }
 
@@ -69,14 +73,14 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve_modified(const BlockSystem& 
   // changed spring.
   const double iteration = cg_iteration_cost(system);
   const double factorise = factor_.refactorisation_cost();
-  const double update = kUpdateEntryCost * (factor_.modification_cost(added) +
-                                            factor_.modification_cost(removed)) +
-                        kExpectedCgIterations * iteration;
+  const double modification = factor_.modification_cost(added) + factor_.modification_cost(removed);
+  const double update = modification + kExpectedCgIterations * iteration;
   const double cg_only =
       (static_cast<double>(added.size() + removed.size()) + kExpectedCgIterations) * iteration;
   if (std::min(update, cg_only) > factorise) return solve(system);
   if (cg_only <= update) return answer_by_cg(system, Path::Reused);
   ++stats_.modifications;
+  since_factor_cost_ += modification;
   // Updates first: the matrix stays positive definite all along.
   if (!factor_.modify(added, true) || !factor_.modify(removed, false)) return solve(system);
   // The updated factor is the factor of the previous solve's matrix plus the changed springs:
@@ -89,7 +93,7 @@ double CholmodSolver::cg_iteration_cost(const BlockSystem& system) const {
   // A solve with the factor and a product with K (36 multiply-adds for a diagonal block, 72
   // for a coupling used both ways).
   const double product = 36.0 * system.block_rows() + 72.0 * static_cast<double>(system.couplings.size());
-  return factor_.solve_cost() + product;
+  return factor_.solve_cost() + kProductNs * product;
 }
 
 int CholmodSolver::cg_cap(const BlockSystem& system) const {
@@ -126,9 +130,12 @@ std::optional<Eigen::VectorXd> CholmodSolver::conjugate_gradients(const BlockSys
     z = factor_.solve(r);
     const double rz_next = r.dot(z);
     if (rz_next <= kCgTolerance * kCgTolerance * start) {
-      // Converged. A matrix that took more than half the cap has drifted from the factor:
-      // the next reuse factorises instead.
-      if (2 * k > cap) refresh_ = true;
+      // Converged. The refresh (linear_solver.hpp): this solve's CG against the average
+      // cost of a solve since the factorisation.
+      const double cost = (k + 1) * cg_iteration_cost(system);  // + the first solve with F
+      since_factor_cost_ += cost;
+      ++since_factor_solves_;
+      if (cost * since_factor_solves_ > since_factor_cost_) refresh_ = true;
       return x;
     }
     p = z + (rz_next / rz) * p;

@@ -26,6 +26,7 @@ Eigen::VectorXd multiply(const BlockSystem& system, const Eigen::VectorXd& x);
 // What CholmodSolver did (counts since construction).
 struct LinearSolveStats {
   int factorisations = 0;  // numeric factorisations (plain path, fallbacks, refreshes)
+  int analyses = 0;        // symbolic analyses (orderings) among them: new patterns
   int modifications = 0;   // factors updated by rank-one springs
   int reused = 0;          // answers by conjugate gradients on the kept factor
   long cg_iterations = 0;  // their iterations
@@ -69,13 +70,13 @@ class CholmodSolver {
   // kept in stats(). Costs a factorisation per solve: tests only.
   void set_check_against_plain(bool check) { check_ = check; }
 
-  // The cost model of solve_modified: an entry that cholmod_updown updates costs this many
-  // multiply-adds of a factorisation (it revisits each column once per term, where a
-  // factorisation streams through it). Measured on the 1000-brick wall, pinned to one core:
-  // while it settles (5 to 8 solves a step, tens of changed springs each), 668 ms a step
-  // updating always, 246 ms refactorising when updates cost more than 0.1 of a factorisation
-  // by this model (29 ms each, simplicial).
-  static constexpr double kUpdateEntryCost = 10.0;
+  // The cost model of solve_modified and of the refresh below: SparseCholesky's modelled
+  // nanoseconds (refactorisation, rank-one modification, solve with the factor) plus
+  // kProductNs per multiply-add of a product with K. (Until 2026-11-23 it counted
+  // multiply-adds, which priced a supernodal factorisation by its flops: 170 CG iterations'
+  // worth at 10000 bricks where it takes 10, so the factor drifted until CG took 19
+  // iterations a step.)
+  static constexpr double kProductNs = 0.5;
   // CG iterations taken for the drift of the matrix from the factor's besides the changed
   // springs (2 to 4 on the walls a step after the factor was made).
   static constexpr double kExpectedCgIterations = 3.0;
@@ -89,13 +90,18 @@ class CholmodSolver {
   // it drifted sideways 5 mm in 1 s, with 1e-13 2.3 mm, with fresh factorisations 1 mm (its
   // check allows 2.5 mm). CG on a settled wall takes 2 to 3 iterations either way.
   static constexpr double kCgTolerance = 1e-13;
-  // CG's cap: the iterations that cost this share of a factorisation (modelled by
-  // SparseCholesky's costs: an iteration is a solve with the factor and a product with K),
-  // kept within [kCgMinIterations, kCgMaxIterations]. So a failed CG wastes at most about
-  // half a factorisation.
-  static constexpr double kCgShareOfRefactor = 0.5;
+  // CG's cap: the iterations that cost as much as a factorisation (by the model above), kept
+  // within [kCgMinIterations, kCgMaxIterations]. Not knowing how many iterations a CG will
+  // need, stopping it where it has cost one factorisation spends at most twice what the
+  // better choice would have (the rent-or-buy argument); ~10 at 10000 bricks, ~20 at 1000.
+  static constexpr double kCgShareOfRefactor = 1.0;
   static constexpr int kCgMinIterations = 4;
   static constexpr int kCgMaxIterations = 60;
+
+  // The refresh: a kept factor drifts from the matrices it preconditions, and CG takes more
+  // iterations from step to step. The cost per solve since the last factorisation (its cost
+  // plus every modification and CG iteration since) is least when a solve's CG costs as
+  // much as that average: after a CG that cost more, the next reuse factorises.
 
   int factorisations() const { return stats_.factorisations; }
   int modifications() const { return stats_.modifications; }
@@ -117,7 +123,9 @@ class CholmodSolver {
   int factored_rows_ = -1;
   bool reuse_ = true;
   bool check_ = false;
-  bool refresh_ = false;  // the last CG was slow: factorise at the next reuse
+  bool refresh_ = false;  // the last CG cost more than the average: factorise at next reuse
+  double since_factor_cost_ = 0.0;  // modelled ns since the last factorisation, and solves
+  int since_factor_solves_ = 0;
   Path last_path_ = Path::Factorised;
   LinearSolveStats stats_;
 };

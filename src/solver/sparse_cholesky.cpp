@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <iterator>
 
 namespace dda {
 namespace {
@@ -25,14 +26,14 @@ void keep_large_allocations_mapped() {
 }
 
 // A cholmod_sparse view of an Eigen compressed lower triangle (no copy).
-cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& k) {
+cholmod_sparse view_lower(int n, std::size_t nnz, const int* p, const int* i, const double* x) {
   cholmod_sparse a{};
-  a.nrow = static_cast<size_t>(k.rows());
-  a.ncol = static_cast<size_t>(k.cols());
-  a.nzmax = static_cast<size_t>(k.nonZeros());
-  a.p = const_cast<int*>(k.outerIndexPtr());
-  a.i = const_cast<int*>(k.innerIndexPtr());
-  a.x = const_cast<double*>(k.valuePtr());
+  a.nrow = static_cast<size_t>(n);
+  a.ncol = static_cast<size_t>(n);
+  a.nzmax = nnz;
+  a.p = const_cast<int*>(p);
+  a.i = const_cast<int*>(i);
+  a.x = const_cast<double*>(x);
   a.stype = -1;  // symmetric, lower triangle stored
   a.itype = CHOLMOD_INT;
   a.xtype = CHOLMOD_REAL;
@@ -42,7 +43,17 @@ cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& k) {
   return a;
 }
 
+cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& k) {
+  return view_lower(static_cast<int>(k.rows()), static_cast<std::size_t>(k.nonZeros()),
+                    k.outerIndexPtr(), k.innerIndexPtr(), k.valuePtr());
+}
+
 }  // namespace
+
+cholmod_sparse SparseCholesky::view_pattern() const {
+  return view_lower(static_cast<int>(outer_.size()) - 1, inner_.size(), outer_.data(),
+                    inner_.data(), values_.data());
+}
 
 SparseCholesky::SparseCholesky() {
   // Debian's CHOLMOD asks OpenMP for teams of 4 threads in some loops of the supernodal
@@ -65,12 +76,60 @@ SparseCholesky::~SparseCholesky() {
 }
 
 bool SparseCholesky::same_pattern(const Eigen::SparseMatrix<double>& k) const {
-  if (symbolic_ == nullptr || static_cast<int>(outer_.size()) != k.outerSize() + 1 ||
+  if (static_cast<int>(outer_.size()) != k.outerSize() + 1 ||
       static_cast<long>(inner_.size()) != k.nonZeros()) {
     return false;
   }
   return std::equal(outer_.begin(), outer_.end(), k.outerIndexPtr()) &&
          std::equal(inner_.begin(), inner_.end(), k.innerIndexPtr());
+}
+
+bool SparseCholesky::scatter_into_pattern(const Eigen::SparseMatrix<double>& k) {
+  if (static_cast<int>(outer_.size()) != k.outerSize() + 1 ||
+      static_cast<long>(inner_.size()) < k.nonZeros()) {
+    return false;
+  }
+  values_.assign(inner_.size(), 0.0);
+  const int* kp = k.outerIndexPtr();
+  const int* ki = k.innerIndexPtr();
+  const double* kx = k.valuePtr();
+  for (Eigen::Index j = 0; j < k.outerSize(); ++j) {
+    int at = outer_[static_cast<std::size_t>(j)];
+    const int end = outer_[static_cast<std::size_t>(j) + 1];
+    for (int q = kp[j]; q < kp[j + 1]; ++q) {  // both columns sorted: one merge
+      while (at < end && inner_[static_cast<std::size_t>(at)] < ki[q]) ++at;
+      if (at == end || inner_[static_cast<std::size_t>(at)] != ki[q]) return false;
+      values_[static_cast<std::size_t>(at++)] = kx[q];
+    }
+  }
+  return true;
+}
+
+void SparseCholesky::grow_pattern(const Eigen::SparseMatrix<double>& k) {
+  const bool can_merge = static_cast<int>(outer_.size()) == k.outerSize() + 1;
+  std::vector<int> outer(static_cast<std::size_t>(k.outerSize()) + 1, 0);
+  std::vector<int> inner;
+  inner.reserve(static_cast<std::size_t>(k.nonZeros()) + (can_merge ? inner_.size() / 8 : 0));
+  const int* kp = k.outerIndexPtr();
+  const int* ki = k.innerIndexPtr();
+  for (Eigen::Index j = 0; j < k.outerSize(); ++j) {
+    if (can_merge) {
+      std::set_union(ki + kp[j], ki + kp[j + 1], inner_.begin() + outer_[static_cast<std::size_t>(j)],
+                     inner_.begin() + outer_[static_cast<std::size_t>(j) + 1], std::back_inserter(inner));
+    } else {
+      inner.insert(inner.end(), ki + kp[j], ki + kp[j + 1]);
+    }
+    outer[static_cast<std::size_t>(j) + 1] = static_cast<int>(inner.size());
+  }
+  // Entries the present matrix does not have are kept while they are few: a contact that
+  // opened beyond the search distance for some steps and comes back finds its place. Past
+  // kPatternSlack of the matrix's own entries, the pattern starts again from the matrix's.
+  if (static_cast<double>(inner.size()) > (1.0 + kPatternSlack) * static_cast<double>(k.nonZeros())) {
+    outer.assign(kp, kp + k.outerSize() + 1);
+    inner.assign(ki, ki + k.nonZeros());
+  }
+  outer_ = std::move(outer);
+  inner_ = std::move(inner);
 }
 
 // A positive definite matrix has an LL' without a failed column (CHOLMOD stops there and
@@ -90,12 +149,19 @@ bool SparseCholesky::positive_pivots() const {
 
 bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   assert(lower.isCompressed());
-  cholmod_sparse a = view_lower(lower);
   const bool was_factored = factored_;
   factored_ = false;
-  if (!same_pattern(lower)) {
+  // The matrix as CHOLMOD sees it: itself when its pattern is the analysed one; else its
+  // values scattered into the analysed pattern when that holds all of its entries (a
+  // contact gone since the analysis leaves explicit zeros); else a new analysis, of the
+  // union of the two patterns (grow_pattern).
+  bool own_pattern = symbolic_ != nullptr && same_pattern(lower);
+  if (!own_pattern && !(symbolic_ != nullptr && scatter_into_pattern(lower))) {
     if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
     if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &common_);
+    grow_pattern(lower);
+    own_pattern = same_pattern(lower);
+    if (!own_pattern) scatter_into_pattern(lower);  // the union holds it: cannot fail
     if (lower.rows() >= kNestedDissectionRows) {
       common_.nmethods = 2;  // AMD and METIS, the smaller factor kept
       common_.method[0].ordering = CHOLMOD_AMD;
@@ -104,14 +170,15 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
       common_.nmethods = 1;
       common_.method[0].ordering = CHOLMOD_AMD;
     }
-    symbolic_ = cholmod_analyze(&a, &common_);
+    cholmod_sparse pattern = own_pattern ? view_lower(lower) : view_pattern();
+    symbolic_ = cholmod_analyze(&pattern, &common_);
     if (symbolic_ == nullptr) return false;
-    outer_.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + lower.outerSize() + 1);
-    inner_.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
+    ++analyses_;
     const auto* perm = static_cast<const int*>(symbolic_->Perm);
     inverse_perm_.assign(symbolic_->n, 0);
     for (size_t i = 0; i < symbolic_->n; ++i) inverse_perm_[perm[i]] = static_cast<int>(i);
   }
+  cholmod_sparse a = own_pattern ? view_lower(lower) : view_pattern();
   // A factor that was refactorised in place keeps its form; one that was converted for
   // updates (or failed) starts again from the analysis.
   const bool reusable =
@@ -173,7 +240,9 @@ bool SparseCholesky::modify(const std::vector<RankOneTerm>& terms, bool update) 
 
 double SparseCholesky::refactorisation_cost() const {
   assert(has_factor());
-  return refactorisation_cost_;
+  const double simplicial = kSimplicialFlopNs * column_count_squares_;
+  return supernodal_analysis_ ? std::min(simplicial, kSupernodalEntryNs * factor_entries_)
+                              : simplicial;
 }
 
 double SparseCholesky::modification_cost(const std::vector<RankOneTerm>& terms) const {
@@ -185,7 +254,12 @@ double SparseCholesky::modification_cost(const std::vector<RankOneTerm>& terms) 
     for (const auto& entry : t.entries) first = std::min(first, inverse_perm_[entry.first]);
     if (first < n) cost += path_cost_[static_cast<std::size_t>(first)];
   }
-  return cost;
+  return kUpdateEntryNs * cost;
+}
+
+double SparseCholesky::solve_cost() const {
+  const double per_entry = 0.4 + 0.6 * std::min(1.0, factor_entries_ / 5e6);
+  return 2.0 * factor_entries_ * per_entry;
 }
 
 // Column counts and elimination-tree parents of the factor just made, from its own
@@ -222,15 +296,16 @@ void SparseCholesky::make_cost_tables() {
       }
     }
   }
+  supernodal_analysis_ = symbolic_->is_super;
   path_cost_.assign(static_cast<std::size_t>(n), 0.0);
-  refactorisation_cost_ = 0.0;
+  column_count_squares_ = 0.0;
   factor_entries_ = 0.0;
   // A parent's index is larger than its child's: fill the table from the root down.
   for (int j = n - 1; j >= 0; --j) {
     const auto u = static_cast<std::size_t>(j);
     const int up = parent[u];
     path_cost_[u] = count[u] + (up < n ? path_cost_[static_cast<std::size_t>(up)] : 0.0);
-    refactorisation_cost_ += static_cast<double>(count[u]) * count[u];
+    column_count_squares_ += static_cast<double>(count[u]) * count[u];
     factor_entries_ += count[u];
   }
 }

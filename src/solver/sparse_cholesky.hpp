@@ -31,11 +31,18 @@ class SparseCholesky {
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
 
-  // Factorises the symmetric matrix given by its lower triangle (analysis kept while the
-  // pattern is unchanged). False when it is not positive definite. Orderings: AMD, and for
-  // large systems (at least kNestedDissectionRows rows) METIS nested dissection as well,
-  // the one with the smaller factor kept.
+  // Factorises the symmetric matrix given by its lower triangle. False when it is not
+  // positive definite. The analysis (ordering and symbolic factor) is kept on a pattern that
+  // survives contact changes (issue 10, item 5): a matrix whose entries all lie in the
+  // analysed pattern is factorised on it, with explicit zeros where it has none; one with an
+  // entry outside is analysed again, on the union of the two patterns, as long as that has
+  // at most kPatternSlack more entries than the matrix (else on the matrix's own pattern).
+  // Orderings: AMD, and for large systems (at least kNestedDissectionRows rows) METIS nested
+  // dissection as well, the one with the smaller factor kept.
   bool factorize(const Eigen::SparseMatrix<double>& lower);
+  static constexpr double kPatternSlack = 0.1;
+  // Analyses made since construction.
+  int analyses() const { return analyses_; }
   // On the 1000-brick wall (6000 rows) AMD's factor is the smaller (6.9e7 flops against
   // METIS's 8.9e7) and its analysis 3 ms against 9 ms; at 10000 bricks (60000 rows) a
   // factorisation with METIS takes 0.27-0.32 s supernodal on one core (issue 10's
@@ -46,42 +53,60 @@ class SparseCholesky {
   // result is not positive definite (the factor is then unusable until factorize()).
   bool modify(const std::vector<RankOneTerm>& terms, bool update);
 
-  // A cost model of the two ways to the factor of a modified matrix, in "entry operations"
-  // (deterministic, from the structure of the last factorisation, so a run's path does not
-  // depend on the machine's timing; both read tables made once per factorisation):
-  //  - refactorisation_cost(): sum over columns j of L of nnz(L(:,j))^2, the flop count of
-  //    a left-looking LDL';
-  //  - modification_cost(terms): for each rank-one term, the sum of nnz(L(:,j)) over the
-  //    columns j that cholmod_updown visits, the elimination-tree path from the term's first
-  //    row (in the factor's order) to the root. (Updates add fill, so later ones cost a
-  //    little more than the model says.)
+  // A cost model of the ways to an answer, in modelled nanoseconds of one core of the CI
+  // machine (AMD EPYC, Debian's serial OpenBLAS). Deterministic: computed from the structure
+  // of the last factorisation (tables made once per factorisation), so a run's path does
+  // not depend on the machine's timing. Fitted on the brick walls' systems, 100 to 10000
+  // bricks (docs/linear-solver.md, "Cost model", has the measurements):
+  //  - refactorisation_cost(): a simplicial LDL' is a left-looking sweep at a flat
+  //    2.5 GFlop/s, kSimplicialFlopNs x sum over columns j of nnz(L(:,j))^2 (its flop
+  //    count). A supernodal LL' runs dense BLAS kernels whose rate grows with the flops per
+  //    factor entry (2.8 GFlop/s at 300 bricks, 15 at 10000), which makes its time about
+  //    kSupernodalEntryNs x nnz(L) at every size measured (2.7, 12, 50, 220 ms at 300, 1000,
+  //    3000, 10000 bricks); the smaller of the two models.
+  //  - modification_cost(terms): for each rank-one term, kUpdateEntryNs x the sum of
+  //    nnz(L(:,j)) over the columns j that cholmod_updown visits, the elimination-tree path
+  //    from the term's first row (in the factor's order) to the root. (Updates add fill, so
+  //    later ones cost a little more than the model says.)
+  //  - solve_cost(): two triangular sweeps over nnz(L), memory bound: 0.4 ns an entry while
+  //    the factor fits in cache, rising to 1 ns from nnz(L) = 5e6 (60 MB) on.
   double refactorisation_cost() const;
   double modification_cost(const std::vector<RankOneTerm>& terms) const;
+  double solve_cost() const;
+  static constexpr double kSimplicialFlopNs = 0.4;
+  static constexpr double kSupernodalEntryNs = 27.0;
+  static constexpr double kUpdateEntryNs = 1.0;
 
   // Solves with the present factor. Requires a successful factorize().
   Eigen::VectorXd solve(const Eigen::VectorXd& b);
 
   bool has_factor() const { return factor_ != nullptr && factored_; }
   bool supernodal() const { return factor_ != nullptr && factor_->is_super; }
-  // Multiply-adds of one solve with the factor (two triangular sweeps over nnz(L)).
-  double solve_cost() const { return 2.0 * factor_entries_; }
 
  private:
   bool same_pattern(const Eigen::SparseMatrix<double>& k) const;
+  // Puts k's values into the analysed pattern (values_); false when k has an entry outside.
+  bool scatter_into_pattern(const Eigen::SparseMatrix<double>& k);
+  // The pattern to analyse next: k's, with the present one's entries while they are few.
+  void grow_pattern(const Eigen::SparseMatrix<double>& k);
+  cholmod_sparse view_pattern() const;  // outer_, inner_, values_ as CHOLMOD reads them
   bool positive_pivots() const;
   void make_cost_tables();
 
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;
   cholmod_factor* symbolic_ = nullptr;  // the analysis of the present pattern, kept
-  std::vector<int> outer_;
+  std::vector<int> outer_;  // the analysed pattern (lower triangle, compressed columns)
   std::vector<int> inner_;
+  std::vector<double> values_;  // a matrix scattered into it
+  int analyses_ = 0;
   std::vector<int> inverse_perm_;  // row i of A is row inverse_perm_[i] of P A
   // The cost model's tables, made by factorize(): for each column j of L (factor's order),
   // the summed column counts from j up the elimination tree to the root; and sum nnz^2.
   std::vector<double> path_cost_;
-  double refactorisation_cost_ = 0.0;
+  double column_count_squares_ = 0.0;  // sum over columns of nnz(L(:,j))^2
   double factor_entries_ = 0.0;  // nnz(L) of the last factorisation
+  bool supernodal_analysis_ = false;  // the next factorisation is supernodal
   bool factored_ = false;
   bool modified_ = false;  // converted to simplicial LDL' and updated since factorised
 };

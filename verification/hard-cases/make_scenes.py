@@ -112,9 +112,17 @@ def case_column(n=20):
     # Block k closes its own 1 cm gap and the k gaps below it.
     scale = sum(weight(p) * 0.01 * (k + 1) for k, p in enumerate(polys))
     # A column of squares has no reason to lean: its drift is round-off and chatter.
-    # 1 % of the block width is far below a lean a user would see and far above round-off.
+    # Static runs (no impacts): round-off only, measured 1e-9 to 5e-8 m; 1e-6 m bounds it.
+    # Dynamic runs: the squares land flat on each other, and a landing a hair off flat
+    # tilts; the impacts amplify round-off about 1e10-fold between 0.12 s and 0.2 s, on the
+    # plain factorise path as on the kept-factor one (measured 2026-11-23: 1e-15 m -> 1e-5
+    # m), and the drift saturates at a few mm whose value is a chaotic outcome (dt 0.002 s:
+    # 1.0 mm factorising, 2.3 to 3.6 mm with CG on the kept factor at tolerances 1e-13 and
+    # 1e-14). So the dynamic check asks for no lean a user would see: 1 cm, 4 % of a block
+    # width, a 0.1 degree lean of the 5.2 m column. (It was 2.5 mm for both until then.)
     return dict(blocks=blocks, scale=scale, scale_note="m g x gaps closed below each block",
-                checks=[{"kind": "drift_x", "limit": 0.0025},
+                checks=[{"kind": "drift_x", "limit": 0.01, "dynamic_only": True},
+                        {"kind": "drift_x", "limit": 1e-6, "static_only": True},
                         {"kind": "rest", "fraction": 0.01}, released(0.9)],
                 end_time=1.0, fall=0.2)
 
@@ -320,7 +328,8 @@ def main():
                     json.dump(scene(name, c, dt, mode), f, indent=1)
                     f.write("\n")
                 checks = [k for k in c["checks"]
-                          if not (k.get("dynamic_only") and mode == "static")]
+                          if not (k.get("dynamic_only") and mode == "static")
+                          and not (k.get("static_only") and mode == "dynamic")]
                 manifest.append({"name": name, "case": case, "dt": dt, "mode": mode,
                                  "scene": os.path.relpath(path, args.out_dir),
                                  "scale": c["scale"], "scale_note": c["scale_note"],
