@@ -53,8 +53,8 @@ class SparseCholesky {
   // result is not positive definite (the factor is then unusable until factorize()).
   bool modify(const std::vector<RankOneTerm>& terms, bool update);
 
-  // A cost model of the ways to an answer, in modelled nanoseconds of one core of the CI
-  // machine (AMD EPYC, Debian's serial OpenBLAS). Deterministic: computed from the structure
+  // A cost model of the ways to an answer, in modelled nanoseconds of one core of the
+  // machine it was fitted on (2-core AMD EPYC, 2026-11-23, Debian's serial OpenBLAS). Deterministic: computed from the structure
   // of the last factorisation (tables made once per factorisation), so a run's path does
   // not depend on the machine's timing. Fitted on the brick walls' systems, 100 to 10000
   // bricks (docs/linear-solver.md, "Cost model", has the measurements):
