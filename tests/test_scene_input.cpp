@@ -48,7 +48,8 @@ const std::string kValidScene = R"json({
   ],
   "joints": [{"blocks": [1, 0], "material": "bonded"}],
   "pins": [{"point": [1.5, 1.5]}],
-  "point_loads": [{"point": [1, 1], "force": [10, -20]}]
+  "point_loads": [{"point": [1, 1], "force": [10, -20]}],
+  "monitors": [{"name": "crest", "point": [1.5, 1.8]}, {"name": "toe", "point": [3, 0.5]}]
 }
 )json";
 
@@ -251,6 +252,17 @@ std::vector<BadScene> bad_scenes() {
        "pins[0].point", {"(10, 10) is outside every block"}},
       {"point load outside every block", edit(s, "\"point\": [1, 1]", "\"point\": [-5, 3]"),
        "point_loads[0].point", {"(-5, 3) is outside every block"}},
+      // ---- monitors (issue 11) ----
+      {"monitor outside every block", edit(s, "\"point\": [3, 0.5]", "\"point\": [9, 9]"),
+       "monitors[1].point", {"(9, 9) is outside every block"}},
+      {"monitor without a name", edit(s, "\"name\": \"toe\", ", ""), "monitors[1].name",
+       {"missing"}},
+      {"monitor named twice", edit(s, "\"name\": \"toe\"", "\"name\": \"crest\""),
+       "monitors[1].name", {"\"crest\" is already the name of another monitor"}},
+      {"monitor name with a comma", edit(s, "\"name\": \"toe\"", "\"name\": \"to,e\""),
+       "monitors[1].name", {"comma"}},
+      {"monitor with an unknown key", edit(s, "\"name\": \"toe\"", "\"name\": \"toe\", \"block\": 0"),
+       "monitors[1].block", {"unknown key (known keys: name, point)"}},
       // ---- new in issue 3: control of contacts ----
       {"max_open_close 1", edit(s, "\"max_open_close\": 5", "\"max_open_close\": 1"),
        "control.max_open_close", {"at least 2, got 1"}},
@@ -519,6 +531,12 @@ TEST_CASE("a valid scene lands in the Scene struct field by field", "[scene][inp
   CHECK(scene.point_loads[0].force == dda::Vec2(10, -20));
   // (1, 1) is on the edge both blocks share: the first block in the list takes it.
   CHECK(scene.point_loads[0].block == 0);
+  REQUIRE(scene.monitors.size() == 2);
+  CHECK(scene.monitors[0].name == "crest");
+  CHECK(scene.monitors[0].point == dda::Vec2(1.5, 1.8));
+  CHECK(scene.monitors[0].block == 1);
+  CHECK(scene.monitors[1].name == "toe");
+  CHECK(scene.monitors[1].block == 0);
 }
 
 TEST_CASE("plastic materials land in the Material struct, defaults where left out",
@@ -814,8 +832,10 @@ TEST_CASE("a sliver far thinner than the block's size counts as zero area", "[sc
   CHECK_THAT(reader_error(sliver, "bad.json"),
              Catch::StartsWith("bad.json: blocks[1].vertices: ") && Catch::Contains("zero area"));
   const std::string thin = edit(kValidScene, triangle, "[[1, 1], [2, 1], [1.5, 1.000001]]");
-  CHECK_NOTHROW(dda::parse_scene_text(edit(thin, "{\"point\": [1.5, 1.5]}", "{\"point\": [1.5, 1]}"),
-                                      "thin.json"));
+  // (The pin and the crest monitor moved onto the thin block's base.)
+  const std::string points_on_base =
+      edit(edit(thin, "{\"point\": [1.5, 1.5]}", "{\"point\": [1.5, 1]}"), "[1.5, 1.8]", "[1.5, 1]");
+  CHECK_NOTHROW(dda::parse_scene_text(points_on_base, "thin.json"));
 }
 
 TEST_CASE("an unreadable scene file is an input error naming the path", "[scene][input]") {

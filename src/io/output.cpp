@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "kinematics/block_matrices.hpp"
 #include "solver/energy.hpp"
 
 namespace dda {
@@ -28,6 +29,9 @@ constexpr const char* kHistoryHeader =
     "step,time,block,xc,yc,rotation,area,exx,eyy,gxy,sxx,syy,sxy,vx,vy,omega,"
     "kinetic,potential,strain_energy,contact_energy,load_work,friction_dissipation,"
     "plastic_dissipation,damping_dissipation,energy_remainder,multiplier_work";
+
+// issue 11's contract: these names, in this order (extend, do not rename).
+constexpr const char* kMonitorsHeader = "step,time,monitor,x,y,ux,uy,vx,vy";
 
 std::string num(double x) { return format_full_precision(x); }
 
@@ -276,6 +280,14 @@ OutputWriter::OutputWriter(std::filesystem::path dir, const Scene& scene)
   history_ << kHistoryHeader << '\n';
   history_.flush();
   if (!history_) fail("cannot write", history);
+  if (!scene.monitors.empty()) {
+    const fs::path monitors = dir_ / "monitors.csv";
+    monitors_.open(monitors, std::ios::trunc);
+    if (!monitors_) fail("cannot open", monitors);
+    monitors_ << kMonitorsHeader << '\n';
+    monitors_.flush();
+    if (!monitors_) fail("cannot write", monitors);
+  }
 }
 
 void OutputWriter::record(const World& world) {
@@ -299,6 +311,7 @@ void OutputWriter::record(const World& world) {
   // Flushed every time: a run that dies keeps every row written so far.
   history_.flush();
   if (!history_) fail("cannot write", dir_ / "history.csv");
+  if (!world.monitors.empty()) record_monitors(world);
 
   const std::string name = frame_name(world.step);
   write_atomically(dir_ / name, vtp_text(world));
@@ -306,6 +319,23 @@ void OutputWriter::record(const World& world) {
   // the frame; the index lists it once.
   if (frames_.empty() || frames_.back().second != name) frames_.emplace_back(world.time, name);
   write_atomically(dir_ / "blocks.pvd", pvd_text(frames_));
+}
+
+// One row per monitor: where its material point is, how far it has moved since the start,
+// and its velocity, Shi's first-order T at the point times the block's velocity (u0, v0,
+// r0 and the strain rates, end of step; zero for a fixed block).
+void OutputWriter::record_monitors(const World& world) {
+  const LinearT t = shi_t();
+  for (const Monitor& m : world.monitors) {
+    const Block& b = world.blocks[static_cast<std::size_t>(m.block)];
+    const Vec2 u = m.current - m.initial;
+    const Vec2 v = b.fixed ? Vec2::Zero() : Vec2(t.at(m.current - b.moments.centroid) * b.velocity);
+    monitors_ << world.step << ',' << num(world.time) << ',' << m.name;
+    for (double x : {m.current.x(), m.current.y(), u.x(), u.y(), v.x(), v.y()}) monitors_ << ',' << num(x);
+    monitors_ << '\n';
+  }
+  monitors_.flush();
+  if (!monitors_) fail("cannot write", dir_ / "monitors.csv");
 }
 
 namespace {

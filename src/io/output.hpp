@@ -33,7 +33,10 @@ class OutputWriter {
  private:
   std::filesystem::path dir_;
   const Scene& scene_;
+  void record_monitors(const World& world);
+
   std::ofstream history_;
+  std::ofstream monitors_;  // open when the scene has monitors
   std::vector<std::pair<double, std::string>> frames_;  // (time, relative file name)
 };
 

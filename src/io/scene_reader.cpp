@@ -543,9 +543,29 @@ PointLoadSpec read_point_load(const Field& f, const std::vector<BlockSpec>& bloc
   return load;
 }
 
+// A monitor: a unique non-empty name and a point inside (or on the boundary of) a block.
+MonitorSpec read_monitor(const Field& f, const std::vector<BlockSpec>& blocks,
+                         const std::vector<MonitorSpec>& earlier) {
+  f.expect_keys({"name", "point"});
+  MonitorSpec m;
+  const Field name = f.member("name");
+  m.name = name.string();
+  if (m.name.empty()) name.fail("is empty; give each monitor a name");
+  if (m.name.find_first_of(",\"\n\r") != std::string::npos) {
+    name.fail("contains a comma, quote or line break, which monitors.csv cannot hold");
+  }
+  for (const MonitorSpec& e : earlier) {
+    if (e.name == m.name) name.fail("\"" + m.name + "\" is already the name of another monitor");
+  }
+  const Field point = f.member("point");
+  m.point = point.vec2("[x, y]");
+  m.block = block_containing(point, m.point, blocks);
+  return m;
+}
+
 Scene read_scene(const Field& root, const std::string& source) {
   root.expect_keys({"description", "gravity", "plane", "control", "materials",
-                    "joint_materials", "blocks", "joints", "pins", "point_loads", "stages"});
+                    "joint_materials", "blocks", "joints", "pins", "point_loads", "monitors", "stages"});
   Scene scene;
   scene.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
@@ -568,6 +588,11 @@ Scene read_scene(const Field& root, const std::string& source) {
   if (auto loads = root.optional_member("point_loads")) {
     for (const Field& p : loads->elements(0, "")) {
       scene.point_loads.push_back(read_point_load(p, scene.blocks));
+    }
+  }
+  if (auto monitors = root.optional_member("monitors")) {
+    for (const Field& m : monitors->elements(0, "")) {
+      scene.monitors.push_back(read_monitor(m, scene.blocks, scene.monitors));
     }
   }
   if (staged) {

@@ -33,6 +33,10 @@ void move_by_increments(World& world, const Eigen::VectorXd& d, Displacement dis
       load.current += displacement(b, load.current - b.moments.centroid, increments_of(b, d));
     }
   }
+  for (Monitor& m : world.monitors) {
+    const Block& b = world.blocks[m.block];
+    if (!b.fixed) m.current += displacement(b, m.current - b.moments.centroid, increments_of(b, d));
+  }
   for (Block& b : world.blocks) {
     if (b.fixed) continue;
     const Vec6 db = increments_of(b, d);
@@ -97,6 +101,10 @@ void rebuild_in_frame(World& world, const Eigen::VectorXd& d, FrameMap frame_map
   for (PointLoad& load : world.loads) {
     const Block& b = world.blocks[load.block];
     if (!b.fixed) load.current = place(b, maps[load.block], load.initial);
+  }
+  for (Monitor& m : world.monitors) {
+    const Block& b = world.blocks[m.block];
+    if (!b.fixed) m.current = place(b, maps[m.block], m.initial);
   }
 }
 

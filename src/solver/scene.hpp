@@ -146,6 +146,14 @@ struct PinSpec {
   int block = -1;  // resolved by the reader: the block containing the point
 };
 
+// A monitoring point: a named material point of a block whose position, displacement and
+// velocity are written to monitors.csv at every output step (issue 11).
+struct MonitorSpec {
+  std::string name;
+  Vec2 point = Vec2::Zero();
+  int block = -1;  // resolved by the reader: the block containing the point
+};
+
 // A constant force (N per metre of thickness) applied at a material point of a block.
 struct PointLoadSpec {
   Vec2 point = Vec2::Zero();
@@ -230,6 +238,7 @@ struct Scene {
   std::vector<BlockSpec> blocks;
   std::vector<PinSpec> pins;
   std::vector<PointLoadSpec> point_loads;
+  std::vector<MonitorSpec> monitors;
   // Stages run in order (empty: none, the run follows `control` alone). With stages,
   // control.end_time is the sum of their durations and control.steps is unset.
   std::vector<StageSpec> stages;

@@ -90,6 +90,9 @@ World make_world(const Scene& scene) {
   for (const PointLoadSpec& load : scene.point_loads) {
     world.loads.push_back(PointLoad{load.block, load.point, load.point, load.force});
   }
+  for (const MonitorSpec& m : scene.monitors) {
+    world.monitors.push_back(Monitor{m.name, m.block, m.point, m.point});
+  }
   start_energy_account(world);
   start_stages(world, scene);  // the first stage's settings, if the scene has stages
   return world;

@@ -87,6 +87,14 @@ struct PointLoad {
   Vec2 force = Vec2::Zero();    // N per metre of thickness, constant in the global frame
 };
 
+// A monitoring point (MonitorSpec): carried with its block like a load, observed only.
+struct Monitor {
+  std::string name;
+  int block = -1;
+  Vec2 initial = Vec2::Zero();  // the material point at the start
+  Vec2 current = Vec2::Zero();  // where it is now
+};
+
 // The energy account's running sums since the start of the run (J per metre of thickness;
 // solver/energy.hpp, docs/energy-balance.md).
 struct EnergyLedger {
@@ -113,6 +121,7 @@ struct World {
   std::vector<Block> blocks;
   std::vector<Pin> pins;
   std::vector<PointLoad> loads;
+  std::vector<Monitor> monitors;
   Vec2 gravity = Vec2::Zero();
   PlaneMode plane = PlaneMode::Strain;
   ControlSettings control;
