@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/contact_output.hpp"
 #include "kinematics/block_matrices.hpp"
 #include "solver/energy.hpp"
 
@@ -319,6 +320,13 @@ void OutputWriter::record(const World& world) {
   // the frame; the index lists it once.
   if (frames_.empty() || frames_.back().second != name) frames_.emplace_back(world.time, name);
   write_atomically(dir_ / "blocks.pvd", pvd_text(frames_));
+
+  const std::string contacts = contact_frame_name(world.step);
+  write_atomically(dir_ / contacts, contacts_vtp_text(world));
+  if (contact_frames_.empty() || contact_frames_.back().second != contacts) {
+    contact_frames_.emplace_back(world.time, contacts);
+  }
+  write_atomically(dir_ / "contacts.pvd", pvd_text(contact_frames_));
 }
 
 // One row per monitor: where its material point is, how far it has moved since the start,
@@ -377,6 +385,16 @@ json energy_json(const World& world) {
 
 void OutputWriter::finish(const World& world, const RunStats& stats) {
   write_atomically(dir_ / "blocks.pvd", pvd_text(frames_));
+  write_atomically(dir_ / "contacts.pvd", pvd_text(contact_frames_));
+  json modes = json::object();
+  const std::vector<ContactModeCounts> counts =
+      contact_modes_by_joint(world, scene_.joint_materials.size());
+  for (std::size_t j = 0; j < counts.size(); ++j) {
+    modes[scene_.joint_materials[j].name] = {{"open", counts[j].open},
+                                             {"slide", counts[j].slide},
+                                             {"lock", counts[j].lock},
+                                             {"bonded", counts[j].bonded}};
+  }
 
   json blocks = json::array();
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
@@ -399,7 +417,8 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
                     {"mean", per_step(stats.contacts_total, stats.contacts_max, stats.steps)["mean"]},
                     {"max", stats.contacts_max},
                     {"deepest_penetration", stats.deepest_penetration},
-                    {"largest_normal_force", stats.largest_normal_force}}},
+                    {"largest_normal_force", stats.largest_normal_force},
+                    {"modes_by_joint_material", modes}}},
       {"penalty_raises", stats.penalty_raises},
       {"augmentations", stats.augmentations},
       {"energy", energy_json(world)},

@@ -38,6 +38,7 @@ class OutputWriter {
   std::ofstream history_;
   std::ofstream monitors_;  // open when the scene has monitors
   std::vector<std::pair<double, std::string>> frames_;  // (time, relative file name)
+  std::vector<std::pair<double, std::string>> contact_frames_;  // the same for contacts
 };
 
 }  // namespace dda
