@@ -1,0 +1,117 @@
+// Block cutting's geometry (issue 11, cutting/cut_domain): a domain cut by joint segments
+// with CGAL's exact arrangement. Checked against what a cut must keep: the blocks' areas sum
+// to the domain's, no two blocks overlap, every block is a simple counter-clockwise polygon,
+// dead-end traces leave nothing inside a block, and a hole is bridged.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "cutting/cut_domain.hpp"
+#include "kinematics/overlap.hpp"
+#include "kinematics/polygon.hpp"
+
+using namespace dda;
+
+namespace {
+
+double total_area(const std::vector<Polygon>& blocks) {
+  double a = 0.0;
+  for (const Polygon& p : blocks) a += signed_area(p);
+  return a;
+}
+
+// Every block simple and counter-clockwise, and no two overlapping (touching is allowed:
+// the overlap test's tolerance is 1e-9 of the domain's size).
+void check_blocks_valid(const std::vector<Polygon>& blocks, double size) {
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    INFO("block " << i);
+    CHECK(signed_area(blocks[i]) > 0.0);
+    CHECK_FALSE(is_self_intersecting(blocks[i]));
+    for (std::size_t j = i + 1; j < blocks.size(); ++j) {
+      INFO("and block " << j);
+      CHECK_FALSE(polygons_overlap(blocks[i], blocks[j], 1e-9 * size));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a square cut by a grid of full traces gives the grid's blocks", "[cutting]") {
+  // 10 m x 10 m, horizontal traces every 1 m and vertical ones every 2 m, each running past
+  // the boundary: 10 rows x 5 columns of 2 m x 1 m blocks, each with 4 vertices (the
+  // crossings on its sides are the neighbours' corners, collinear on its own sides, and
+  // merged). Areas are sums of products of exact coordinates: 1e-12 relative.
+  const Polygon domain{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  std::vector<JointSegment> joints;
+  for (int k = 1; k < 10; ++k) joints.push_back({{-1.0, k}, {11.0, k}});
+  for (int k = 1; k < 5; ++k) joints.push_back({{2.0 * k, -1.0}, {2.0 * k, 11.0}});
+  const CutResult cut = cut_domain(domain, joints);
+  REQUIRE(cut.blocks.size() == 50);
+  CHECK(cut.dead_end_edges == 0);
+  for (const Polygon& b : cut.blocks) {
+    CHECK(b.size() == 4);
+    CHECK(signed_area(b) == Approx(2.0).epsilon(1e-12));
+  }
+  CHECK(total_area(cut.blocks) == Approx(100.0).epsilon(1e-12));
+  check_blocks_valid(cut.blocks, 10.0);
+}
+
+TEST_CASE("a trace ending inside a block leaves no edge in it", "[cutting]") {
+  // One full horizontal trace at y = 5, and a vertical one from (5, 1) to (5, 8) that
+  // crosses it: below y = 5 the piece (5,1)-(5,5) and above it (5,5)-(5,8) both have the
+  // same block on both sides: two dead-end edges removed, two rectangles left.
+  const Polygon domain{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const CutResult cut = cut_domain(domain, {{{-1, 5}, {11, 5}}, {{5, 1}, {5, 8}}});
+  REQUIRE(cut.blocks.size() == 2);
+  CHECK(cut.dead_end_edges == 2);
+  for (const Polygon& b : cut.blocks) {
+    CHECK(b.size() == 4);  // no vertex left at (5, 5) or at the trace's ends
+    CHECK(signed_area(b) == Approx(50.0).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("a concave domain cut by random traces keeps its area and no overlaps",
+          "[cutting]") {
+  // An L-shaped domain (area 300 m^2) and 60 random traces of 4 to 20 m, many ending
+  // inside blocks or outside the domain: the blocks tile the domain exactly (1e-9 relative:
+  // the corners are exact intersections rounded to doubles once, ~1e-16 m each, over
+  // hundreds of blocks), none overlaps another, each is simple and counter-clockwise.
+  const Polygon domain{{0, 0}, {20, 0}, {20, 10}, {10, 10}, {10, 20}, {0, 20}};
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> pos(-2.0, 22.0), angle(0.0, M_PI), length(4.0, 20.0);
+  std::vector<JointSegment> joints;
+  for (int k = 0; k < 60; ++k) {
+    const Vec2 c(pos(rng), pos(rng));
+    const double a = angle(rng), l = length(rng);
+    const Vec2 half = 0.5 * l * Vec2(std::cos(a), std::sin(a));
+    joints.push_back({c - half, c + half});
+  }
+  const CutResult cut = cut_domain(domain, joints);
+  INFO(cut.blocks.size() << " blocks, " << cut.dead_end_edges << " dead-end edges");
+  CHECK(cut.blocks.size() > 20);
+  CHECK(cut.dead_end_edges > 0);
+  CHECK(total_area(cut.blocks) == Approx(300.0).epsilon(1e-9));
+  check_blocks_valid(cut.blocks, 20.0);
+  // Concave blocks are kept: the domain's reflex corner (10, 10) lies on some block.
+  bool corner = false;
+  for (const Polygon& b : cut.blocks) {
+    for (const Vec2& v : b) corner |= (v - Vec2(10, 10)).norm() < 1e-12;
+  }
+  CHECK(corner);
+}
+
+TEST_CASE("a block enclosing another is bridged into a simple polygon", "[cutting]") {
+  // A closed square of traces (3,3)-(7,7) inside a 10 m square touches nothing: the outer
+  // block would have a hole. A bridge from the hole's lowest-left corner (3, 3) down to the
+  // boundary (3, 0) makes it simple: two blocks, 84 and 16 m^2.
+  const Polygon domain{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const CutResult cut = cut_domain(
+      domain, {{{3, 3}, {7, 3}}, {{7, 3}, {7, 7}}, {{7, 7}, {3, 7}}, {{3, 7}, {3, 3}}});
+  CHECK(cut.holes_bridged == 1);
+  REQUIRE(cut.blocks.size() == 2);
+  const double a0 = signed_area(cut.blocks[0]), a1 = signed_area(cut.blocks[1]);
+  CHECK(std::min(a0, a1) == Approx(16.0).epsilon(1e-12));
+  CHECK(std::max(a0, a1) == Approx(84.0).epsilon(1e-12));
+  CHECK(total_area(cut.blocks) == Approx(100.0).epsilon(1e-12));
+}
