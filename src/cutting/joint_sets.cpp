@@ -1,0 +1,82 @@
+#include "cutting/joint_sets.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace dda {
+namespace {
+
+// Uniform in [0, 1) from the engine's 53 high bits (the same on every platform).
+double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+// Standard normal by Box-Muller (one of the pair used).
+double normal(std::mt19937_64& rng) {
+  const double u1 = 1.0 - uniform(rng);  // (0, 1]: log is finite
+  const double u2 = uniform(rng);
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+}
+
+// The segments of the line through `p` along unit `d` inside the box (with a margin of one
+// trace beyond it), cut into traces with bridges, or whole.
+void add_line(const JointSetSpec& set, const Vec2& p, const Vec2& d, const Vec2& lo,
+              const Vec2& hi, std::mt19937_64& rng, std::vector<JointSegment>& out) {
+  // The line's parameter range over the box: the corners' projections, widened a little so
+  // that a trace crossing the boundary is cut by it, not ending on it.
+  double t0 = 0.0, t1 = 0.0;
+  bool first = true;
+  for (const Vec2& c : {lo, hi, Vec2(lo.x(), hi.y()), Vec2(hi.x(), lo.y())}) {
+    const double t = d.dot(c - p);
+    t0 = first ? t : std::min(t0, t);
+    t1 = first ? t : std::max(t1, t);
+    first = false;
+  }
+  const double margin = 0.01 * (hi - lo).norm() + 1e-9;
+  t0 -= margin;
+  t1 += margin;
+  if (!set.trace_length) {
+    out.push_back({p + t0 * d, p + t1 * d});
+    return;
+  }
+  const double length = *set.trace_length;
+  const double period = length + set.bridge;
+  double t = t0 - uniform(rng) * period;  // a random phase per line
+  for (; t < t1; t += period) {
+    const double a = std::max(t, t0), b = std::min(t + length, t1);
+    if (b > a) out.push_back({p + a * d, p + b * d});
+  }
+}
+
+}  // namespace
+
+std::vector<JointSegment> joint_set_traces(const JointSetSpec& set, const Vec2& lo, const Vec2& hi,
+                                           std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const double dip = set.dip * M_PI / 180.0;
+  const Vec2 direction(std::cos(dip), std::sin(dip));
+  const Vec2 n(-direction.y(), direction.x());
+  // The box's extent along the normal: lines from below it to above it.
+  double s_lo = 0.0, s_hi = 0.0;
+  bool first = true;
+  for (const Vec2& c : {lo, hi, Vec2(lo.x(), hi.y()), Vec2(hi.x(), lo.y())}) {
+    const double s = n.dot(c);
+    s_lo = first ? s : std::min(s_lo, s);
+    s_hi = first ? s : std::max(s_hi, s);
+    first = false;
+  }
+  const Vec2 centre = 0.5 * (lo + hi);
+  std::vector<JointSegment> out;
+  // The first line at or below s_lo on the grid offset + k spacing, then gap after gap.
+  double s = set.offset + std::floor((s_lo - set.offset) / set.spacing) * set.spacing;
+  while (s <= s_hi) {
+    // The line's point nearest the box's centre, and its own dip.
+    const Vec2 p = centre + (s - n.dot(centre)) * n;
+    const double own = dip + set.dip_scatter * M_PI / 180.0 * normal(rng);
+    add_line(set, p, Vec2(std::cos(own), std::sin(own)), lo, hi, rng, out);
+    const double gap = set.spacing + set.spacing_scatter * normal(rng);
+    s += std::max(gap, 0.1 * set.spacing);
+  }
+  return out;
+}
+
+}  // namespace dda
