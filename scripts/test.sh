@@ -7,4 +7,5 @@ preset="${1:-release}"
 ./scripts/install-deps.sh
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset"
-ctest --preset "$preset"
+# A build that registered no test must fail, not pass with nothing run.
+ctest --preset "$preset" --no-tests=error
