@@ -54,7 +54,8 @@ int remove_edges_while(Arrangement& arr, Doomed doomed) {
 
 }  // namespace
 
-CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joints) {
+CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joints,
+                     double min_block_area) {
   CGAL::Polygon_2<Kernel> boundary;
   for (const Vec2& p : domain) boundary.push_back(exact(p));
   std::vector<Segment> segments;
@@ -75,8 +76,42 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
     return boundary.bounded_side(m) == CGAL::ON_UNBOUNDED_SIDE;
   });
   CutResult result;
-  result.dead_end_edges = remove_edges_while(
-      arr, [](Arrangement::Edge_iterator e) { return e->face() == e->twin()->face(); });
+  const auto dead_end = [](Arrangement::Edge_iterator e) { return e->face() == e->twin()->face(); };
+  result.dead_end_edges = remove_edges_while(arr, dead_end);
+
+  // Slivers: one merge at a time (a merge changes the faces around it), smallest first.
+  for (;;) {
+    Arrangement::Halfedge_handle best_edge;
+    double smallest = min_block_area;
+    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+      if (f->is_unbounded()) continue;
+      CGAL::Polygon_2<Kernel> outline;
+      for (const Point& p : cycle_points(f->outer_ccb())) outline.push_back(p);
+      const double area = CGAL::to_double(outline.area());
+      if (area >= smallest) continue;
+      // Its longest edge with a block on the other side.
+      Arrangement::Halfedge_handle longest;
+      Kernel::FT longest_length = 0;
+      auto c = f->outer_ccb();
+      const auto first = c;
+      do {
+        if (!c->twin()->face()->is_unbounded()) {
+          const Kernel::FT l = CGAL::squared_distance(c->source()->point(), c->target()->point());
+          if (l > longest_length) {
+            longest_length = l;
+            longest = c;
+          }
+        }
+      } while (++c != first);
+      if (longest_length == 0) continue;  // alone against the boundary: kept
+      smallest = area;
+      best_edge = longest;
+    }
+    if (best_edge == Arrangement::Halfedge_handle()) break;
+    arr.remove_edge(best_edge);
+    ++result.slivers_merged;
+    result.dead_end_edges += remove_edges_while(arr, dead_end);
+  }
 
   // A face with a hole: bridge the hole to the outer boundary by a segment from the hole's
   // lowest-leftmost vertex straight down to the first edge below it, then start again.
