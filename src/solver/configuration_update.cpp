@@ -13,6 +13,21 @@ namespace {
 
 Vec6 increments_of(const Block& b, const Eigen::VectorXd& d) { return d.segment<6>(b.first_dof); }
 
+// The material points that ride on blocks (pins, point loads, monitors: each has `block`,
+// `initial` and `current`): every one on a free block set to where(block, point).
+template <class Where>
+void move_carried_points(World& world, Where where) {
+  const auto move = [&world, &where](auto& points) {
+    for (auto& p : points) {
+      const Block& b = world.blocks[static_cast<std::size_t>(p.block)];
+      if (!b.fixed) p.current = where(b, p);
+    }
+  };
+  move(world.pins);
+  move(world.loads);
+  move(world.monitors);
+}
+
 // ---- treatments that move points by the step's increments (original, second order,
 // post-adjustment): strains added in the global frame (paper Eq. 13) ----
 
@@ -20,23 +35,10 @@ Vec6 increments_of(const Block& b, const Eigen::VectorXd& d) { return d.segment<
 // reference point at the step's start (sin_variable's T' also reads the block).
 template <class Displacement>
 void move_by_increments(World& world, const Eigen::VectorXd& d, Displacement displacement) {
-  // Pins and loads first: they need each block's reference point from the step's start.
-  for (Pin& pin : world.pins) {
-    const Block& b = world.blocks[pin.block];
-    if (!b.fixed) {
-      pin.current += displacement(b, pin.current - b.moments.centroid, increments_of(b, d));
-    }
-  }
-  for (PointLoad& load : world.loads) {
-    const Block& b = world.blocks[load.block];
-    if (!b.fixed) {
-      load.current += displacement(b, load.current - b.moments.centroid, increments_of(b, d));
-    }
-  }
-  for (Monitor& m : world.monitors) {
-    const Block& b = world.blocks[m.block];
-    if (!b.fixed) m.current += displacement(b, m.current - b.moments.centroid, increments_of(b, d));
-  }
+  // Carried points first: they need each block's reference point from the step's start.
+  move_carried_points(world, [&d, &displacement](const Block& b, const auto& p) -> Vec2 {
+    return p.current + displacement(b, p.current - b.moments.centroid, increments_of(b, d));
+  });
   for (Block& b : world.blocks) {
     if (b.fixed) continue;
     const Vec6 db = increments_of(b, d);
@@ -94,18 +96,9 @@ void rebuild_in_frame(World& world, const Eigen::VectorXd& d, FrameMap frame_map
     }
     b.moments = polygon_moments(b.vertices);
   }
-  for (Pin& pin : world.pins) {
-    const Block& b = world.blocks[pin.block];
-    if (!b.fixed) pin.current = place(b, maps[pin.block], pin.initial);
-  }
-  for (PointLoad& load : world.loads) {
-    const Block& b = world.blocks[load.block];
-    if (!b.fixed) load.current = place(b, maps[load.block], load.initial);
-  }
-  for (Monitor& m : world.monitors) {
-    const Block& b = world.blocks[m.block];
-    if (!b.fixed) m.current = place(b, maps[m.block], m.initial);
-  }
+  move_carried_points(world, [&maps](const Block& b, const auto& p) -> Vec2 {
+    return place(b, maps[static_cast<std::size_t>(p.block)], p.initial);
+  });
 }
 
 

@@ -156,12 +156,16 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   // contact gone since the analysis leaves explicit zeros); else a new analysis, of the
   // union of the two patterns (grow_pattern).
   bool own_pattern = symbolic_ != nullptr && same_pattern(lower);
-  if (!own_pattern && !(symbolic_ != nullptr && scatter_into_pattern(lower))) {
+  const bool analysed = own_pattern || (symbolic_ != nullptr && scatter_into_pattern(lower));
+  if (!analysed) {
     if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
     if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &common_);
     grow_pattern(lower);
     own_pattern = same_pattern(lower);
     if (!own_pattern) scatter_into_pattern(lower);  // the union holds it: cannot fail
+  }
+  cholmod_sparse a = own_pattern ? view_lower(lower) : view_pattern();
+  if (!analysed) {
     if (lower.rows() >= kNestedDissectionRows) {
       common_.nmethods = 2;  // AMD and METIS, the smaller factor kept
       common_.method[0].ordering = CHOLMOD_AMD;
@@ -170,15 +174,13 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
       common_.nmethods = 1;
       common_.method[0].ordering = CHOLMOD_AMD;
     }
-    cholmod_sparse pattern = own_pattern ? view_lower(lower) : view_pattern();
-    symbolic_ = cholmod_analyze(&pattern, &common_);
+    symbolic_ = cholmod_analyze(&a, &common_);
     if (symbolic_ == nullptr) return false;
     ++analyses_;
     const auto* perm = static_cast<const int*>(symbolic_->Perm);
     inverse_perm_.assign(symbolic_->n, 0);
     for (size_t i = 0; i < symbolic_->n; ++i) inverse_perm_[perm[i]] = static_cast<int>(i);
   }
-  cholmod_sparse a = own_pattern ? view_lower(lower) : view_pattern();
   // A factor that was refactorised in place keeps its form; one that was converted for
   // updates (or failed) starts again from the analysis.
   const bool reusable =
@@ -241,7 +243,7 @@ bool SparseCholesky::modify(const std::vector<RankOneTerm>& terms, bool update) 
 double SparseCholesky::refactorisation_cost() const {
   assert(has_factor());
   const double simplicial = kSimplicialFlopNs * column_count_squares_;
-  return supernodal_analysis_ ? std::min(simplicial, kSupernodalEntryNs * factor_entries_)
+  return symbolic_->is_super ? std::min(simplicial, kSupernodalEntryNs * factor_entries_)
                               : simplicial;
 }
 
@@ -296,7 +298,6 @@ void SparseCholesky::make_cost_tables() {
       }
     }
   }
-  supernodal_analysis_ = symbolic_->is_super;
   path_cost_.assign(static_cast<std::size_t>(n), 0.0);
   column_count_squares_ = 0.0;
   factor_entries_ = 0.0;

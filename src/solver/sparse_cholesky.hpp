@@ -106,7 +106,6 @@ class SparseCholesky {
   std::vector<double> path_cost_;
   double column_count_squares_ = 0.0;  // sum over columns of nnz(L(:,j))^2
   double factor_entries_ = 0.0;  // nnz(L) of the last factorisation
-  bool supernodal_analysis_ = false;  // the next factorisation is supernodal
   bool factored_ = false;
   bool modified_ = false;  // converted to simplicial LDL' and updated since factorised
 };
