@@ -4,17 +4,20 @@
 // `dda material-point` does the same for one material point on a strain/stress path
 // (materials), with 3 for a path that could not be followed.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <string>
 
 #include "app/progress.hpp"
+#include "io/fos_report.hpp"
 #include "io/material_point_output.hpp"
 #include "io/material_point_reader.hpp"
 #include "io/output.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
 #include "solver/step.hpp"
+#include "solver/strength_reduction.hpp"
 
 namespace {
 
@@ -64,6 +67,61 @@ int run_command(const std::string& scene_path, const std::string& out_dir) {
   return kExitOk;
 }
 
+// `dda fos`: consolidate the scene at F = 1 (its own control and stages), then search for
+// the factor by strength-reduction trials (solver/strength_reduction.hpp). Exit 0 with a
+// factor, 3 without one (the report says why) or when the consolidation diverged.
+int fos_command(const std::string& scene_path, const std::string& out_dir,
+                dda::FosSettings settings) {
+  if (scene_path.empty()) {
+    throw dda::InputError(
+        "fos: no scene given (dda fos SCENE.json --out DIR; see docs/factor-of-safety.md)");
+  }
+  const dda::Scene scene = dda::read_scene_file(scene_path);
+  for (const std::string& warning : scene.warnings) std::cerr << "dda: warning: " << warning << "\n";
+  dda::World world = dda::make_world(scene);
+  bool any_free = false;
+  for (const dda::Block& b : world.blocks) any_free = any_free || !b.fixed;
+  if (!any_free) throw dda::InputError(scene_path + ": blocks: every block is fixed; nothing can fail");
+
+  std::cerr << "dda: consolidating " << scene_path << " at F = 1\n";
+  dda::ProgressBar progress(run_length(scene), scene.control.steps ? "steps" : "s");
+  const dda::RunStats consolidated = dda::run(world, [&](const dda::World& w, const dda::RunStats&) {
+    progress.update(scene.control.steps ? static_cast<double>(w.step) : w.time);
+    return true;
+  });
+  progress.finish();
+  if (consolidated.diverged) {
+    std::cerr << "dda: error: the consolidation at F = 1 diverged at " << consolidated.message
+              << "; no trial was run\n";
+    return kExitDiverged;
+  }
+  dda::ConsolidationInfo info{consolidated.steps, world.time, consolidated.wall_time_s, 0.0};
+  for (const dda::Block& b : world.blocks) info.kinetic_end += b.fixed ? 0.0 : dda::kinetic_energy(b);
+  settings = dda::resolve_fos_settings(world, settings);
+  std::cerr << "dda: trials of " << settings.trial_time << " s, failing beyond "
+            << settings.failure_displacement << " m, " << settings.jobs << " at once\n";
+
+  const auto start = std::chrono::steady_clock::now();
+  const dda::FosResult result = dda::find_factor_of_safety(
+      settings, [&](const std::vector<double>& factors) {
+        return dda::run_trials(world, settings, factors, [](const dda::TrialResult& t) {
+          std::cerr << "dda: " << dda::trial_line(t) << "\n";
+        });
+      });
+  const double wall = consolidated.wall_time_s +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  dda::write_fos_report(out_dir, scene, settings, info, result, wall);
+  if (!result.found) {
+    std::cerr << "dda: error: no factor of safety: " << result.message << "; trials in "
+              << out_dir << "/report.json\n";
+    return kExitDiverged;
+  }
+  std::cerr << "dda: factor of safety " << result.factor_of_safety << " (bracket "
+            << result.last_stable << " to " << result.first_failing << ") in " << wall
+            << " s; report in " << out_dir << "\n";
+  return kExitOk;
+}
+
 int material_point_command(const std::string& spec_path, const std::string& out_file) {
   if (spec_path.empty()) {
     // There is no built-in default spec; said here rather than by CLI11 so that it is an
@@ -107,11 +165,38 @@ int main(int argc, char** argv) {
   point->add_option("spec", spec_path, "Spec file (JSON, see docs/material-point-format.md)");
   point->add_option("--out", csv_file, "CSV file: step,exx,eyy,gxy,sxx,syy,szz,sxy,eps_p,branch")
       ->capture_default_str();
+  std::string fos_scene;
+  std::string fos_dir = "dda-fos";
+  dda::FosSettings fos;
+  CLI::App* fos_app = app.add_subcommand(
+      "fos", "Factor of safety by strength reduction (docs/factor-of-safety.md)");
+  fos_app->add_option("scene", fos_scene, "Scene file (JSON, see docs/scene-format.md)");
+  fos_app->add_option("--out", fos_dir, "Directory for report.json and report.md")->capture_default_str();
+  fos_app->add_option("--tolerance", fos.tolerance, "Width of the final bracket in F")
+      ->capture_default_str()->check(CLI::Range(1e-6, 1.0));
+  fos_app->add_option("--min-factor", fos.min_factor, "Lowest F tried")->capture_default_str()
+      ->check(CLI::Range(1e-3, 1.0));
+  fos_app->add_option("--max-factor", fos.max_factor, "Highest F tried")->capture_default_str()
+      ->check(CLI::Range(1.0, 1e3));
+  fos_app->add_option("--failure-displacement", fos.failure_displacement,
+                      "A trial fails when a watched point moves more (m); default: 0.05 x "
+                      "sqrt(median free-block area)")->check(CLI::PositiveNumber);
+  fos_app->add_option("--trial-time", fos.trial_time,
+                      "Simulated time of a trial (s); default: resolves 0.002 g")
+      ->check(CLI::PositiveNumber);
+  fos_app->add_option("--dynamic-coefficient", fos.dynamic_coefficient,
+                      "Velocity carried between the trial's steps")->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  fos_app->add_flag("--reduce-materials", fos.reduce_materials,
+                    "Also divide plastic blocks' strengths by F");
+  fos_app->add_option("--jobs", fos.jobs, "Trials at once")->capture_default_str()
+      ->check(CLI::Range(1, 64));
   CLI11_PARSE(app, argc, argv);
 
   try {
     if (run->parsed()) return run_command(scene_path, out_dir);
     if (point->parsed()) return material_point_command(spec_path, csv_file);
+    if (fos_app->parsed()) return fos_command(fos_scene, fos_dir, fos);
   } catch (const dda::InputError& e) {
     std::cerr << "dda: error: " << e.what() << "\n";
     return kExitInputError;

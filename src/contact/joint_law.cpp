@@ -8,6 +8,22 @@ namespace {
 // The shear spring force on the vertex opposes its slip: slip direction = -sign(force).
 int slip_sign_of_force(double shear_force) { return shear_force > 0.0 ? -1 : 1; }
 
+// A closed contact's shear decision: locked until the shear force passes `strength`, then
+// sliding until its slip reverses. `bonded` is carried into the decision unchanged.
+ContactDecision closed_shear(const Contact& c, const ContactTrial& trial, double strength,
+                             bool bonded) {
+  if (c.state.mode == ContactMode::Slide) {
+    if (trial.slip * c.state.slide_sign < -trial.slip_tolerance) {
+      return {ContactMode::Lock, 0, bonded, true};
+    }
+    return {ContactMode::Slide, c.state.slide_sign, bonded, false};
+  }
+  if (std::abs(trial.shear_force) > strength) {
+    return {ContactMode::Slide, slip_sign_of_force(trial.shear_force), bonded, false};
+  }
+  return {ContactMode::Lock, 0, bonded, false};
+}
+
 ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const JointLaw& law) {
   const double opens_above = c.state.mode == ContactMode::Open ? 0.0 : trial.open_tolerance;
   if (trial.new_gap > opens_above) return {ContactMode::Open, 0, false, false};
@@ -26,23 +42,40 @@ ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const Join
       }
       return {ContactMode::Lock, 0, false, true};
     case ContactMode::Lock:
-      if (std::abs(trial.shear_force) > law.tan_phi * trial.normal_force) {
-        return {ContactMode::Slide, slip_sign_of_force(trial.shear_force), false, false};
-      }
-      return {ContactMode::Lock, 0, false, false};
     case ContactMode::Slide:
-      if (trial.slip * c.state.slide_sign < -trial.slip_tolerance) {
-        return {ContactMode::Lock, 0, false, true};
-      }
-      return {ContactMode::Slide, c.state.slide_sign, false, false};
+      return closed_shear(c, trial, law.tan_phi * trial.normal_force, false);
   }
   return {};
 }
 
+bool coulomb_slip_bond(const Contact& c, const JointLaw& law) {
+  return c.state.bonded && law.kind == JointLawKind::CoulombSlip;
+}
+
 }  // namespace
+
+double shear_strength(const Contact& c, const JointLaw& law, double normal_force) {
+  const double friction = law.tan_phi * normal_force;
+  return c.state.bonded ? friction + law.cohesion * c.length : friction;
+}
+
+double sliding_resistance(const Contact& c, const JointLaw& law, double normal_force) {
+  const double friction = law.tan_phi * normal_force;
+  return coulomb_slip_bond(c, law) ? friction + law.cohesion * c.length : friction;
+}
 
 ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
                                     const JointLaw& law) {
+  if (coulomb_slip_bond(c, law)) {
+    if (trial.tension > law.tensile_strength * c.length) {
+      Contact broken = c;  // pulled apart: the bond breaks for good, friction is left
+      broken.state.bonded = false;
+      broken.state.mode = ContactMode::Lock;
+      return unbonded(broken, trial, {law.tan_phi, 0.0, 0.0, law.kind});
+    }
+    // A bonded contact carries tension, so it stays closed; in shear it slips and holds.
+    return closed_shear(c, trial, shear_strength(c, law, trial.normal_force), true);
+  }
   if (c.state.bonded) {
     const bool tension_fails = trial.tension > law.tensile_strength * c.length;
     const bool shear_fails = std::abs(trial.shear_force) >
@@ -52,7 +85,7 @@ ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
     Contact broken = c;
     broken.state.bonded = false;
     broken.state.mode = ContactMode::Lock;
-    return unbonded(broken, trial, {law.tan_phi, 0.0, 0.0});
+    return unbonded(broken, trial, {law.tan_phi, 0.0, 0.0, law.kind});
   }
   return unbonded(c, trial, law);
 }
@@ -67,11 +100,15 @@ bool change_allowed(const Contact& c, const ContactDecision& next, int free_chan
 bool change_within_resolution(const Contact& c, const ContactDecision& next,
                               const ContactTrial& trial, const JointLaw& law, double ks,
                               double resolution) {
-  if (c.state.bonded || next.bonded) return false;
+  // A bond that forms or breaks, or a brittle bond (which never changes mode bonded), is
+  // never deferred; a Coulomb slip bond's lock <-> slide is a change like an unbonded one's.
+  if (c.state.bonded != next.bonded) return false;
+  if (c.state.bonded && law.kind != JointLawKind::CoulombSlip) return false;
   if (c.state.mode == ContactMode::Open) return -trial.new_gap <= resolution;  // closing
   if (next.mode == ContactMode::Open) return trial.new_gap <= resolution;  // opening
   if (c.state.mode == ContactMode::Lock) {  // lock -> slide
-    return std::abs(trial.shear_force) - law.tan_phi * trial.normal_force <= ks * resolution;
+    return std::abs(trial.shear_force) - shear_strength(c, law, trial.normal_force) <=
+           ks * resolution;
   }
   return std::abs(trial.slip) <= resolution;  // sliding: its slip reversed
 }

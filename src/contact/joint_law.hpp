@@ -2,15 +2,42 @@
 // says about a contact, which mode it takes next (Shi 1988, open-close iteration).
 #pragma once
 
+#include <cstdint>
+
 #include "contact/contact.hpp"
 
 namespace dda {
+
+// What a bonded contact does when its shear force reaches its strength.
+enum class JointLawKind : std::uint8_t {
+  // Shi's bond (1988): the bond breaks for good at the first failure, in tension or in
+  // shear, and the contact keeps friction only. Two vertex contacts of one face carrying
+  // unequal normal forces then fail one after the other, below the face's limit-equilibrium
+  // strength (progressive failure).
+  BrittleBond,
+  // Coulomb slip (perfectly plastic, as UDEC's Coulomb slip joint model; Itasca, UDEC
+  // Theory and Background, "Joint constitutive models"): a bonded contact that reaches
+  // cohesion x length + tan(phi) N slides and keeps resisting with exactly that, cohesion
+  // included, and locks again when its slip reverses; only a failure in tension breaks the
+  // bond for good. This is the joint that limit-equilibrium analysis assumes.
+  CoulombSlip,
+};
 
 struct JointLaw {
   double tan_phi = 0.0;           // tan(friction angle)
   double cohesion = 0.0;          // Pa
   double tensile_strength = 0.0;  // Pa
+  JointLawKind kind = JointLawKind::BrittleBond;
 };
+
+// The shear force (N per metre) a closed contact can carry at normal force `normal_force`
+// (compression positive): tan(phi) N, plus cohesion x length while bonded (the brittle
+// bond's strength before it breaks; the Coulomb slip joint's, sliding or not).
+double shear_strength(const Contact& c, const JointLaw& law, double normal_force);
+
+// The resistance of a sliding contact (N per metre): tan(phi) N, plus cohesion x length for
+// a bonded Coulomb slip contact (a brittle bond never slides bonded).
+double sliding_resistance(const Contact& c, const JointLaw& law, double normal_force);
 
 // What the latest solve says about one contact.
 struct ContactTrial {
@@ -39,7 +66,11 @@ struct ContactDecision {
 };
 
 // Transition rules:
-//  - bonded: holds (locked) until tension > tensile_strength * length or
+//  - bonded, Coulomb slip (JointLawKind::CoulombSlip): a tension > tensile_strength * length
+//    breaks the bond for good (then as unbonded); otherwise the contact stays closed and
+//    bonded, locked until |shear| > cohesion * length + tan_phi * N, then sliding against that
+//    resistance until its slip reverses (as an unbonded closed contact, cohesion included);
+//  - bonded, brittle bond: holds (locked) until tension > tensile_strength * length or
 //    |shear| > cohesion * length + tan_phi * N; then the bond is broken for good and the
 //    contact continues as an unbonded one (open if separated, sliding if closed);
 //  - unbonded: an open contact closes when new_gap <= 0; a closed one opens when

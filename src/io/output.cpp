@@ -400,9 +400,15 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     blocks.push_back(block_json(world.blocks[i], static_cast<int>(i)));
   }
+  json settings = settings_json(world);
+  json laws = json::object();  // which joint law each joint material uses
+  for (const JointMaterial& j : scene_.joint_materials) {
+    laws[j.name] = j.law == JointLawKind::CoulombSlip ? "coulomb_slip" : "brittle_bond";
+  }
+  settings["joint_laws"] = laws;
   const json summary = {
       {"scene", scene_.source},
-      {"settings", settings_json(world)},
+      {"settings", settings},
       {"wall_time_s", stats.wall_time_s},
       {"steps", stats.steps},
       {"cut_steps", stats.cut_steps},

@@ -167,9 +167,16 @@ int material_index(const Field& f, const std::vector<Material>& materials) {
 constexpr std::string_view kDefaultJoint = "default";
 
 JointMaterial read_joint_material(const std::string& name, const Field& f) {
-  f.expect_keys({"friction_angle", "cohesion", "tensile_strength"});
+  f.expect_keys({"friction_angle", "cohesion", "tensile_strength", "law"});
   JointMaterial j;
   j.name = name;
+  if (auto g = f.optional_member("law")) {
+    const std::string law = g->string();
+    if (law != "brittle_bond" && law != "coulomb_slip") {
+      g->fail("unknown joint law \"" + law + "\" (known: \"brittle_bond\", \"coulomb_slip\")");
+    }
+    j.law = law == "coulomb_slip" ? JointLawKind::CoulombSlip : JointLawKind::BrittleBond;
+  }
   // 90 degrees would make tan(phi), the friction coefficient, infinite.
   j.friction_angle = number_in_range(f.member("friction_angle"), 0.0, false, 90.0, true,
                                      "at least 0 and less than 90 (degrees)");

@@ -166,8 +166,10 @@ void add_contact_terms(const World& world, std::vector<Contact>& contacts,
       assembler.add_spring(c, relative_along(world, ctx, c, anchor, c.tangent), ks,
                            c.tangent.dot(c.vertex - anchor));
     } else {
-      // Sliding: friction tan(phi) N on the vertex, against its slip direction.
-      const double friction = world.joint_laws[c.joint].tan_phi * c.state.normal_force;
+      // Sliding: friction tan(phi) N (and a Coulomb slip bond's cohesion) on the vertex,
+      // against its slip direction.
+      const double friction =
+          sliding_resistance(c, world.joint_laws[c.joint], c.state.normal_force);
       assembler.add_force(c, relative_along(world, ctx, c, projection_point(c), c.tangent),
                           -c.state.slide_sign * friction);
     }
@@ -211,7 +213,7 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     } else if (c.state.mode == ContactMode::Open) {
       trial.shear_force = -ks * trial.slip;
     } else if (c.state.mode == ContactMode::Slide) {
-      trial.shear_force = -c.state.slide_sign * law.tan_phi * c.state.normal_force;
+      trial.shear_force = -c.state.slide_sign * sliding_resistance(c, law, c.state.normal_force);
     }
     const auto differs = [&c](const ContactDecision& next) {
       return next.mode != c.state.mode || next.slide_sign != c.state.slide_sign ||

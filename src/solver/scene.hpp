@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "contact/joint_law.hpp"
 #include "kinematics/types.hpp"
 #include "materials/elastic.hpp"
 #include "materials/material.hpp"
@@ -107,17 +108,18 @@ inline MaterialParameters parameters_of(const Material& m, PlaneMode plane) {
 }
 
 // Mohr-Coulomb joint between blocks (Shi 1988): friction, cohesion and tensile strength.
-// Cohesion and tensile strength act only on contacts that exist (closed) at the start; once
-// such a bonded contact fails in tension or shear it is broken for good.
+// Cohesion and tensile strength act only on contacts that exist (closed) at the start (or
+// are bonded by a stage). What a bonded contact does when it fails depends on `law`.
 struct JointMaterial {
   std::string name;
   double friction_angle = 0.0;    // degrees, [0, 90)
   double cohesion = 0.0;          // Pa, >= 0
   double tensile_strength = 0.0;  // Pa, >= 0
+  JointLawKind law = JointLawKind::BrittleBond;
 };
 
 // The joint used when a scene of one block names none: frictionless, no strength.
-inline const JointMaterial kBuiltInDefaultJoint{"default", 0.0, 0.0, 0.0};
+inline const JointMaterial kBuiltInDefaultJoint{"default", 0.0, 0.0, 0.0, JointLawKind::BrittleBond};
 
 // A pair of blocks whose contacts use a named joint material instead of "default".
 struct JointSpec {

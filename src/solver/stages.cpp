@@ -50,7 +50,7 @@ void enter_stage(World& world, int stage) {
 }  // namespace
 
 JointLaw joint_law_of(const JointMaterial& j) {
-  return JointLaw{std::tan(j.friction_angle * M_PI / 180.0), j.cohesion, j.tensile_strength};
+  return JointLaw{std::tan(j.friction_angle * M_PI / 180.0), j.cohesion, j.tensile_strength, j.law};
 }
 
 void start_stages(World& world, const Scene& scene) {

@@ -79,8 +79,7 @@ World make_world(const Scene& scene) {
       scene.control.allowed_penetration.value_or(kAutoPenetrationShare * world.w0);
   world.search_distance = kSearchDistanceFactor * scene.control.max_displacement_ratio * world.w0;
   for (const JointMaterial& j : scene.joint_materials) {
-    world.joint_laws.push_back(
-        JointLaw{std::tan(j.friction_angle * M_PI / 180.0), j.cohesion, j.tensile_strength});
+    world.joint_laws.push_back(joint_law_of(j));
   }
   for (const JointSpec& j : scene.joints) world.pair_joint[pair_key(j.block_a, j.block_b)] = j.material;
 

@@ -1,0 +1,131 @@
+#include "io/fos_report.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+namespace dda {
+namespace {
+
+using json = nlohmann::json;
+
+std::string law_name(JointLawKind k) {
+  return k == JointLawKind::CoulombSlip ? "coulomb_slip" : "brittle_bond";
+}
+
+std::string fixed(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+std::string general(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+json trial_json(const TrialResult& t) {
+  return {{"F", t.factor},
+          {"stable", t.stable},
+          {"verdict", t.verdict},
+          {"largest_displacement", t.largest_displacement},
+          {"end_speed", t.end_speed},
+          {"kinetic_peak", t.kinetic_peak},
+          {"kinetic_end", t.kinetic_end},
+          {"steps", t.steps},
+          {"simulated_time", t.simulated_time},
+          {"wall_time_s", t.wall_time_s},
+          {"watched_point", t.watched_point}};
+}
+
+}  // namespace
+
+std::string trial_line(const TrialResult& t) {
+  return "trial F = " + fixed(t.factor, 4) + ": " + (t.stable ? "stable" : "failing") + " (" +
+         t.verdict + "), largest displacement " + general(t.largest_displacement) + " m, " +
+         std::to_string(t.steps) + " steps, " + fixed(t.wall_time_s, 1) + " s";
+}
+
+void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
+                      const FosSettings& s, const ConsolidationInfo& consolidation,
+                      const FosResult& result, double wall_time_s) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
+
+  json laws = json::object();
+  for (const JointMaterial& j : scene.joint_materials) laws[j.name] = law_name(j.law);
+  json trials = json::array();
+  for (const TrialResult& t : result.trials) trials.push_back(trial_json(t));
+  const json report = {
+      {"scene", scene.source},
+      {"found", result.found},
+      {"factor_of_safety", result.found ? json(result.factor_of_safety) : json(nullptr)},
+      {"bracket", result.found ? json::array({result.last_stable, result.first_failing})
+                               : json(nullptr)},
+      {"message", result.message},
+      {"settings",
+       {{"tolerance", s.tolerance},
+        {"min_factor", s.min_factor},
+        {"max_factor", s.max_factor},
+        {"failure_displacement", s.failure_displacement},
+        {"trial_time", s.trial_time},
+        {"detect_acceleration", s.detect_acceleration},
+        {"dynamic_coefficient", s.dynamic_coefficient},
+        {"reduce_materials", s.reduce_materials},
+        {"jobs", s.jobs},
+        {"watched", scene.monitors.empty() ? "free block centroids" : "monitors"}}},
+      {"joint_laws", laws},
+      {"consolidation",
+       {{"steps", consolidation.steps},
+        {"time", consolidation.time},
+        {"wall_time_s", consolidation.wall_time_s},
+        {"kinetic_end", consolidation.kinetic_end}}},
+      {"trials", trials},
+      {"wall_time_s", wall_time_s},
+  };
+  write_text(dir / "report.json", report.dump(2) + "\n");
+
+  std::ostringstream md;
+  md << "# Factor of safety: " << scene.source << "\n\n";
+  if (result.found) {
+    md << "**F = " << fixed(result.factor_of_safety, 3) << "**, between the last stable trial "
+       << fixed(result.last_stable, 4) << " and the first failing " << fixed(result.first_failing, 4)
+       << " (tolerance " << general(s.tolerance) << ").\n\n";
+  } else {
+    md << "**No factor found**: " << result.message << "\n\n";
+  }
+  if (result.found && !result.message.empty()) md << "Note: " << result.message << "\n\n";
+  md << "Strength reduction: tan(phi)/F, c/F and tensile strength/F on every joint"
+     << (s.reduce_materials ? " and on plastic blocks' materials" : "") << ". Joint laws:";
+  for (const JointMaterial& j : scene.joint_materials) md << " " << j.name << " (" << law_name(j.law) << ")";
+  md << ".\n\nEach trial starts at rest from the scene consolidated at F = 1 ("
+     << consolidation.steps << " steps, " << general(consolidation.time) << " s simulated) and runs "
+     << general(s.trial_time) << " s with dynamic coefficient " << general(s.dynamic_coefficient)
+     << ". It fails when a watched point ("
+     << (scene.monitors.empty() ? "the centroid of a free block" : "a monitor")
+     << ") moves more than " << general(s.failure_displacement)
+     << " m, or is still moving faster than " << general(s.failure_displacement / s.trial_time)
+     << " m/s at the end.\n\n";
+  md << "| F | verdict | why | largest displacement (m) | end speed (m/s) | steps | wall time (s) |\n"
+     << "|---|---|---|---|---|---|---|\n";
+  for (const TrialResult& t : result.trials) {
+    md << "| " << fixed(t.factor, 4) << " | " << (t.stable ? "stable" : "failing") << " | "
+       << t.verdict << " | " << general(t.largest_displacement) << " | " << general(t.end_speed)
+       << " | " << t.steps << " | " << fixed(t.wall_time_s, 2) << " |\n";
+  }
+  md << "\nWall time " << fixed(wall_time_s, 1) << " s in all.\n";
+  write_text(dir / "report.md", md.str());
+}
+
+}  // namespace dda

@@ -1,0 +1,32 @@
+// The report of `dda fos` (issue 11): DIR/report.json (the contract: factor_of_safety,
+// bracket, trials with F and stable; docs/factor-of-safety.md) and DIR/report.md, the same
+// for a reader.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "solver/scene.hpp"
+#include "solver/strength_reduction.hpp"
+
+namespace dda {
+
+// What the consolidation at F = 1 did before the trials.
+struct ConsolidationInfo {
+  int steps = 0;
+  double time = 0.0;         // s, simulated
+  double wall_time_s = 0.0;
+  double kinetic_end = 0.0;  // J/m, left at its end (the trials start from rest)
+};
+
+// Writes DIR/report.json and DIR/report.md (creating DIR). Throws std::runtime_error naming
+// the path when it cannot.
+void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
+                      const FosSettings& settings, const ConsolidationInfo& consolidation,
+                      const FosResult& result, double wall_time_s);
+
+// One line per finished trial, as the progress shows it:
+// "trial F = 1.250: stable (came to rest), largest displacement 0.0021 m, 812 steps, 3.2 s".
+std::string trial_line(const TrialResult& t);
+
+}  // namespace dda

@@ -1,0 +1,299 @@
+#include "solver/strength_reduction.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "kinematics/block_matrices.hpp"
+#include "solver/run.hpp"
+#include "solver/step.hpp"
+
+namespace dda {
+namespace {
+
+double reduced_angle_deg(double angle_deg, double factor) {
+  return std::atan(std::tan(angle_deg * M_PI / 180.0) / factor) * 180.0 / M_PI;
+}
+
+// The points a trial watches and where they are: the monitors when the scene has any (the
+// user's choice of what failing means), else the centroid of every free block.
+struct Watched {
+  std::vector<Vec2> positions;
+  std::vector<Vec2> velocities;
+};
+
+Watched watched_points(const World& w) {
+  Watched out;
+  if (!w.monitors.empty()) {
+    const LinearT t = shi_t();
+    for (const Monitor& m : w.monitors) {
+      const Block& b = w.blocks[static_cast<std::size_t>(m.block)];
+      out.positions.push_back(m.current);
+      out.velocities.push_back(b.fixed ? Vec2(Vec2::Zero())
+                                       : Vec2(t.at(m.current - b.moments.centroid) * b.velocity));
+    }
+    return out;
+  }
+  for (const Block& b : w.blocks) {
+    if (b.fixed) continue;
+    out.positions.push_back(b.moments.centroid);
+    out.velocities.push_back(b.velocity.head<2>());
+  }
+  return out;
+}
+
+double total_kinetic(const World& w) {
+  double k = 0.0;
+  for (const Block& b : w.blocks) {
+    if (!b.fixed) k += kinetic_energy(b);
+  }
+  return k;
+}
+
+struct Bracket {
+  std::optional<double> stable;   // the largest stable F below `failing`
+  std::optional<double> failing;  // the smallest failing F
+  bool monotone = true;           // no stable trial above a failing one
+};
+
+Bracket bracket_of(const std::vector<TrialResult>& trials) {
+  Bracket b;
+  for (const TrialResult& t : trials) {
+    if (!t.stable && (!b.failing || t.factor < *b.failing)) b.failing = t.factor;
+  }
+  for (const TrialResult& t : trials) {
+    if (!t.stable) continue;
+    if (b.failing && t.factor >= *b.failing) {
+      b.monotone = false;
+      continue;
+    }
+    if (!b.stable || t.factor > *b.stable) b.stable = t.factor;
+  }
+  return b;
+}
+
+}  // namespace
+
+JointLaw reduced_joint_law(const JointLaw& law, double factor) {
+  assert(factor > 0.0);
+  JointLaw r = law;
+  r.tan_phi = law.tan_phi / factor;
+  r.cohesion = law.cohesion / factor;
+  r.tensile_strength = law.tensile_strength / factor;
+  return r;
+}
+
+MaterialParameters reduced_material(const MaterialParameters& m, double factor) {
+  assert(factor > 0.0);
+  MaterialParameters r = m;
+  r.cohesion = m.cohesion / factor;
+  for (HardeningPoint& p : r.hardening) p.cohesion /= factor;
+  r.friction_angle = reduced_angle_deg(m.friction_angle, factor);
+  r.dilation_angle = std::min(m.dilation_angle, r.friction_angle);
+  if (m.tensile_strength) r.tensile_strength = *m.tensile_strength / factor;
+  return r;
+}
+
+std::vector<JointLaw> scene_joint_laws(const World& consolidated) {
+  return consolidated.stages.stages.empty() ? consolidated.joint_laws
+                                            : consolidated.stages.joint_laws;
+}
+
+FosSettings resolve_fos_settings(const World& consolidated, FosSettings s) {
+  if (s.failure_displacement <= 0.0) {
+    std::vector<double> areas;
+    for (const Block& b : consolidated.blocks) {
+      if (!b.fixed) areas.push_back(b.moments.area);
+    }
+    assert(!areas.empty());
+    std::nth_element(areas.begin(), areas.begin() + static_cast<long>(areas.size() / 2), areas.end());
+    s.failure_displacement = 0.05 * std::sqrt(areas[areas.size() / 2]);
+  }
+  if (s.trial_time <= 0.0) {
+    const double g = std::max(consolidated.gravity.norm(), 1e-12);
+    s.trial_time = std::sqrt(2.0 * s.failure_displacement / (s.detect_acceleration * g));
+  }
+  return s;
+}
+
+TrialResult run_trial(const World& consolidated, const FosSettings& s, double factor) {
+  assert(s.failure_displacement > 0.0 && s.trial_time > 0.0);
+  const auto start = std::chrono::steady_clock::now();
+  TrialResult r;
+  r.factor = factor;
+  r.world = consolidated;
+  World& w = r.world;
+  // The trial: no stages (their gravity and joints have done their work); the last time
+  // steps the consolidation used, the trial's dynamic coefficient, the reduced strengths.
+  w.stages = StagePlan{};
+  w.control.dynamic_coefficient = s.dynamic_coefficient;
+  w.control.steps.reset();
+  w.control.end_time = consolidated.time + s.trial_time;
+  w.joint_laws.clear();
+  for (const JointLaw& law : scene_joint_laws(consolidated)) {
+    w.joint_laws.push_back(reduced_joint_law(law, factor));
+  }
+  if (s.reduce_materials) {
+    for (Block& b : w.blocks) {
+      if (b.plastic) b.material_parameters = reduced_material(b.material_parameters, factor);
+    }
+  }
+  // Every block starts the trial at rest where the consolidation left it: a consolidation
+  // that ended dynamic must not hand its motion to the verdict.
+  for (Block& b : w.blocks) b.velocity.setZero();
+
+  const std::vector<Vec2> start_points = watched_points(w).positions;
+  // A step count far beyond what the trial time needs (step cuts shorten steps) bounds the
+  // trial even if the time step collapses.
+  const double dt = *std::min_element(w.control.time_steps.begin(), w.control.time_steps.end());
+  const long step_cap = 20L * static_cast<long>(std::ceil(s.trial_time / dt)) + 100;
+  StepWorkspace ws;
+  RunStats stats;
+  bool moved_too_far = false;
+  while (!is_finished(w) && r.steps < step_cap) {
+    const StepOutcome outcome = advance_step(w, ws, stats);
+    if (!outcome.ok) {
+      r.verdict = "diverged: " + outcome.message;
+      break;
+    }
+    ++r.steps;
+    const Watched now = watched_points(w);
+    for (std::size_t i = 0; i < start_points.size(); ++i) {
+      const double u = (now.positions[i] - start_points[i]).norm();
+      if (u > r.largest_displacement) {
+        r.largest_displacement = u;
+        r.watched_point = static_cast<int>(i);
+      }
+    }
+    r.kinetic_peak = std::max(r.kinetic_peak, total_kinetic(w));
+    if (r.largest_displacement > s.failure_displacement) {
+      moved_too_far = true;
+      break;
+    }
+  }
+  const Watched end = watched_points(w);
+  for (const Vec2& v : end.velocities) r.end_speed = std::max(r.end_speed, v.norm());
+  r.kinetic_end = total_kinetic(w);
+  r.simulated_time = w.time - consolidated.time;
+  // A point still moving faster than d / T would pass the failure displacement within
+  // another trial time: the slope has not come to rest, it is failing slowly.
+  const double creep_speed = s.failure_displacement / s.trial_time;
+  if (!r.verdict.empty()) {
+    r.stable = false;  // diverged
+  } else if (moved_too_far) {
+    r.stable = false;
+    r.verdict = "moved beyond the failure displacement";
+  } else if (r.end_speed > creep_speed) {
+    r.stable = false;
+    r.verdict = "still moving at the end";
+  } else {
+    r.stable = true;
+    r.verdict = "did not fail within the trial time";
+  }
+  if (w.monitors.empty() && r.watched_point >= 0) {
+    // Watched points are the free blocks in order: the ordinal back to the block index.
+    int ordinal = 0;
+    for (std::size_t i = 0; i < w.blocks.size(); ++i) {
+      if (w.blocks[i].fixed) continue;
+      if (ordinal++ == r.watched_point) {
+        r.watched_point = static_cast<int>(i);
+        break;
+      }
+    }
+  }
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::vector<TrialResult> run_trials(const World& consolidated, const FosSettings& s,
+                                    const std::vector<double>& factors,
+                                    const std::function<void(const TrialResult&)>& done) {
+  std::vector<TrialResult> results(factors.size());
+  std::mutex report;
+  std::size_t next = 0;
+  // Each worker takes the next factor; a trial owns its copy of the world, and the solver
+  // keeps no state between worlds, so trials need nothing shared but the queue.
+  auto worker = [&] {
+    for (;;) {
+      std::size_t k = 0;
+      {
+        const std::lock_guard<std::mutex> lock(report);
+        if (next >= factors.size()) return;
+        k = next++;
+      }
+      TrialResult r = run_trial(consolidated, s, factors[k]);
+      const std::lock_guard<std::mutex> lock(report);
+      if (done) done(r);
+      results[k] = std::move(r);
+    }
+  };
+  const std::size_t threads =
+      std::min<std::size_t>(factors.size(), static_cast<std::size_t>(std::max(1, s.jobs)));
+  std::vector<std::thread> pool;
+  for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  return results;
+}
+
+std::vector<double> next_factors(const std::vector<TrialResult>& trials, const FosSettings& s) {
+  const int jobs = std::max(1, s.jobs);
+  std::vector<double> out;
+  auto add = [&](double f) {
+    f = std::clamp(f, s.min_factor, s.max_factor);
+    for (const TrialResult& t : trials) {
+      if (t.factor == f) return;
+    }
+    if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
+  };
+  if (trials.empty()) {
+    for (int k = 0; k < jobs; ++k) add(std::ldexp(1.0, k));  // 1, 2, 4, ...
+    return out;
+  }
+  const Bracket b = bracket_of(trials);
+  if (b.stable && b.failing) {
+    const double lo = *b.stable, hi = *b.failing;
+    if (hi - lo <= s.tolerance) return {};
+    for (int k = 1; k <= jobs; ++k) add(lo + (hi - lo) * k / (jobs + 1));
+  } else if (b.stable) {
+    for (int k = 1; k <= jobs; ++k) add(*b.stable * std::ldexp(1.0, k));
+  } else {
+    for (int k = 1; k <= jobs; ++k) add(*b.failing * std::ldexp(1.0, -k));
+  }
+  return out;
+}
+
+FosResult find_factor_of_safety(const FosSettings& s, const TrialEvaluator& evaluate) {
+  FosResult result;
+  for (;;) {
+    const std::vector<double> factors = next_factors(result.trials, s);
+    if (factors.empty()) break;
+    for (TrialResult& t : evaluate(factors)) result.trials.push_back(std::move(t));
+  }
+  const Bracket b = bracket_of(result.trials);
+  if (b.stable && b.failing) {
+    result.found = true;
+    result.last_stable = *b.stable;
+    result.first_failing = *b.failing;
+    result.factor_of_safety = 0.5 * (*b.stable + *b.failing);
+    if (!b.monotone) {
+      result.message =
+          "a trial above the first failing factor was stable: the verdicts are not monotone in F "
+          "(the bracket is the lowest failing factor and the stable one below it)";
+    }
+  } else if (b.stable) {
+    result.message = "no trial failed up to F = " + std::to_string(s.max_factor) +
+                     ": the scene is stable beyond the search range (raise --max-factor)";
+  } else {
+    result.message = "every trial failed down to F = " + std::to_string(s.min_factor) +
+                     ": the scene is not stable even with its full strength (did its "
+                     "consolidation come to rest?)";
+  }
+  return result;
+}
+
+}  // namespace dda

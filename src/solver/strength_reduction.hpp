@@ -1,0 +1,120 @@
+// Factor of safety by strength reduction (issue 11, `dda fos`): the joints' strengths (and,
+// when asked, plastic blocks' strengths) divided by a trial factor F, a dynamic run from the
+// consolidated scene, a verdict (stable or failing) after a bounded number of steps, and a
+// search for the F between the last stable and the first failing trial
+// (docs/factor-of-safety.md).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "contact/joint_law.hpp"
+#include "materials/material.hpp"
+#include "solver/world.hpp"
+
+namespace dda {
+
+// ---- strength reduction (pure) ----
+
+// tan(phi)/F, c/F, tensile strength/F; the law's kind is kept. F > 0.
+JointLaw reduced_joint_law(const JointLaw& law, double factor);
+// A plastic material's cohesion (and its hardening curve), tan(friction angle) and tensile
+// strength divided by F; the dilation angle is kept, but never above the reduced friction
+// angle (the material library requires psi <= phi). F > 0.
+MaterialParameters reduced_material(const MaterialParameters& m, double factor);
+
+// ---- one trial ----
+
+// How a trial runs and is judged. Units SI; defaults resolved by resolve_fos_settings.
+struct FosSettings {
+  // The search: it stops when the bracket [last stable F, first failing F] is no wider than
+  // this (absolute, in F). Range (0, 1].
+  double tolerance = 0.01;
+  // Search range: no failing F up to max_factor, or no stable F down to min_factor, ends the
+  // search without a factor (exit 3). 0 < min_factor < 1 < max_factor.
+  double min_factor = 0.1;
+  double max_factor = 10.0;
+  // A trial fails when a watched point moves more than this (m) from where the trial
+  // started. <= 0: auto, 0.05 x sqrt(median area of the free blocks).
+  double failure_displacement = 0.0;
+  // Simulated time of a stable trial (s). <= 0: auto, sqrt(2 d / (a g)) with d the failure
+  // displacement and a = detect_acceleration: a point accelerating at a g from rest moves d
+  // in that time.
+  double trial_time = 0.0;
+  // The smallest acceleration, as a share of |gravity|, that the auto trial time resolves
+  // (range (0, 1)). 0.002: on a 30-degree plane, a block whose reduced strength falls short
+  // of its driving force by 0.4 % accelerates at 0.002 g (docs/factor-of-safety.md).
+  double detect_acceleration = 0.002;
+  // Share of the velocity carried from step to step in a trial (the scene's own
+  // dynamic_coefficient applies to the consolidation only). 1: dynamic.
+  double dynamic_coefficient = 1.0;
+  // Also reduce the strengths of plastic blocks' materials.
+  bool reduce_materials = false;
+  // Trials run at once (threads): the search evaluates this many factors per round.
+  int jobs = 2;
+};
+
+// What one trial found.
+struct TrialResult {
+  double factor = 0.0;
+  bool stable = false;
+  // Why: "did not fail within the trial time", "still moving at the end" (end speed above
+  // d / T), "moved beyond the failure displacement", "diverged: ...".
+  std::string verdict;
+  double largest_displacement = 0.0;  // m, of the watched points since the trial started
+  double end_speed = 0.0;             // m/s, the fastest watched point at the trial's end
+  double kinetic_peak = 0.0;          // J/m, the largest kinetic energy during the trial
+  double kinetic_end = 0.0;           // J/m, at its end
+  int steps = 0;
+  double simulated_time = 0.0;        // s
+  double wall_time_s = 0.0;
+  int watched_point = -1;             // monitor index (monitors given) or block index that moved most
+  World world;                        // the state where the trial ended (for pictures)
+};
+
+// The scene's joint laws as given (a staged consolidation may have replaced them for its
+// stages; the trials start from the scene's).
+std::vector<JointLaw> scene_joint_laws(const World& consolidated);
+
+// Fills the automatic settings (failure_displacement, trial_time) from the consolidated
+// world. The world must have at least one free block.
+FosSettings resolve_fos_settings(const World& consolidated, FosSettings settings);
+
+// Runs one trial: a copy of `consolidated` with every joint's strength divided by `factor`
+// (and plastic blocks' when settings.reduce_materials), the scene's last time steps, the
+// trial's dynamic coefficient, until it fails or trial_time has passed. Settings resolved.
+TrialResult run_trial(const World& consolidated, const FosSettings& settings, double factor);
+
+// Runs the trials at `factors`, up to settings.jobs at once (threads, each trial with its
+// own copy of the world), and returns them in the order of `factors`. `done` (may be
+// empty) is called once per finished trial, one call at a time.
+std::vector<TrialResult> run_trials(const World& consolidated, const FosSettings& settings,
+                                    const std::vector<double>& factors,
+                                    const std::function<void(const TrialResult&)>& done);
+
+// ---- the search (pure over an evaluator) ----
+
+// Evaluates trials at the given factors (at once, when it can) and returns them in order.
+using TrialEvaluator = std::function<std::vector<TrialResult>(const std::vector<double>&)>;
+
+struct FosResult {
+  bool found = false;
+  double factor_of_safety = 0.0;  // the bracket's midpoint
+  double last_stable = 0.0;       // the bracket
+  double first_failing = 0.0;
+  std::string message;            // why none was found, or a note (non-monotone verdicts)
+  std::vector<TrialResult> trials;  // in the order they ran
+};
+
+// The next factors to try given the trials so far: from F = 1 (and, with more jobs, F = 2)
+// outwards by doubling (halving) until a bracket exists, then `jobs` points that cut the
+// bracket into jobs + 1 equal parts. Empty when the bracket is within the tolerance or the
+// range is exhausted. Exposed for tests.
+std::vector<double> next_factors(const std::vector<TrialResult>& trials, const FosSettings& s);
+
+// Runs the search; always ends: each round either narrows the bracket by a factor of
+// jobs + 1 or moves a search end by a factor of 2 towards the range's limits.
+FosResult find_factor_of_safety(const FosSettings& settings, const TrialEvaluator& evaluate);
+
+}  // namespace dda
