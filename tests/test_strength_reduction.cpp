@@ -27,9 +27,10 @@ double deg(double d) { return d * kPi / 180.0; }
 // (W cos(dip) tan(phi) + c L) / (W sin(dip)).
 struct Planar {
   double dip = 30.0, phi = 30.0, cohesion = 1e4, weight = 1e6, base = 10.0;
+  double uplift = 0.0;  // N per metre, uniform on the base (a phreatic line parallel to it)
   std::string law = "coulomb_slip";
   double le_factor() const {
-    return (weight * std::cos(deg(dip)) * std::tan(deg(phi)) + cohesion * base) /
+    return ((weight * std::cos(deg(dip)) - uplift) * std::tan(deg(phi)) + cohesion * base) /
            (weight * std::sin(deg(dip)));
   }
   std::string scene_text() const {
@@ -50,6 +51,12 @@ struct Planar {
           {{"vertices", {at(5, 0), at(5 + base, 0), at(5 + base, h), at(5, h)}}, {"material", "rock"}}}},
         {"stages", {{{"duration", 0.5}, {"dynamic_coefficient", 0.0}, {"gravity_ramp", {0.0, 1.0}}}}},
     };
+    if (uplift > 0.0) {
+      // A uniform head U / (gamma_w L) over the base: the line parallel to the plane, that
+      // height above it (vertically, since the pressure is gamma_w (y_line - y)).
+      const double head = uplift / (9810.0 * base), slope = std::tan(deg(dip));
+      scene["water"] = {{"phreatic_line", {{-100.0, -100.0 * slope + head}, {100.0, 100.0 * slope + head}}}};
+    }
     return scene.dump();
   }
 };
@@ -198,6 +205,23 @@ TEST_CASE("the factor of a block on an inclined plane with a Coulomb slip joint 
   // A stable trial above FS is within the verdict's resolution (a slower acceleration than
   // it resolves), never beyond it.
   CHECK(r.last_stable <= 1.2 + resolution);
+}
+
+TEST_CASE("an uplift on the sliding plane lowers the factor as limit equilibrium says",
+          "[fos][water]") {
+  // U = 200 kN/m: ((866 - 200) tan 30 + 100) / 500 = 0.969 (Hoek and Bray's planar example).
+  Planar planar;
+  planar.uplift = 2e5;
+  REQUIRE(planar.le_factor() == Approx(0.969).margin(5e-4));
+  const World w = consolidated(planar);
+  const FosSettings s = resolve_fos_settings(w, FosSettings{});
+  const FosResult r = find_factor_of_safety(s, [&](const std::vector<double>& factors) {
+    return run_trials(w, s, factors, {});
+  });
+  REQUIRE(r.found);
+  // The budget of the dry case (bracket half-width plus the verdict's resolution).
+  const double resolution = planar.le_factor() * 2.0 * s.detect_acceleration / std::sin(deg(30.0));
+  CHECK(std::abs(r.factor_of_safety - planar.le_factor()) <= 0.5 * s.tolerance + resolution);
 }
 
 TEST_CASE("a failing trial slides at the closed-form acceleration of its reduced strength",

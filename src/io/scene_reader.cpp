@@ -570,9 +570,29 @@ MonitorSpec read_monitor(const Field& f, const std::vector<BlockSpec>& blocks,
   return m;
 }
 
+// The water table: a phreatic line of at least two points with x strictly increasing (it is
+// a function of x), and the water's unit weight.
+WaterTable read_water(const Field& f) {
+  f.expect_keys({"phreatic_line", "unit_weight"});
+  WaterTable water;
+  const Field line = f.member("phreatic_line");
+  const std::vector<Field> points = line.elements(2, "list at least two points [x, y]");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    water.phreatic_line.push_back(points[i].vec2("[x, y]"));
+    if (i > 0 && !(water.phreatic_line[i].x() > water.phreatic_line[i - 1].x())) {
+      points[i].fail("x must increase along the phreatic line (it gives one water height per x), "
+                     "got " + input::format_number(water.phreatic_line[i].x()) + " after " +
+                     input::format_number(water.phreatic_line[i - 1].x()));
+    }
+  }
+  if (auto g = f.optional_member("unit_weight")) water.unit_weight = positive_number(*g);
+  return water;
+}
+
 Scene read_scene(const Field& root, const std::string& source) {
   root.expect_keys({"description", "gravity", "plane", "control", "materials",
-                    "joint_materials", "blocks", "joints", "pins", "point_loads", "monitors", "stages"});
+                    "joint_materials", "blocks", "joints", "pins", "point_loads", "monitors",
+                    "stages", "water"});
   Scene scene;
   scene.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
@@ -602,6 +622,7 @@ Scene read_scene(const Field& root, const std::string& source) {
       scene.monitors.push_back(read_monitor(m, scene.blocks, scene.monitors));
     }
   }
+  if (auto water = root.optional_member("water")) scene.water = read_water(*water);
   if (staged) {
     scene.stages = read_stages(root.member("stages"), scene.control, scene.joint_materials);
     check_staged_run_length(root.member("control"), scene.stages, scene.control);

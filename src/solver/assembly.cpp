@@ -57,6 +57,12 @@ void assemble(const World& world, const StepContext& ctx, BlockSystem& system) {
     const Mat26 tp = step_t(ctx, load.block).at(load.current - b.moments.centroid);
     system.rhs.segment<6>(b.first_dof) += point_force(tp, load.force);
   }
+  for (const BlockForce& w : world.water_forces) {
+    const Block& b = world.blocks[static_cast<std::size_t>(w.block)];
+    if (b.fixed) continue;
+    const Mat26 tp = step_t(ctx, w.block).at(w.point - b.moments.centroid);
+    system.rhs.segment<6>(b.first_dof) += point_force(tp, w.force);
+  }
 }
 
 }  // namespace dda

@@ -111,6 +111,12 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     const Mat26 tp = step_t(ctx, load.block).at(load.current - b.moments.centroid);
     s.load_work += load.force.dot(tp * d.segment<6>(b.first_dof));
   }
+  for (const BlockForce& w : world.water_forces) {  // joint water: constant over the step
+    const Block& b = world.blocks[static_cast<std::size_t>(w.block)];
+    if (b.fixed) continue;
+    const Mat26 tp = step_t(ctx, w.block).at(w.point - b.moments.centroid);
+    s.load_work += w.force.dot(tp * d.segment<6>(b.first_dof));
+  }
   auto suspect = [&s](const Contact& c, double energy) {
     if (energy <= 0.0) return;
     s.suspects.push_back({c.key, energy});

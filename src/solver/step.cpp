@@ -388,6 +388,20 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   //    workspace carries is only a shortcut: the contacts are those of a full detection.)
   detect_contacts(world, world.contacts, ws.detection);
   const std::vector<Contact> contacts_at_start = world.contacts;
+  // 2b. Joint water pressure on the faces those contacts share, constant over the step. The
+  //     water weighs what gravity makes it weigh: a stage that ramps gravity up from zero
+  //     ramps the pressure with it (at full pressure and no weight, a block would be pushed
+  //     off its joint and its bond broken before the consolidation began).
+  if (world.water) {
+    std::vector<const Polygon*> polygons;
+    for (const Block& b : world.blocks) polygons.push_back(&b.vertices);
+    WaterTable water = *world.water;
+    if (!world.stages.stages.empty()) {
+      const double scene_g = world.stages.gravity.norm();
+      water.unit_weight *= scene_g > 0.0 ? world.gravity.norm() / scene_g : 0.0;
+    }
+    world.water_forces = joint_water_forces(water, polygons, world.contacts);
+  }
   clock.lap(stats.stage_times.detect);
   int penetration_cuts = 0;
 

@@ -89,6 +89,7 @@ World make_world(const Scene& scene) {
   for (const PointLoadSpec& load : scene.point_loads) {
     world.loads.push_back(PointLoad{load.block, load.point, load.point, load.force});
   }
+  world.water = scene.water;
   for (const MonitorSpec& m : scene.monitors) {
     world.monitors.push_back(Monitor{m.name, m.block, m.point, m.point});
   }

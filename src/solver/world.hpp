@@ -12,6 +12,7 @@
 #include "kinematics/polygon.hpp"
 #include "kinematics/types.hpp"
 #include "materials/material.hpp"
+#include "solver/joint_water.hpp"
 #include "solver/scene.hpp"
 #include "solver/stages.hpp"
 
@@ -122,6 +123,10 @@ struct World {
   std::vector<Pin> pins;
   std::vector<PointLoad> loads;
   std::vector<Monitor> monitors;
+  // Joint water pressure (solver/joint_water.hpp): the table, and the forces it puts on the
+  // blocks in the present step (from the contacts detected at its start; empty without water).
+  std::optional<WaterTable> water;
+  std::vector<BlockForce> water_forces;
   Vec2 gravity = Vec2::Zero();
   PlaneMode plane = PlaneMode::Strain;
   ControlSettings control;

@@ -1,0 +1,90 @@
+#include "solver/joint_water.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "contact/narrow_phase.hpp"
+
+namespace dda {
+
+double phreatic_height(const WaterTable& water, double x) {
+  const std::vector<Vec2>& p = water.phreatic_line;
+  assert(p.size() >= 2);
+  if (x <= p.front().x()) return p.front().y();
+  if (x >= p.back().x()) return p.back().y();
+  const auto next = std::upper_bound(p.begin(), p.end(), x,
+                                     [](double v, const Vec2& q) { return v < q.x(); });
+  const Vec2& b = *next;
+  const Vec2& a = *(next - 1);
+  return a.y() + (b.y() - a.y()) * (x - a.x()) / (b.x() - a.x());
+}
+
+SegmentPressure segment_pressure(const WaterTable& water, const Vec2& a, const Vec2& b) {
+  const double length = (b - a).norm();
+  SegmentPressure out;
+  out.centre = 0.5 * (a + b);
+  if (length == 0.0) return out;
+  // Along the segment (parameter s in [0, 1]) the head h(x) - y is linear between the
+  // segment's crossings of the line's vertices' x: split there, then clip each piece where
+  // the head turns negative, and integrate the linear head exactly (force and moment).
+  std::vector<double> cuts{0.0, 1.0};
+  const double dx = b.x() - a.x();
+  if (dx != 0.0) {
+    for (const Vec2& q : water.phreatic_line) {
+      const double s = (q.x() - a.x()) / dx;
+      if (s > 0.0 && s < 1.0) cuts.push_back(s);
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  auto head = [&](double s) {
+    const Vec2 p = a + s * (b - a);
+    return phreatic_height(water, p.x()) - p.y();
+  };
+  double force = 0.0, moment = 0.0;  // moment: integral of p(s) s ds, in units of length
+  auto add_piece = [&](double s0, double s1, double h0, double h1) {
+    // Linear head h0 -> h1 over [s0, s1], both >= 0.
+    const double w = s1 - s0;
+    force += 0.5 * (h0 + h1) * w;
+    moment += w * (h0 * (2.0 * s0 + s1) + h1 * (s0 + 2.0 * s1)) / 6.0;
+  };
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double s0 = cuts[k], s1 = cuts[k + 1];
+    const double h0 = head(s0), h1 = head(s1);
+    if (h0 <= 0.0 && h1 <= 0.0) continue;
+    if (h0 >= 0.0 && h1 >= 0.0) {
+      add_piece(s0, s1, h0, h1);
+    } else {
+      const double sz = s0 + (s1 - s0) * h0 / (h0 - h1);  // where the head is zero
+      if (h0 > 0.0) add_piece(s0, sz, h0, 0.0);
+      else add_piece(sz, s1, 0.0, h1);
+    }
+  }
+  out.force = water.unit_weight * force * length;
+  if (force > 0.0) out.centre = a + (moment / force) * (b - a);
+  return out;
+}
+
+std::vector<BlockForce> joint_water_forces(const WaterTable& water,
+                                           const std::vector<const Polygon*>& polygons,
+                                           const std::vector<Contact>& contacts) {
+  std::vector<BlockForce> out;
+  for (const Contact& c : contacts) {
+    if (c.length <= 0.0) continue;  // a point contact: no face, no water force
+    const Polygon& vp = *polygons[static_cast<std::size_t>(c.key.vertex_block)];
+    const int n = static_cast<int>(vp.size());
+    const int v = c.key.vertex;
+    for (int w : {(v + n - 1) % n, (v + 1) % n}) {
+      const Vec2 along = vp[w] - vp[v];
+      // The same test as the contact's length share (contact_detection.cpp).
+      if (std::abs(along.dot(c.normal)) > kWedgeTolerance * along.norm()) continue;
+      const SegmentPressure p = segment_pressure(water, vp[v], vp[v] + 0.5 * along);
+      if (p.force <= 0.0) continue;
+      out.push_back({c.key.vertex_block, p.centre, p.force * c.normal});
+      out.push_back({c.key.edge_block, p.centre, -p.force * c.normal});
+    }
+  }
+  return out;
+}
+
+}  // namespace dda

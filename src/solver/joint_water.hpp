@@ -1,0 +1,49 @@
+// Joint water pressure from a phreatic line (issue 11): hydrostatic pressure below the line
+// acts on the faces of the joints (both faces, pushing the blocks apart), as
+// limit-equilibrium slope checks load them (Hoek and Bray, Rock Slope Engineering, ch. 6:
+// the uplift U on a sliding plane and the thrust V in a water-filled tension crack). Free
+// faces of the blocks carry none: the model is the water in the rock's joints.
+#pragma once
+
+#include <vector>
+
+#include "contact/contact.hpp"
+#include "kinematics/types.hpp"
+
+namespace dda {
+
+// The water table: a polyline with increasing x, extended flat beyond its ends.
+struct WaterTable {
+  std::vector<Vec2> phreatic_line;  // at least 2 points, x strictly increasing
+  double unit_weight = 9810.0;      // N/m^3 (1000 kg/m^3 x 9.81 m/s^2)
+};
+
+// Height of the phreatic line at x (m).
+double phreatic_height(const WaterTable& water, double x);
+
+// The pressure force on a segment a-b of a joint face: its size (N per metre, the integral of
+// unit_weight x max(0, h(x) - y) along the segment, exact for the piecewise-linear line) and
+// where it acts (the centre of pressure; the segment's midpoint when the force is zero).
+struct SegmentPressure {
+  double force = 0.0;
+  Vec2 centre = Vec2::Zero();
+};
+SegmentPressure segment_pressure(const WaterTable& water, const Vec2& a, const Vec2& b);
+
+// A force on a block at a point, constant over a step.
+struct BlockForce {
+  int block = -1;
+  Vec2 point = Vec2::Zero();
+  Vec2 force = Vec2::Zero();  // N per metre
+};
+
+// The water forces on the blocks from their joint faces: each contact that carries a share of
+// a face (the halves of the vertex's edges that lie along the contact edge, as for its
+// cohesion; contact_detection.cpp) takes the pressure on that share, pushing the vertex's
+// block along the contact normal and the edge's block against it, at the centre of pressure.
+// `polygons[i]` are block i's vertices at the step's start.
+std::vector<BlockForce> joint_water_forces(const WaterTable& water,
+                                           const std::vector<const Polygon*>& polygons,
+                                           const std::vector<Contact>& contacts);
+
+}  // namespace dda

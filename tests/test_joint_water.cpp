@@ -1,0 +1,97 @@
+// Joint water pressure from a phreatic line (issue 11): the pressure resultant on a segment
+// against hand integrals, the forces on a joint face, and the reader's checks.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "io/scene_reader.hpp"
+#include "solver/joint_water.hpp"
+
+namespace {
+
+using namespace dda;
+
+}  // namespace
+
+TEST_CASE("segment pressure: hydrostatic resultants and centres of pressure", "[water]") {
+  WaterTable water;
+  water.phreatic_line = {{-10.0, 5.0}, {10.0, 5.0}};  // flat at y = 5
+  water.unit_weight = 1e4;
+  // A vertical crack face from y = 5 down to y = -1 (depth 6): V = gamma z^2 / 2, acting at
+  // two thirds of the depth (Hoek and Bray's tension-crack thrust).
+  SegmentPressure p = segment_pressure(water, {0.0, 5.0}, {0.0, -1.0});
+  // Exact integrals of a linear pressure; only round-off differs.
+  CHECK(p.force == Approx(0.5 * 1e4 * 36.0).epsilon(1e-13));
+  CHECK(p.centre.y() == Approx(5.0 - 4.0).epsilon(1e-13));
+  // Half the segment above the water: only the wetted part counts.
+  p = segment_pressure(water, {0.0, 11.0}, {0.0, -1.0});
+  CHECK(p.force == Approx(0.5 * 1e4 * 36.0).epsilon(1e-13));
+  CHECK(p.centre.y() == Approx(1.0).epsilon(1e-13));
+  // Wholly above: nothing.
+  CHECK(segment_pressure(water, {0.0, 6.0}, {3.0, 7.0}).force == 0.0);
+  // A horizontal face 2 m under the table, 4 m long: uniform 2e4 Pa, 8e4 N at its middle.
+  p = segment_pressure(water, {1.0, 3.0}, {5.0, 3.0});
+  CHECK(p.force == Approx(8e4).epsilon(1e-13));
+  CHECK(p.centre.x() == Approx(3.0).epsilon(1e-13));
+
+  // A phreatic line with a kink at x = 0 (head 0 at x = -4, 4 at x = 0, 0 at x = 4, above a
+  // horizontal face at y = 0): a triangle of pressure, 0.5 * 8 * 4 * gamma, centred at 0.
+  WaterTable peak;
+  peak.phreatic_line = {{-4.0, 0.0}, {0.0, 4.0}, {4.0, 0.0}};
+  peak.unit_weight = 1.0;
+  p = segment_pressure(peak, {-6.0, 0.0}, {6.0, 0.0});
+  CHECK(p.force == Approx(16.0).epsilon(1e-13));
+  CHECK(p.centre.x() == Approx(0.0).margin(1e-12));
+  // Outside its ends the line is flat: heights there are its end heights.
+  CHECK(phreatic_height(peak, -100.0) == 0.0);
+  CHECK(phreatic_height(peak, 2.0) == Approx(2.0).epsilon(1e-15));
+}
+
+TEST_CASE("joint water forces push the two faces of a joint apart with the face's resultant",
+          "[water]") {
+  // Block 1, a 4 m x 1 m box, sits on block 0 at y = 0 (a face of 4 m); the table is 3 m
+  // above the joint. Its two base vertices each carry half the face (Contact::length 2).
+  const Polygon base{{-5, -2}, {5, -2}, {5, 0}, {-5, 0}};
+  const Polygon box{{0, 0}, {4, 0}, {4, 1}, {0, 1}};
+  std::vector<Contact> contacts(2);
+  for (int k = 0; k < 2; ++k) {
+    Contact& c = contacts[static_cast<std::size_t>(k)];
+    c.key = {1, k, 0, 2};
+    c.normal = {0.0, 1.0};
+    c.tangent = {-1.0, 0.0};
+    c.length = 2.0;
+  }
+  WaterTable water;
+  water.phreatic_line = {{-10.0, 3.0}, {10.0, 3.0}};
+  const std::vector<BlockForce> forces = joint_water_forces(water, {&base, &box}, contacts);
+  Vec2 on_box = Vec2::Zero(), on_base = Vec2::Zero();
+  double moment = 0.0;  // about the origin, on the box
+  for (const BlockForce& f : forces) {
+    (f.block == 1 ? on_box : on_base) += f.force;
+    if (f.block == 1) moment += f.point.x() * f.force.y() - f.point.y() * f.force.x();
+  }
+  // U = gamma h L = 9810 x 3 x 4, upward on the box, at the face's middle (x = 2).
+  CHECK(on_box.y() == Approx(9810.0 * 12.0).epsilon(1e-13));
+  CHECK(on_box.x() == Approx(0.0).margin(1e-9));
+  CHECK((on_box + on_base).norm() == Approx(0.0).margin(1e-9));
+  CHECK(moment / on_box.y() == Approx(2.0).epsilon(1e-13));
+}
+
+TEST_CASE("the water table is checked where it is read", "[water][input]") {
+  const std::string blocks =
+      R"("control": {"time_step": 0.01, "steps": 1},
+         "materials": {"rock": {"model": "elastic", "density": 2500, "young": 1e9, "poisson": 0.25}},
+         "blocks": [{"vertices": [[0,0],[1,0],[1,1],[0,1]], "material": "rock"}])";
+  auto scene = [&](const std::string& water) {
+    return "{" + blocks + ", \"water\": " + water + "}";
+  };
+  CHECK(parse_scene_text(scene(R"({"phreatic_line": [[0, 2], [5, 1]]})"), "s.json").water->unit_weight == 9810.0);
+  CHECK_THROWS_WITH(parse_scene_text(scene(R"({"phreatic_line": [[0, 2], [0, 1]]})"), "s.json"),
+                    Catch::Contains("s.json: water.phreatic_line[1]: x must increase"));
+  CHECK_THROWS_WITH(parse_scene_text(scene(R"({"phreatic_line": [[0, 2]]})"), "s.json"),
+                    Catch::Contains("water.phreatic_line"));
+  CHECK_THROWS_WITH(parse_scene_text(scene(R"({"phreatic_line": [[0, 2], [1, 2]], "unit_weight": -1})"), "s.json"),
+                    Catch::Contains("water.unit_weight"));
+  CHECK_THROWS_WITH(parse_scene_text(scene(R"({"phreatic": [[0, 2], [1, 2]]})"), "s.json"),
+                    Catch::Contains("water"));
+}
