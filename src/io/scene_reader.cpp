@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
+#include <sstream>
 #include <utility>
 
 #include "contact/broad_phase.hpp"
@@ -589,10 +591,88 @@ WaterTable read_water(const Field& f) {
   return water;
 }
 
+// An acceleration record: a CSV file with the header "time,ax,ay" and one row per sample,
+// times strictly increasing; read relative to the scene file's directory. Errors name the
+// scene's place and the file's line.
+void read_acceleration_record(const Field& f, const std::string& scene_source, double scale,
+                              BaseMotion& motion) {
+  const std::string name = f.string();
+  std::filesystem::path path(name);
+  if (path.is_relative()) path = std::filesystem::path(scene_source).parent_path() / path;
+  std::string text;
+  try {
+    text = input::read_input_file(path.string(), "an acceleration record");
+  } catch (const InputError& e) {
+    f.fail(e.what());
+  }
+  std::istringstream in(text);
+  std::string line;
+  int line_number = 0;
+  auto fail_line = [&](const std::string& what) {
+    f.fail(path.string() + ", line " + std::to_string(line_number) + ": " + what);
+  };
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line_number == 1) {
+      if (line != "time,ax,ay") fail_line("the header must be \"time,ax,ay\", got \"" + line + "\"");
+      continue;
+    }
+    if (line.empty()) continue;
+    double v[3];
+    std::istringstream row(line);
+    for (int k = 0; k < 3; ++k) {
+      std::string cell;
+      if (!std::getline(row, cell, ',')) fail_line("expected 3 numbers (time, ax, ay)");
+      char* end = nullptr;
+      v[k] = std::strtod(cell.c_str(), &end);
+      if (cell.empty() || *end != '\0' || !std::isfinite(v[k])) {
+        fail_line("\"" + cell + "\" is not a finite number");
+      }
+    }
+    std::string extra;
+    if (std::getline(row, extra, ',')) fail_line("expected 3 numbers (time, ax, ay), got more");
+    if (!motion.times.empty() && !(v[0] > motion.times.back())) {
+      fail_line("times must increase, got " + input::format_number(v[0]) + " after " +
+                input::format_number(motion.times.back()));
+    }
+    motion.times.push_back(v[0]);
+    motion.accelerations.push_back(scale * Vec2(v[1], v[2]));
+  }
+  if (motion.times.size() < 2) f.fail(path.string() + ": a record needs at least two rows");
+}
+
+// The ground's motion: a sine or a record, from a start time.
+BaseMotion read_base_motion(const Field& f, const std::string& source) {
+  f.expect_keys({"start", "sine", "record", "scale"});
+  BaseMotion m;
+  if (auto g = f.optional_member("start")) m.start = non_negative_number(*g);
+  const bool sine = f.has("sine"), record = f.has("record");
+  if (sine == record) {
+    f.fail("give exactly one of \"sine\" ({\"amplitude\": [ax, ay], \"frequency\": Hz, "
+           "\"cycles\": n}) and \"record\" (a CSV file time,ax,ay)");
+  }
+  if (sine) {
+    if (f.has("scale")) f.place("scale").fail("applies to a \"record\" only");
+    const Field s = f.member("sine");
+    s.expect_keys({"amplitude", "frequency", "cycles"});
+    m.is_sine = true;
+    m.amplitude = s.member("amplitude").vec2("[ax, ay]");
+    m.frequency = positive_number(s.member("frequency"));
+    if (auto c = s.optional_member("cycles")) m.cycles = positive_number(*c);
+  } else {
+    m.is_sine = false;
+    double scale = 1.0;
+    if (auto g = f.optional_member("scale")) scale = g->number();
+    read_acceleration_record(f.member("record"), source, scale, m);
+  }
+  return m;
+}
+
 Scene read_scene(const Field& root, const std::string& source) {
   root.expect_keys({"description", "gravity", "plane", "control", "materials",
                     "joint_materials", "blocks", "joints", "pins", "point_loads", "monitors",
-                    "stages", "water"});
+                    "stages", "water", "base_motion"});
   Scene scene;
   scene.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
@@ -623,6 +703,9 @@ Scene read_scene(const Field& root, const std::string& source) {
     }
   }
   if (auto water = root.optional_member("water")) scene.water = read_water(*water);
+  if (auto motion = root.optional_member("base_motion")) {
+    scene.base_motion = read_base_motion(*motion, source);
+  }
   if (staged) {
     scene.stages = read_stages(root.member("stages"), scene.control, scene.joint_materials);
     check_staged_run_length(root.member("control"), scene.stages, scene.control);

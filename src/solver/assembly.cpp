@@ -12,7 +12,9 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
   const Mat6 mass = mass_matrix(t, b.moments, b.density);
   const Vec6 v0 = ctx.dynamic_coefficient * b.velocity;
   k += (2.0 / (ctx.dt * ctx.dt)) * mass;
-  f += body_force(t, b.moments, b.density, world.gravity) + (2.0 / ctx.dt) * (mass * v0);
+  // In the ground's frame under base shaking, gravity less the ground's acceleration.
+  f += body_force(t, b.moments, b.density, world.gravity - ctx.base_acceleration) +
+       (2.0 / ctx.dt) * (mass * v0);
   if (b.plastic && !ctx.material_terms.empty()) {
     // Newton: the stress at increment de is taken as s + D_t (de - de_k) (the material
     // linearised at the last solution, solver/material_coupling.hpp).

@@ -85,6 +85,9 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     const Vec6 db = d.segment<6>(b.first_dof);
     const Vec3 de = db.segment<3>(kEx);
     const double area = b.moments.area;
+    // Base shaking: the d'Alembert force -m a_ground of the ground's frame does work on the
+    // block's translation (solver/base_motion.hpp); zero without it.
+    s.load_work -= b.density * area * ctx.base_acceleration.dot(db.head<2>());
     // Shi's step takes the stiffness at the end of the step (backward Euler on the strain):
     // the work of s_end on de falls short of the stored energy's rise by A/2 de^T D de.
     if (b.plastic) {

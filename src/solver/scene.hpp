@@ -11,6 +11,7 @@
 
 #include "contact/joint_law.hpp"
 #include "kinematics/types.hpp"
+#include "solver/base_motion.hpp"
 #include "solver/joint_water.hpp"
 #include "materials/elastic.hpp"
 #include "materials/material.hpp"
@@ -244,6 +245,9 @@ struct Scene {
   std::vector<MonitorSpec> monitors;
   // Joint water pressure from a phreatic line (docs/scene-format.md, "water"); none if unset.
   std::optional<WaterTable> water;
+  // Base shaking: the fixed blocks' prescribed acceleration (docs/scene-format.md,
+  // "base_motion"); none if unset.
+  std::optional<BaseMotion> base_motion;
   // Stages run in order (empty: none, the run follows `control` alone). With stages,
   // control.end_time is the sum of their durations and control.steps is unset.
   std::vector<StageSpec> stages;

@@ -10,6 +10,7 @@
 #include "solver/assembly.hpp"
 #include "solver/configuration_update.hpp"
 #include "solver/contact_assembly.hpp"
+#include "solver/base_motion.hpp"
 #include "solver/contact_detection.hpp"
 #include "solver/energy.hpp"
 #include "solver/material_coupling.hpp"
@@ -72,6 +73,9 @@ StepContext make_step_context(const World& world, double dt) {
   ctx.penalty = world.penalty;
   ctx.dynamic_coefficient = world.control.dynamic_coefficient;
   ctx.allowed_displacement = world.control.max_displacement_ratio * world.w0;
+  if (world.base_motion) {
+    ctx.base_acceleration = mean_base_acceleration(*world.base_motion, world.time, world.time + dt);
+  }
   return ctx;
 }
 

@@ -130,6 +130,7 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
   // The trial: no stages (their gravity and joints have done their work); the last time
   // steps the consolidation used, the trial's dynamic coefficient, the reduced strengths.
   w.stages = StagePlan{};
+  w.base_motion.reset();  // a strength-reduction trial is static loading: no shaking
   w.control.dynamic_coefficient = s.dynamic_coefficient;
   w.control.steps.reset();
   w.control.end_time = consolidated.time + s.trial_time;

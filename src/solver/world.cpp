@@ -90,6 +90,7 @@ World make_world(const Scene& scene) {
     world.loads.push_back(PointLoad{load.block, load.point, load.point, load.force});
   }
   world.water = scene.water;
+  world.base_motion = scene.base_motion;
   for (const MonitorSpec& m : scene.monitors) {
     world.monitors.push_back(Monitor{m.name, m.block, m.point, m.point});
   }

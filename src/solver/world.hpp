@@ -127,6 +127,9 @@ struct World {
   // blocks in the present step (from the contacts detected at its start; empty without water).
   std::optional<WaterTable> water;
   std::vector<BlockForce> water_forces;
+  // Base shaking (solver/base_motion.hpp): the ground's acceleration history; the world is
+  // advanced in the ground's frame.
+  std::optional<BaseMotion> base_motion;
   Vec2 gravity = Vec2::Zero();
   PlaneMode plane = PlaneMode::Strain;
   ControlSettings control;
