@@ -82,15 +82,19 @@ TEST_CASE("Goodman and Bray's toppling example: limiting friction 38.15 and the 
   check_published(topple_factor(s, 45.0), 1.27, 2);
 }
 
-TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the planar block with "
-          "cohesion",
+TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the planar block, the "
+          "dry tension-crack slope and the active-passive wedges",
           "[slope]") {
+  // Each about 0.2 s in the release build (rigid blocks; 12 trials on 2 threads).
   const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
-  const SlopeCase& c = find_case(cases, "planar_c10");
-  const CaseResult r = run_case(c, RunOptions{}, {});
-  REQUIRE(r.found);
-  INFO("DDA " << r.factor << " in [" << r.last_stable << ", " << r.first_failing << "], LE "
-              << c.le_factor << ", allowed " << r.allowed);
-  CHECK(r.pass);
-  CHECK(r.first_failing >= c.le_factor);  // a failing trial below LE would be a false failure
+  for (const char* name : {"planar_c10", "hoek_bray_dry", "wedge_smooth", "wedge_rough"}) {
+    const SlopeCase& c = find_case(cases, name);
+    const CaseResult r = run_case(c, RunOptions{}, {});
+    INFO(name << ": DDA " << r.factor << " in [" << r.last_stable << ", " << r.first_failing
+              << "], LE " << c.le_factor << ", allowed " << r.allowed);
+    REQUIRE(r.found);
+    CHECK(r.pass);
+    // A failing trial below LE by more than the bracket would be a false failure.
+    CHECK(r.first_failing >= c.le_factor - 1e-9);
+  }
 }

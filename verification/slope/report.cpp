@@ -63,6 +63,11 @@ json case_json(const SlopeCase& c, const CaseResult& r) {
     }
     j["columns"] = cols;
   }
+  if (!r.scan.empty()) {
+    json scan = json::array();
+    for (const auto& p : r.scan) scan.push_back({{"factor", p.factor}, {"stable", p.stable}, {"moved", p.moved}});
+    j["scan"] = scan;
+  }
   return j;
 }
 
@@ -113,6 +118,13 @@ std::string markdown(const RunInfo& info, const std::vector<SlopeCase>& cases,
     for (const ColumnMotion& m : r.columns) {
       md << "| " << m.column << " | " << fixed(m.rotation_deg, 3) << " | " << fixed(m.base_slip, 3)
          << " | " << fixed(m.top_move, 3) << " | " << m.mode << " | " << m.le_mode << " |\n";
+    }
+    if (r.scan.empty()) continue;
+    md << "\nTrials every 0.05 below the search's first failing F (is the verdict monotone?):\n\n";
+    md << "| F | verdict | largest displacement (m) |\n|---|---|---|\n";
+    for (const auto& p : r.scan) {
+      md << "| " << fixed(p.factor, 2) << " | " << (p.stable ? "stable" : "FAILS") << " | "
+         << fixed(p.moved, 3) << " |\n";
     }
   }
   return md.str();

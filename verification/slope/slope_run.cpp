@@ -58,6 +58,7 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
                     const std::function<void(const std::string&)>& progress) {
   CaseResult r;
   r.name = c.name;
+  r.allowed = 0.5 * options.tolerance + c.resolution;
   const auto start = std::chrono::steady_clock::now();
   Scene scene;
   try {
@@ -93,7 +94,6 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
   r.trials = static_cast<int>(fos.trials.size());
   r.found = fos.found;
   r.note = fos.message;
-  r.allowed = 0.5 * options.tolerance + c.resolution;
   for (const Block& b : world.blocks) {
     r.before.push_back(b.vertices);
     r.fixed.push_back(b.fixed);
@@ -109,6 +109,14 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
     for (const Block& b : t.world.blocks) r.after.push_back(b.vertices);
     if (!c.columns.empty()) r.columns = column_motions(c, world, t.world);
     break;
+  }
+  if (!c.columns.empty()) {
+    std::vector<double> factors;
+    for (double f = 1.0; f < fos.first_failing - 1e-9; f += 0.05) factors.push_back(f);
+    for (const TrialResult& t : run_trials(world, settings, factors, {})) {
+      r.scan.push_back({t.factor, t.stable, t.largest_displacement});
+    }
+    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   return r;
 }

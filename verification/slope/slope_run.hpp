@@ -44,6 +44,14 @@ struct CaseResult {
   std::vector<Polygon> before, after;
   std::vector<bool> fixed;
   std::vector<ColumnMotion> columns;  // toppling only
+  // Toppling only: trials every 0.05 in F from 1 up to the search's first failing F, to see
+  // whether the verdicts are monotone (the search assumes they are).
+  struct ScanPoint {
+    double factor = 0.0;
+    bool stable = false;
+    double moved = 0.0;  // m, the largest watched displacement
+  };
+  std::vector<ScanPoint> scan;
 };
 
 // Runs `c`. A case that needs the "water" key is skipped, with a note, when the scene reader
