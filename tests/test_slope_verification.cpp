@@ -1,0 +1,100 @@
+// The slope verification (issue 11, verification/slope): the limit-equilibrium closed forms
+// reproduce Hoek & Bray's published factors to the precision they are given, and DDA's
+// strength-reduction factor of the cheap cases is the limit-equilibrium one within the
+// bracket and the verdict's resolution (verification/slope/README.md "Tolerances").
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "limit_equilibrium.hpp"
+#include "slope_cases.hpp"
+#include "slope_run.hpp"
+#include "solver/strength_reduction.hpp"
+
+namespace {
+
+using namespace dda::slope;
+
+// A published value given to `decimals` decimals: ours must round to it.
+void check_published(double ours, double published, int decimals) {
+  INFO("ours " << ours << ", published " << published);
+  CHECK(std::abs(ours - published) <= 0.5 * std::pow(10.0, -decimals) + 1e-12);
+}
+
+const SlopeCase& find_case(const std::vector<SlopeCase>& cases, const std::string& name) {
+  for (const SlopeCase& c : cases) {
+    if (c.name == name) return c;
+  }
+  FAIL("no case " << name);
+  return cases.front();
+}
+
+}  // namespace
+
+TEST_CASE("planar sliding: the closed form gives Hoek & Bray's 1.000, 1.200 and 0.969", "[slope]") {
+  check_published(plane_factor(planar_block(0.0, 0.0)), 1.000, 3);
+  check_published(plane_factor(planar_block(10.0, 0.0)), 1.200, 3);
+  check_published(plane_factor(planar_block(10.0, 200.0)), 0.969, 3);
+}
+
+TEST_CASE("the tension-crack slope gives Hoek & Bray's 1.292, 1.128 and 0.930", "[slope]") {
+  check_published(plane_factor(tension_crack_block(hoek_bray_slope(0.0))), 1.292, 3);
+  check_published(plane_factor(tension_crack_block(hoek_bray_slope(7.0))), 1.128, 3);
+  check_published(plane_factor(tension_crack_block(hoek_bray_slope(14.0))), 0.930, 3);
+  // The weight's closed form is the unit weight times the area of the block the scene builds:
+  // the toe, the crack's bottom and top, the crest (shoelace formula).
+  const double xc = 46.0 / std::tan(35.0 * M_PI / 180.0), xcrest = 60.0 / std::tan(50.0 * M_PI / 180.0);
+  const double xs[] = {0.0, xc, xc, xcrest}, ys[] = {0.0, 46.0, 60.0, 60.0};
+  double area = 0.0;
+  for (int i = 0; i < 4; ++i) area += 0.5 * (xs[i] * ys[(i + 1) % 4] - xs[(i + 1) % 4] * ys[i]);
+  CHECK(tension_crack_block(hoek_bray_slope(0.0)).weight == Approx(26.0 * area).epsilon(1e-12));
+}
+
+TEST_CASE("the active-passive wedge gives 1.000 smooth and 1.147 with interface friction 30",
+          "[slope]") {
+  check_published(wedge_factor(biplanar_wedge(0.0)), 1.000, 3);
+  check_published(wedge_factor(biplanar_wedge(30.0)), 1.147, 3);
+  // At the factor the lower wedge is exactly in limiting equilibrium, and beyond it it lacks force.
+  const double f = wedge_factor(biplanar_wedge(30.0));
+  CHECK(std::abs(wedge_out_of_balance(biplanar_wedge(30.0), f)) < 1e-6);
+  CHECK(wedge_out_of_balance(biplanar_wedge(30.0), f * 1.01) > 0.0);
+}
+
+TEST_CASE("Goodman and Bray's toppling example: limiting friction 38.15 and the published modes",
+          "[slope]") {
+  const ToppleSlope s = goodman_bray_slope();
+  const std::vector<double> y = column_heights(s);
+  REQUIRE(y.size() == 16);
+  CHECK(y[0] == Approx(4.0));
+  CHECK(y[9] == Approx(40.0));
+  CHECK(y[10] == Approx(34.0));
+  CHECK(y[15] == Approx(4.0));
+  const double phi = limiting_friction_angle(s);
+  check_published(phi, 38.15, 2);
+  const ToppleSolution at_limit = topple_at(s, phi);
+  CHECK(std::abs(at_limit.toe_force) < 1e-3);
+  for (int n = 1; n <= 16; ++n) {
+    const ColumnMode expected = n <= 3 ? ColumnMode::Slide : n <= 13 ? ColumnMode::Topple : ColumnMode::Stable;
+    INFO("column " << n);
+    CHECK(at_limit.modes[static_cast<std::size_t>(n - 1)] == expected);
+  }
+  check_published(topple_factor(s, 45.0), 1.27, 2);
+}
+
+TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the planar block, the "
+          "dry tension-crack slope and the active-passive wedges",
+          "[slope]") {
+  // Each about 0.2 s in the release build (rigid blocks; 12 trials on 2 threads).
+  const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
+  for (const char* name : {"planar_c10", "hoek_bray_dry", "wedge_smooth", "wedge_rough"}) {
+    const SlopeCase& c = find_case(cases, name);
+    const CaseResult r = run_case(c, RunOptions{}, {});
+    INFO(name << ": DDA " << r.factor << " in [" << r.last_stable << ", " << r.first_failing
+              << "], LE " << c.le_factor << ", allowed " << r.allowed);
+    REQUIRE(r.found);
+    CHECK(r.pass);
+    // A failing trial below LE by more than the bracket would be a false failure.
+    CHECK(r.first_failing >= c.le_factor - 1e-9);
+  }
+}

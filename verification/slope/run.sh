@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# The slope verification in one command (issue 11): DDA strength reduction against the
+# limit-equilibrium factors of Hoek & Bray's examples. Prints the report and leaves slope.csv,
+# report.md, report.json, mechanism_*.json and mechanism_*.png in OUT_DIR.
+#
+#   verification/slope/run.sh OUT_DIR [--smoke] [--case NAME]... [--verbose]
+#
+# It builds nothing: it runs $DDA_BUILD_DIR/dda_verify_slope (default: build/release of this
+# repository; build it first with `cmake --preset release && cmake --build --preset release`),
+# then draws the PNGs with Debian's /usr/bin/python3 (matplotlib; the python3 on PATH may be
+# another interpreter without it).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then
+  echo "usage: $0 OUT_DIR [--smoke] [--case NAME]... [--verbose]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
+  exit 2
+fi
+out="$1"
+shift
+exe="${DDA_BUILD_DIR:-$root/build/release}/dda_verify_slope"
+if [ ! -x "$exe" ]; then
+  echo "$0: $exe not found; build it first (cmake --preset release && cmake --build --preset release)" >&2
+  echo "    or point DDA_BUILD_DIR at a build directory that has it" >&2
+  exit 2
+fi
+"$exe" --out "$out" "$@"
+/usr/bin/python3 "$here/plot_slope.py" "$out"

@@ -1,0 +1,124 @@
+#include "slope_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "io/scene_reader.hpp"
+#include "solver/run.hpp"
+#include "solver/strength_reduction.hpp"
+#include "solver/world.hpp"
+
+namespace dda::slope {
+namespace {
+
+std::string trial_line(const std::string& name, const TrialResult& t) {
+  std::ostringstream s;
+  s.precision(4);
+  s << "  " << name << ": F = " << t.factor << " " << (t.stable ? "stable" : "FAILS") << " ("
+    << t.verdict << ", moved " << t.largest_displacement << " m, " << t.steps << " steps, "
+    << t.wall_time_s << " s)";
+  return s.str();
+}
+
+// A column's motion (README "Toppling modes"): vertex 0 is its toe-side base corner (the pivot
+// of a topple), vertex 3 the toe-side top corner. A column whose corners moved less than a
+// tenth of the most any column moved is stable; else it slides when its base corner moved at
+// least half as far as its top (a rigid translation moves both alike), and topples otherwise.
+std::vector<ColumnMotion> column_motions(const SlopeCase& c, const World& before, const World& after) {
+  std::vector<ColumnMotion> out;
+  double largest = 0.0;
+  for (std::size_t k = 0; k < c.columns.size(); ++k) {
+    const auto i = static_cast<std::size_t>(c.columns[k]);
+    const Block& b0 = before.blocks[i];
+    const Block& b1 = after.blocks[i];
+    ColumnMotion m;
+    m.column = static_cast<int>(k) + 1;
+    m.rotation_deg = (b1.rotation - b0.rotation) * 180.0 / 3.14159265358979323846;
+    m.base_slip = (b1.vertices[0] - b0.vertices[0]).norm();
+    m.top_move = (b1.vertices[3] - b0.vertices[3]).norm();
+    m.le_mode = k < c.le_modes.size() ? c.le_modes[k] : "";
+    largest = std::max({largest, m.base_slip, m.top_move});
+    out.push_back(m);
+  }
+  for (ColumnMotion& m : out) {
+    if (std::max(m.base_slip, m.top_move) < 0.1 * largest) {
+      m.mode = "stable";
+    } else {
+      m.mode = m.base_slip >= 0.5 * m.top_move ? "slide" : "topple";
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+CaseResult run_case(const SlopeCase& c, const RunOptions& options,
+                    const std::function<void(const std::string&)>& progress) {
+  CaseResult r;
+  r.name = c.name;
+  r.allowed = 0.5 * options.tolerance + c.resolution;
+  const auto start = std::chrono::steady_clock::now();
+  Scene scene;
+  try {
+    scene = parse_scene_text(c.scene, c.name);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (c.needs_water && what.find("water") != std::string::npos) {
+      r.skipped = true;
+      r.note = "water pressure not available in this build (the scene reader rejects the "
+               "\"water\" key: " + what + ")";
+      return r;
+    }
+    throw;
+  }
+  World world = make_world(scene);
+  const RunStats consolidation = run(world, [](const World&, const RunStats&) { return true; });
+  if (consolidation.diverged) {
+    r.note = "the consolidation diverged: " + consolidation.message;
+    return r;
+  }
+  FosSettings settings;
+  settings.jobs = options.jobs;
+  settings.tolerance = options.tolerance;
+  settings = resolve_fos_settings(world, settings);
+  r.failure_displacement = settings.failure_displacement;
+  r.trial_time = settings.trial_time;
+  FosResult fos = find_factor_of_safety(settings, [&](const std::vector<double>& factors) {
+    return run_trials(world, settings, factors, [&](const TrialResult& t) {
+      if (progress) progress(trial_line(c.name, t));
+    });
+  });
+  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.trials = static_cast<int>(fos.trials.size());
+  r.found = fos.found;
+  r.note = fos.message;
+  for (const Block& b : world.blocks) {
+    r.before.push_back(b.vertices);
+    r.fixed.push_back(b.fixed);
+  }
+  if (!fos.found) return r;
+  r.factor = fos.factor_of_safety;
+  r.last_stable = fos.last_stable;
+  r.first_failing = fos.first_failing;
+  r.error = r.factor - c.le_factor;
+  r.pass = std::abs(r.error) <= r.allowed;
+  for (const TrialResult& t : fos.trials) {
+    if (t.factor != fos.first_failing || t.stable) continue;
+    for (const Block& b : t.world.blocks) r.after.push_back(b.vertices);
+    if (!c.columns.empty()) r.columns = column_motions(c, world, t.world);
+    break;
+  }
+  if (!c.columns.empty()) {
+    std::vector<double> factors;
+    for (double f = 1.0; f < fos.first_failing - 1e-9; f += 0.05) factors.push_back(f);
+    for (const TrialResult& t : run_trials(world, settings, factors, {})) {
+      r.scan.push_back({t.factor, t.stable, t.largest_displacement});
+    }
+    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return r;
+}
+
+}  // namespace dda::slope

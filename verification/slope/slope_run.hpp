@@ -1,0 +1,62 @@
+// One slope case through DDA: the scene parsed, consolidated at F = 1 (its static stage), the
+// strength-reduction search (solver/strength_reduction.hpp), and what the first failing trial
+// shows of the mechanism. Shared by dda_verify_slope and the tests.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "kinematics/types.hpp"
+#include "slope_cases.hpp"
+
+namespace dda::slope {
+
+struct RunOptions {
+  int jobs = 2;             // trials at once (threads)
+  double tolerance = 0.01;  // the search's bracket width
+};
+
+// A toppling column at the first failing trial (moved against the consolidated state).
+struct ColumnMotion {
+  int column = 0;               // 1 = the toe column
+  double rotation_deg = 0.0;    // counter-clockwise: towards the toe
+  double base_slip = 0.0;       // m, the toe-side base corner's displacement
+  double top_move = 0.0;        // m, the toe-side top corner's displacement
+  std::string mode;             // stable / topple / slide (README "Toppling modes")
+  std::string le_mode;
+};
+
+struct CaseResult {
+  std::string name;
+  bool skipped = false;     // not run (water pressure not available)
+  std::string note;         // why skipped, or the search's message
+  bool found = false;
+  double factor = 0.0;      // the bracket's midpoint
+  double last_stable = 0.0, first_failing = 0.0;
+  double error = 0.0;       // factor - le_factor
+  double allowed = 0.0;     // tolerance / 2 + resolution
+  bool pass = false;
+  double wall_s = 0.0;      // consolidation and search
+  int trials = 0;
+  double failure_displacement = 0.0, trial_time = 0.0;  // the resolved settings
+  // The block outlines, consolidated and at the end of the first failing trial.
+  std::vector<Polygon> before, after;
+  std::vector<bool> fixed;
+  std::vector<ColumnMotion> columns;  // toppling only
+  // Toppling only: trials every 0.05 in F from 1 up to the search's first failing F, to see
+  // whether the verdicts are monotone (the search assumes they are).
+  struct ScanPoint {
+    double factor = 0.0;
+    bool stable = false;
+    double moved = 0.0;  // m, the largest watched displacement
+  };
+  std::vector<ScanPoint> scan;
+};
+
+// Runs `c`. A case that needs the "water" key is skipped, with a note, when the scene reader
+// does not know it. `progress` (may be empty) gets one line per trial.
+CaseResult run_case(const SlopeCase& c, const RunOptions& options,
+                    const std::function<void(const std::string&)>& progress);
+
+}  // namespace dda::slope
