@@ -7,8 +7,10 @@
 #include <CGAL/Polygon_2.h>
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <optional>
+#include <queue>
 #include <utility>
 #include <vector>
 
@@ -39,9 +41,18 @@ Segment segment(const Point& a, const Point& b, int group) {
 }
 
 Point exact(const Vec2& p) { return Point(p.x(), p.y()); }
-// + 0.0 turns a rounded -0 into 0, which reads better in a scene.
+// + 0.0 turns a rounded -0 into 0, which reads better in a scene. Exact: the rounding of an
+// intersection point may need its exact value, so this is done once a vertex.
 Vec2 plain(const Point& p) {
   return Vec2(CGAL::to_double(p.x()) + 0.0, CGAL::to_double(p.y()) + 0.0);
+}
+
+// Near `p`: the middle of the interval the lazy kernel keeps for each coordinate (a few
+// units in the last place wide), without the exact value. For areas and lengths that only
+// order slivers or weigh a pair's joints.
+Vec2 approximate(const Point& p) {
+  const auto a = p.approx();
+  return Vec2(0.5 * (a.x().inf() + a.x().sup()), 0.5 * (a.y().inf() + a.y().sup()));
 }
 
 // The vertices of a boundary cycle, those between two collinear edges dropped (exactly).
@@ -90,6 +101,9 @@ std::map<const Arrangement::Vertex*, Vec2> snapped_corners(const Arrangement& ar
     index[&*v] = static_cast<int>(vertices.size());
     vertices.push_back(&*v);
   }
+  std::vector<Vec2> rounded;
+  rounded.reserve(vertices.size());
+  for (const Arrangement::Vertex* v : vertices) rounded.push_back(plain(v->point()));
   std::vector<int> parent(vertices.size());
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
   const auto root = [&parent](int i) {
@@ -97,8 +111,11 @@ std::map<const Arrangement::Vertex*, Vec2> snapped_corners(const Arrangement& ar
     return i;
   };
   for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
-    if ((plain(e->source()->point()) - plain(e->target()->point())).norm() > tol) continue;
-    const int a = root(index.at(&*e->source())), b = root(index.at(&*e->target()));
+    const int i = index.at(&*e->source()), j = index.at(&*e->target());
+    if ((rounded[static_cast<std::size_t>(i)] - rounded[static_cast<std::size_t>(j)]).norm() > tol) {
+      continue;
+    }
+    const int a = root(i), b = root(j);
     parent[std::max(a, b)] = std::min(a, b);
   }
   const auto is_domain_corner = [&domain](const Vec2& p) {
@@ -106,7 +123,7 @@ std::map<const Arrangement::Vertex*, Vec2> snapped_corners(const Arrangement& ar
   };
   std::vector<std::optional<Vec2>> group_point(vertices.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    const Vec2 p = plain(vertices[i]->point());
+    const Vec2& p = rounded[i];
     std::optional<Vec2>& g = group_point[static_cast<std::size_t>(root(static_cast<int>(i)))];
     if (!g || (is_domain_corner(p) && !is_domain_corner(*g))) g = p;
   }
@@ -133,6 +150,96 @@ int remove_edges_while(Arrangement& arr, Doomed doomed) {
   }
 }
 
+// Removes the dead ends of face `f` (edges with `f` on both sides), repeatedly: those a
+// merge into `f` leaves, which lie on its boundary only (a whole-arrangement scan after each
+// of hundreds of merges would cost more than the cut).
+int remove_dead_ends_of(Arrangement& arr, Arrangement::Face_handle f) {
+  int removed = 0;
+  for (;;) {
+    std::vector<Arrangement::Halfedge_handle> dead;
+    const auto scan = [&](Arrangement::Ccb_halfedge_circulator first) {
+      auto c = first;
+      do {
+        // Both halves of a dead end lie on f's boundary: keep one.
+        if (c->twin()->face() == f &&
+            std::less<const Arrangement::Halfedge*>{}(&*c, &*c->twin())) {
+          dead.push_back(c);
+        }
+      } while (++c != first);
+    };
+    scan(f->outer_ccb());
+    for (auto h = f->holes_begin(); h != f->holes_end(); ++h) scan(*h);
+    if (dead.empty()) return removed;
+    for (auto e : dead) arr.remove_edge(e);
+    removed += static_cast<int>(dead.size());
+  }
+}
+
+// Slivers, smallest first, each merged into the neighbour across its longest edge (the
+// edge removed, then any dead end that leaves). Faces wait in a queue by area; a merge
+// queues the merged face afresh, and an entry whose face has been merged away or has
+// changed its area since is skipped. Merges only delete faces, never make one, so a face's
+// address names it throughout. Areas in doubles: enough to order faces and to compare them
+// with `min_block_area`.
+void merge_slivers(Arrangement& arr, double min_block_area, CutResult& result) {
+  const auto outer_area = [](Arrangement::Face_handle f) {
+    double twice = 0.0;
+    auto c = f->outer_ccb();
+    const auto first = c;
+    do {
+      const Vec2 p = approximate(c->source()->point()), q = approximate(c->target()->point());
+      twice += p.x() * q.y() - p.y() * q.x();
+    } while (++c != first);
+    return 0.5 * twice;
+  };
+  struct Entry {
+    double area;
+    std::size_t order;  // ties in queueing order, so that the cut is the same every run
+    Arrangement::Face_handle face;
+    bool operator>(const Entry& o) const {
+      return area != o.area ? area > o.area : order > o.order;
+    }
+  };
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  std::map<const Arrangement::Face*, double> area_of;  // faces alive, by area
+  std::size_t order = 0;
+  const auto enqueue = [&](Arrangement::Face_handle f) {
+    const double a = outer_area(f);
+    area_of[&*f] = a;
+    if (a < min_block_area) queue.push({a, order++, f});
+  };
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (!f->is_unbounded()) enqueue(f);
+  }
+  while (!queue.empty()) {
+    const Entry top = queue.top();
+    queue.pop();
+    const auto alive = area_of.find(&*top.face);
+    if (alive == area_of.end() || alive->second != top.area) continue;
+    // Its longest edge with a block on the other side.
+    Arrangement::Halfedge_handle longest;
+    Kernel::FT longest_length = 0;
+    auto c = top.face->outer_ccb();
+    const auto first = c;
+    do {
+      if (!c->twin()->face()->is_unbounded()) {
+        const Kernel::FT l = CGAL::squared_distance(c->source()->point(), c->target()->point());
+        if (l > longest_length) {
+          longest_length = l;
+          longest = c;
+        }
+      }
+    } while (++c != first);
+    if (longest_length == 0) continue;  // alone against the boundary: kept
+    area_of.erase(&*top.face);
+    area_of.erase(&*longest->twin()->face());
+    const Arrangement::Face_handle merged = arr.remove_edge(longest);
+    ++result.slivers_merged;
+    result.dead_end_edges += remove_dead_ends_of(arr, merged);
+    enqueue(merged);
+  }
+}
+
 // The pairs of blocks on the two sides of each edge between two bounded faces, with the
 // length each group contributes; per pair the group of the longest total (the lower on a tie).
 std::vector<BlockAdjacency> adjacency(const Arrangement& arr,
@@ -144,7 +251,8 @@ std::vector<BlockAdjacency> adjacency(const Arrangement& arr,
     if (fi == block_of.end() || fj == block_of.end()) continue;
     const int i = fi->second, j = fj->second;
     if (i == j) continue;  // cannot happen once dead ends are gone; harmless if it did
-    const double length = (plain(e->target()->point()) - plain(e->source()->point())).norm();
+    const double length =
+        (approximate(e->target()->point()) - approximate(e->source()->point())).norm();
     lengths[std::minmax(i, j)][e->curve().data()] += length;
   }
   std::vector<BlockAdjacency> pairs;
@@ -192,39 +300,7 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
   const auto dead_end = [](Arrangement::Edge_iterator e) { return e->face() == e->twin()->face(); };
   result.dead_end_edges = remove_edges_while(arr, dead_end);
 
-  // Slivers: one merge at a time (a merge changes the faces around it), smallest first.
-  for (;;) {
-    Arrangement::Halfedge_handle best_edge;
-    double smallest = min_block_area;
-    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-      if (f->is_unbounded()) continue;
-      CGAL::Polygon_2<Kernel> outline;
-      for (const auto v : cycle_vertices(f->outer_ccb())) outline.push_back(v->point());
-      const double area = CGAL::to_double(outline.area());
-      if (area >= smallest) continue;
-      // Its longest edge with a block on the other side.
-      Arrangement::Halfedge_handle longest;
-      Kernel::FT longest_length = 0;
-      auto c = f->outer_ccb();
-      const auto first = c;
-      do {
-        if (!c->twin()->face()->is_unbounded()) {
-          const Kernel::FT l = CGAL::squared_distance(c->source()->point(), c->target()->point());
-          if (l > longest_length) {
-            longest_length = l;
-            longest = c;
-          }
-        }
-      } while (++c != first);
-      if (longest_length == 0) continue;  // alone against the boundary: kept
-      smallest = area;
-      best_edge = longest;
-    }
-    if (best_edge == Arrangement::Halfedge_handle()) break;
-    arr.remove_edge(best_edge);
-    ++result.slivers_merged;
-    result.dead_end_edges += remove_edges_while(arr, dead_end);
-  }
+  merge_slivers(arr, min_block_area, result);
 
   // A face with a hole: two bridges from the hole to what surrounds it, one straight down
   // from its lowest vertex of least x, one straight up from its highest vertex of greatest x
