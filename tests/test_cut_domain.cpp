@@ -126,7 +126,8 @@ TEST_CASE("a block enclosing another is bridged into simple polygons", "[cutting
   // hole's block; the bridges are of no group.
   REQUIRE(cut.adjacency.size() == 3);
   for (const BlockAdjacency& pair : cut.adjacency) {
-    const bool halves = signed_area(cut.blocks[pair.a]) > 20 && signed_area(cut.blocks[pair.b]) > 20;
+    const bool halves =
+        signed_area(cut.blocks[pair.a]) > 20 && signed_area(cut.blocks[pair.b]) > 20;
     if (halves) {
       CHECK(pair.group == -1);
       CHECK(pair.shared_length == Approx(6.0).epsilon(1e-12));
@@ -171,7 +172,8 @@ TEST_CASE("a trace through a corner of the domain leaves no edge too short to ke
   const Polygon domain{{0, 0}, {20, 0}, {20, 10}, {0, 10}};
   const double a = 25.0 * M_PI / 180.0;
   const Vec2 d(std::cos(a), std::sin(a));
-  const Vec2 p = Vec2(10, 5) + (Vec2(-d.y(), d.x()).dot(Vec2(0, 0) - Vec2(10, 5))) * Vec2(-d.y(), d.x());
+  const Vec2 n(-d.y(), d.x()), centre(10, 5);
+  const Vec2 p = centre - n.dot(centre) * n;  // the line's point nearest the centre
   const CutResult cut = cut_domain(domain, {{p - 30.0 * d, p + 30.0 * d}});
   REQUIRE(cut.blocks.size() == 2);
   for (const Polygon& b : cut.blocks) {

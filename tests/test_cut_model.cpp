@@ -28,6 +28,13 @@ using dda::test::shell_quote;
 
 namespace {
 
+// Pieces of the test model that the tests edit.
+const std::string kSet =
+    "{\"dip\": 0, \"spacing\": 2.5, \"offset\": 1.25, \"joint_material\": \"bedding\"}";
+const std::string kFaultJoints =
+    "\"joints\": [{\"from\": [5, -1], \"to\": [5, 11], \"joint_material\": \"fault\"}]";
+const std::string kRegionPolygon = "[[-1, -1], [5, -1], [5, 11], [-1, 11]]";
+
 // A 10 m x 10 m square cut by a horizontal set (y = 1.25, 3.75, 6.25, 8.75; "bedding") and a
 // vertical single joint at x = 5 ("fault"): 5 rows x 2 columns of blocks. The left half is a
 // region of "weak" rock, the blocks on the bottom edge (edge 0) and those inside the top
@@ -120,14 +127,17 @@ TEST_CASE("a bad model is reported at its place in the file", "[cut]") {
        "joint_sets[0].spacing", {"lines across the domain", "at most"}},
       {"spacing too large for a double", edit(m, "\"spacing\": 2.5", "\"spacing\": 1e999"),
        "joint_sets[0].spacing", {"too large"}},
-      {"negative dip scatter", edit(m, "\"offset\": 1.25,", "\"offset\": 1.25, \"dip_scatter\": -1,"),
+      {"negative dip scatter",
+       edit(m, "\"offset\": 1.25,", "\"offset\": 1.25, \"dip_scatter\": -1,"),
        "joint_sets[0].dip_scatter", {"must not be negative"}},
       {"negative spacing scatter",
        edit(m, "\"offset\": 1.25,", "\"offset\": 1.25, \"spacing_scatter\": -0.5,"),
        "joint_sets[0].spacing_scatter", {"must not be negative"}},
-      {"bridge without trace length", edit(m, "\"offset\": 1.25,", "\"offset\": 1.25, \"bridge\": 1,"),
+      {"bridge without trace length",
+       edit(m, "\"offset\": 1.25,", "\"offset\": 1.25, \"bridge\": 1,"),
        "joint_sets[0].bridge", {"needs \"trace_length\""}},
-      {"unknown set joint material", edit(m, "\"joint_material\": \"bedding\"", "\"joint_material\": \"beding\""),
+      {"unknown set joint material",
+       edit(m, "\"joint_material\": \"bedding\"", "\"joint_material\": \"beding\""),
        "joint_sets[0].joint_material", {"unknown joint material \"beding\"", "\"bedding\""}},
       {"second set's spacing",
        edit(m, "\"joint_material\": \"bedding\"}",
@@ -243,10 +253,10 @@ TEST_CASE("a pair's joint material is that of the joints along most of their sha
   // two halves of the square share 6 m of bedding and 4 m of fault, so their pair is bedding;
   // with the pieces' materials swapped, fault.
   const std::string two_pieces = edit(
-      edit(kModel, "\"joints\": [{\"from\": [5, -1], \"to\": [5, 11], \"joint_material\": \"fault\"}]",
+      edit(kModel, kFaultJoints,
            "\"joints\": [{\"from\": [5, -1], \"to\": [5, 6], \"joint_material\": \"bedding\"}, "
            "{\"from\": [5, 6], \"to\": [5, 11], \"joint_material\": \"fault\"}]"),
-      "{\"dip\": 0, \"spacing\": 2.5, \"offset\": 1.25, \"joint_material\": \"bedding\"}", "");
+      kSet, "");
   const CutModel cut = cut_model(parse_model_text(two_pieces, "model.json").spec);
   REQUIRE(cut.cut.blocks.size() == 2);
   REQUIRE(cut.cut.adjacency.size() == 1);
@@ -284,10 +294,9 @@ TEST_CASE("a concave block takes the region of a point inside it, not of its cen
   // notch, outside it. The region covers the notch only: the block is not in it.
   std::string l_shape = edit(kModel, "[[0, 0], [10, 0], [10, 10], [0, 10]]",
                              "[[0, 0], [10, 0], [10, 3], [3, 3], [3, 10], [0, 10]]");
-  l_shape = edit(l_shape, "{\"dip\": 0, \"spacing\": 2.5, \"offset\": 1.25, \"joint_material\": \"bedding\"}", "");
-  l_shape = edit(l_shape, "\"joints\": [{\"from\": [5, -1], \"to\": [5, 11], \"joint_material\": \"fault\"}]",
-                 "\"joints\": []");
-  l_shape = edit(l_shape, "[[-1, -1], [5, -1], [5, 11], [-1, 11]]", "[[3.5, 3.5], [9, 3.5], [9, 9], [3.5, 9]]");
+  l_shape = edit(l_shape, kSet, "");
+  l_shape = edit(l_shape, kFaultJoints, "\"joints\": []");
+  l_shape = edit(l_shape, kRegionPolygon, "[[3.5, 3.5], [9, 3.5], [9, 9], [3.5, 9]]");
   const CutModel cut = cut_model(parse_model_text(l_shape, "model.json").spec);
   REQUIRE(cut.cut.blocks.size() == 1);
   const Vec2 c = polygon_moments(cut.cut.blocks[0]).centroid;

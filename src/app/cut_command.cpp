@@ -49,7 +49,11 @@ void print_statistics(const Model& model, const CutModel& cut, const CutScene& s
   std::cerr << "dda: cut " << model.source << ": " << c.blocks.size() << " blocks; scene in "
             << out_path << "\n"
             << "dda: cut: " << c.dead_end_edges << " dead-end edges removed, " << c.holes_bridged
-            << " holes bridged, " << c.slivers_merged << " slivers merged\n"
+            << " holes bridged, " << c.slivers_merged << " slivers merged"
+            << (c.collapsed_faces > 0
+                    ? ", " + std::to_string(c.collapsed_faces) + " faces without area left out"
+                    : std::string())
+            << "\n"
             << "dda: cut: block area from " << format_number(smallest) << " to "
             << format_number(largest) << " m^2\n"
             << "dda: cut: blocks by material: " << counts_text(by_material) << "\n"

@@ -112,9 +112,8 @@ std::map<const Arrangement::Vertex*, Vec2> snapped_corners(const Arrangement& ar
   };
   for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
     const int i = index.at(&*e->source()), j = index.at(&*e->target());
-    if ((rounded[static_cast<std::size_t>(i)] - rounded[static_cast<std::size_t>(j)]).norm() > tol) {
-      continue;
-    }
+    const Vec2 d = rounded[static_cast<std::size_t>(i)] - rounded[static_cast<std::size_t>(j)];
+    if (d.norm() > tol) continue;
     const int a = root(i), b = root(j);
     parent[std::max(a, b)] = std::min(a, b);
   }

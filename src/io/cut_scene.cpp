@@ -49,8 +49,9 @@ std::string layout(const ordered_json& value, const std::string& indent) {
     }
     return text + "\n" + indent + "}";
   }
-  const bool nested = value.is_array() && std::any_of(value.begin(), value.end(),
-                                                     [](const auto& v) { return v.is_structured(); });
+  const auto structured = [](const ordered_json& v) { return v.is_structured(); };
+  const bool nested =
+      value.is_array() && std::any_of(value.begin(), value.end(), structured);
   if (!nested) return one_line(value);
   for (const ordered_json& item : value) {
     text += (text.empty() ? "[\n" : ",\n") + inner + one_line(item);

@@ -31,8 +31,8 @@ constexpr std::string_view kSceneKeys[] = {"description", "gravity", "plane",
 // Caps on the traces a set may draw, so that a spacing or trace length given in the wrong
 // unit is an error at its key rather than a cut that runs out of memory. A cut of 100 000
 // lines or a million traces is far beyond any slope study (issue 11 asks for ~2000 blocks).
-constexpr double kMaxLinesPerSet = 1e5;
-constexpr double kMaxTracesPerSet = 1e6;
+constexpr long kMaxLinesPerSet = 100000;
+constexpr long kMaxTracesPerSet = 1000000;
 
 // The model's scene keys as a one-block scene, read by the scene reader under the model's
 // name: an error in them is reported at its place in the model (the keys are top-level in
@@ -100,10 +100,10 @@ JointSetModel read_joint_set(const Field& f, const std::vector<std::string>& joi
   t.dip = f.member("dip").number();
   const Field spacing = f.member("spacing");
   t.spacing = positive_number(spacing);
-  if (diagonal / t.spacing > kMaxLinesPerSet) {
+  if (diagonal / t.spacing > static_cast<double>(kMaxLinesPerSet)) {
     spacing.fail("gives about " + format_number(std::round(diagonal / t.spacing)) +
                  " lines across the domain (its bounding box's diagonal is " +
-                 format_number(diagonal) + " m); at most " + format_number(kMaxLinesPerSet) +
+                 format_number(diagonal) + " m); at most " + std::to_string(kMaxLinesPerSet) +
                  " are allowed per set (is the spacing in metres?)");
   }
   if (auto g = f.optional_member("trace_length")) {
@@ -119,10 +119,10 @@ JointSetModel read_joint_set(const Field& f, const std::vector<std::string>& joi
   if (t.trace_length) {
     const double traces =
         (diagonal / t.spacing + 2.0) * (diagonal / (*t.trace_length + t.bridge) + 1.0);
-    if (traces > kMaxTracesPerSet) {
+    if (traces > static_cast<double>(kMaxTracesPerSet)) {
       f.member("trace_length").fail("gives about " + format_number(std::round(traces)) +
                                     " traces over the domain; at most " +
-                                    format_number(kMaxTracesPerSet) + " are allowed per set");
+                                    std::to_string(kMaxTracesPerSet) + " are allowed per set");
     }
   }
   if (auto g = f.optional_member("offset")) t.offset = g->number();
