@@ -4,6 +4,7 @@
 // dead-end traces leave nothing inside a block, and a hole is bridged.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -101,19 +102,87 @@ TEST_CASE("a concave domain cut by random traces keeps its area and no overlaps"
   CHECK(corner);
 }
 
-TEST_CASE("a block enclosing another is bridged into a simple polygon", "[cutting]") {
+TEST_CASE("a block enclosing another is bridged into simple polygons", "[cutting]") {
   // A closed square of traces (3,3)-(7,7) inside a 10 m square touches nothing: the outer
-  // block would have a hole. A bridge from the hole's lowest-left corner (3, 3) down to the
-  // boundary (3, 0) makes it simple: two blocks, 84 and 16 m^2.
+  // block would have a hole. Two bridges, from the hole's lowest-left corner (3, 3) down to
+  // (3, 0) and from its highest-right corner (7, 7) up to (7, 10), split it into two simple
+  // blocks of 42 m^2 (3 x 10 + 4 x 3 each); the hole is a block of 16 m^2. One bridge alone
+  // would leave a slit (the same block on both sides of it), which the scene reader rejects
+  // as a polygon that touches itself.
   const Polygon domain{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
   const CutResult cut = cut_domain(
       domain, {{{3, 3}, {7, 3}}, {{7, 3}, {7, 7}}, {{7, 7}, {3, 7}}, {{3, 7}, {3, 3}}});
   CHECK(cut.holes_bridged == 1);
-  REQUIRE(cut.blocks.size() == 2);
-  const double a0 = signed_area(cut.blocks[0]), a1 = signed_area(cut.blocks[1]);
-  CHECK(std::min(a0, a1) == Approx(16.0).epsilon(1e-12));
-  CHECK(std::max(a0, a1) == Approx(84.0).epsilon(1e-12));
+  REQUIRE(cut.blocks.size() == 3);
+  std::vector<double> areas;
+  for (const Polygon& b : cut.blocks) areas.push_back(signed_area(b));
+  std::sort(areas.begin(), areas.end());
+  CHECK(areas[0] == Approx(16.0).epsilon(1e-12));
+  CHECK(areas[1] == Approx(42.0).epsilon(1e-12));
+  CHECK(areas[2] == Approx(42.0).epsilon(1e-12));
   CHECK(total_area(cut.blocks) == Approx(100.0).epsilon(1e-12));
+  check_blocks_valid(cut.blocks, 10.0);
+  // The two halves touch each other only across the bridges (3 + 3 m), each touches the
+  // hole's block; the bridges are of no group.
+  REQUIRE(cut.adjacency.size() == 3);
+  for (const BlockAdjacency& pair : cut.adjacency) {
+    const bool halves =
+        signed_area(cut.blocks[pair.a]) > 20 && signed_area(cut.blocks[pair.b]) > 20;
+    if (halves) {
+      CHECK(pair.group == -1);
+      CHECK(pair.shared_length == Approx(6.0).epsilon(1e-12));
+    }
+  }
+}
+
+TEST_CASE("each pair of neighbours has the group of the segments along their shared edge",
+          "[cutting]") {
+  // Horizontal traces at y = 2.5, 5, 7.5 of group 0 and a vertical one at x = 5 of group 3:
+  // 4 rows x 2 columns; pairs one above the other share 5 m of group 0, pairs side by side
+  // 2.5 m of group 3. Lengths between exact corners on axis-parallel lines: 1e-12.
+  const Polygon domain{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  std::vector<JointSegment> joints;
+  for (int k = 1; k < 4; ++k) joints.push_back({{-1.0, 2.5 * k}, {11.0, 2.5 * k}, 0});
+  joints.push_back({{5.0, -1.0}, {5.0, 11.0}, 3});
+  const CutResult cut = cut_domain(domain, joints);
+  REQUIRE(cut.blocks.size() == 8);
+  REQUIRE(cut.adjacency.size() == 6 + 4);
+  for (const BlockAdjacency& pair : cut.adjacency) {
+    CHECK(pair.a < pair.b);
+    const Vec2 ca = polygon_moments(cut.blocks[pair.a]).centroid;
+    const Vec2 cb = polygon_moments(cut.blocks[pair.b]).centroid;
+    const bool side_by_side = std::abs(ca.y() - cb.y()) < 1e-9;
+    CHECK(pair.group == (side_by_side ? 3 : 0));
+    CHECK(pair.shared_length == Approx(side_by_side ? 2.5 : 5.0).epsilon(1e-12));
+  }
+  // A segment of group 5 along the trace y = 5 (overlapping it): the edge takes the higher
+  // group, so the two pairs across y = 5 are of group 5.
+  joints.push_back({{-2.0, 5.0}, {12.0, 5.0}, 5});
+  const CutResult overlaid = cut_domain(domain, joints);
+  int fives = 0;
+  for (const BlockAdjacency& pair : overlaid.adjacency) fives += pair.group == 5 ? 1 : 0;
+  CHECK(fives == 2);
+}
+
+TEST_CASE("a trace through a corner of the domain leaves no edge too short to keep",
+          "[cutting]") {
+  // A trace at 25 degrees through the origin, a corner of the domain: rounding puts its
+  // crossing with the side x = 0 a few 1e-16 m above the corner (an edge the scene reader
+  // would take for a repeated vertex). The two points become the corner itself.
+  const Polygon domain{{0, 0}, {20, 0}, {20, 10}, {0, 10}};
+  const double a = 25.0 * M_PI / 180.0;
+  const Vec2 d(std::cos(a), std::sin(a));
+  const Vec2 n(-d.y(), d.x()), centre(10, 5);
+  const Vec2 p = centre - n.dot(centre) * n;  // the line's point nearest the centre
+  const CutResult cut = cut_domain(domain, {{p - 30.0 * d, p + 30.0 * d}});
+  REQUIRE(cut.blocks.size() == 2);
+  for (const Polygon& b : cut.blocks) {
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      // Edges at least 1e-12 of the domain's diagonal (22.4 m) long: the reader's bound.
+      CHECK((b[i] - b[(i + 1) % b.size()]).norm() > 1e-12 * 22.4);
+    }
+  }
+  CHECK(total_area(cut.blocks) == Approx(200.0).epsilon(1e-12));
 }
 
 TEST_CASE("a sliver below the smallest block area is merged into a neighbour", "[cutting]") {

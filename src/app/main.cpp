@@ -1,6 +1,7 @@
 // dda: the command line. Thin: parse arguments, read the scene (io), run (solver), write
 // results (io), show progress. Exit codes: 0 done, 1 could not write results,
 // 2 bad input (message names the place in the file), 3 the run diverged (results so far kept).
+// `dda cut` cuts a model into a scene (exit codes as for run: 2 bad model, 1 unwritable scene).
 // `dda material-point` does the same for one material point on a strain/stress path
 // (materials), with 3 for a path that could not be followed.
 #include <CLI/CLI.hpp>
@@ -9,6 +10,7 @@
 #include <iostream>
 #include <string>
 
+#include "app/cut_command.hpp"
 #include "app/progress.hpp"
 #include "io/fos_report.hpp"
 #include "io/material_point_output.hpp"
@@ -191,12 +193,21 @@ int main(int argc, char** argv) {
                     "Also divide plastic blocks' strengths by F");
   fos_app->add_option("--jobs", fos.jobs, "Trials at once")->capture_default_str()
       ->check(CLI::Range(1, 64));
+
+  std::string model_path;
+  std::string scene_out = "scene.json";
+  CLI::App* cut = app.add_subcommand(
+      "cut", "Cut a model (domain, joint sets) into blocks: a scene for dda run");
+  cut->add_option("model", model_path, "Model file (JSON, see docs/model-format.md)");
+  cut->add_option("--out", scene_out, "Scene file to write (JSON, see docs/scene-format.md)")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try {
     if (run->parsed()) return run_command(scene_path, out_dir);
     if (point->parsed()) return material_point_command(spec_path, csv_file);
     if (fos_app->parsed()) return fos_command(fos_scene, fos_dir, fos);
+    if (cut->parsed()) return dda::cut_command(model_path, scene_out);
   } catch (const dda::InputError& e) {
     std::cerr << "dda: error: " << e.what() << "\n";
     return kExitInputError;

@@ -1,39 +1,136 @@
 #include "cutting/cut_domain.hpp"
 
+#include <CGAL/Arr_curve_data_traits_2.h>
 #include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 
+#include <algorithm>
+#include <functional>
+#include <map>
 #include <optional>
+#include <queue>
+#include <utility>
 #include <vector>
+
+#include "kinematics/polygon.hpp"
 
 namespace dda {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using Point = Kernel::Point_2;
-using Traits = CGAL::Arr_segment_traits_2<Kernel>;
+using SegmentTraits = CGAL::Arr_segment_traits_2<Kernel>;
+
+// Where segments overlap, the edge they make has the higher of their groups (the caller
+// numbers its groups so that this is the one it means: see BlockAdjacency).
+struct HigherGroup {
+  int operator()(int a, int b) const { return std::max(a, b); }
+};
+// Every curve, and every edge split from it, carries its segment's group: the arrangement
+// keeps the data through the sweep's splits and overlaps, so the insertion stays one sweep.
+using Traits = CGAL::Arr_curve_data_traits_2<SegmentTraits, int, HigherGroup>;
 using Segment = Traits::Curve_2;
 using Arrangement = CGAL::Arrangement_2<Traits>;
 
-Point exact(const Vec2& p) { return Point(p.x(), p.y()); }
-Vec2 plain(const Point& p) { return Vec2(CGAL::to_double(p.x()), CGAL::to_double(p.y())); }
+constexpr int kNoGroup = -1;
 
-// The points of a boundary cycle, vertices between two collinear edges dropped.
+Segment segment(const Point& a, const Point& b, int group) {
+  return Segment(SegmentTraits::Curve_2(a, b), group);
+}
+
+Point exact(const Vec2& p) { return Point(p.x(), p.y()); }
+// + 0.0 turns a rounded -0 into 0, which reads better in a scene. Exact: the rounding of an
+// intersection point may need its exact value, so this is done once a vertex.
+Vec2 plain(const Point& p) {
+  return Vec2(CGAL::to_double(p.x()) + 0.0, CGAL::to_double(p.y()) + 0.0);
+}
+
+// Near `p`: the middle of the interval the lazy kernel keeps for each coordinate (a few
+// units in the last place wide), without the exact value. For areas and lengths that only
+// order slivers or weigh a pair's joints.
+Vec2 approximate(const Point& p) {
+  const auto a = p.approx();
+  return Vec2(0.5 * (a.x().inf() + a.x().sup()), 0.5 * (a.y().inf() + a.y().sup()));
+}
+
+// The vertices of a boundary cycle, those between two collinear edges dropped (exactly).
 template <class Circulator>
-std::vector<Point> cycle_points(Circulator first) {
-  std::vector<Point> all;
+std::vector<Arrangement::Vertex_const_handle> cycle_vertices(Circulator first) {
+  std::vector<Arrangement::Vertex_const_handle> all;
   Circulator c = first;
   do {
-    all.push_back(c->source()->point());
+    all.push_back(c->source());
   } while (++c != first);
-  std::vector<Point> kept;
+  std::vector<Arrangement::Vertex_const_handle> kept;
   const std::size_t n = all.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (!CGAL::collinear(all[(i + n - 1) % n], all[i], all[(i + 1) % n])) kept.push_back(all[i]);
+    if (!CGAL::collinear(all[(i + n - 1) % n]->point(), all[i]->point(),
+                         all[(i + 1) % n]->point())) {
+      kept.push_back(all[i]);
+    }
   }
   return kept;
+}
+
+// The nearest point where the ray from `from` in direction `d` meets an edge, other than
+// `from` itself. Edges along the ray are met at their ends (by the edges there).
+std::optional<Point> first_hit(const Arrangement& arr, const Point& from,
+                               const Kernel::Direction_2& d) {
+  const Kernel::Ray_2 ray(from, d);
+  std::optional<Point> hit;
+  for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+    const Kernel::Segment_2 s(e->source()->point(), e->target()->point());
+    const auto x = CGAL::intersection(s, ray);
+    if (!x) continue;
+    const Point* p = boost::get<Point>(&*x);  // CGAL 5.5: a boost::variant
+    if (p == nullptr || *p == from) continue;
+    if (!hit || CGAL::has_larger_distance_to_point(from, *hit, *p)) hit = *p;
+  }
+  return hit;
+}
+
+// Every vertex's point in doubles, vertices joined by edges no longer than `tol` gathered
+// into one point: a corner of the domain if the group has one, else its first vertex's.
+std::map<const Arrangement::Vertex*, Vec2> snapped_corners(const Arrangement& arr,
+                                                          const Polygon& domain, double tol) {
+  std::map<const Arrangement::Vertex*, int> index;
+  std::vector<const Arrangement::Vertex*> vertices;
+  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
+    index[&*v] = static_cast<int>(vertices.size());
+    vertices.push_back(&*v);
+  }
+  std::vector<Vec2> rounded;
+  rounded.reserve(vertices.size());
+  for (const Arrangement::Vertex* v : vertices) rounded.push_back(plain(v->point()));
+  std::vector<int> parent(vertices.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+  const auto root = [&parent](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+    const int i = index.at(&*e->source()), j = index.at(&*e->target());
+    const Vec2 d = rounded[static_cast<std::size_t>(i)] - rounded[static_cast<std::size_t>(j)];
+    if (d.norm() > tol) continue;
+    const int a = root(i), b = root(j);
+    parent[std::max(a, b)] = std::min(a, b);
+  }
+  const auto is_domain_corner = [&domain](const Vec2& p) {
+    return std::find(domain.begin(), domain.end(), p) != domain.end();
+  };
+  std::vector<std::optional<Vec2>> group_point(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const Vec2& p = rounded[i];
+    std::optional<Vec2>& g = group_point[static_cast<std::size_t>(root(static_cast<int>(i)))];
+    if (!g || (is_domain_corner(p) && !is_domain_corner(*g))) g = p;
+  }
+  std::map<const Arrangement::Vertex*, Vec2> out;
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    out[vertices[i]] = *group_point[static_cast<std::size_t>(root(static_cast<int>(i)))];
+  }
+  return out;
 }
 
 // Removes every edge for which `doomed` holds, until none does (a removal can make another
@@ -52,6 +149,128 @@ int remove_edges_while(Arrangement& arr, Doomed doomed) {
   }
 }
 
+// Removes the dead ends of face `f` (edges with `f` on both sides), repeatedly: those a
+// merge into `f` leaves, which lie on its boundary only (a whole-arrangement scan after each
+// of hundreds of merges would cost more than the cut).
+int remove_dead_ends_of(Arrangement& arr, Arrangement::Face_handle f) {
+  int removed = 0;
+  for (;;) {
+    std::vector<Arrangement::Halfedge_handle> dead;
+    const auto scan = [&](Arrangement::Ccb_halfedge_circulator first) {
+      auto c = first;
+      do {
+        // Both halves of a dead end lie on f's boundary: keep one.
+        if (c->twin()->face() == f &&
+            std::less<const Arrangement::Halfedge*>{}(&*c, &*c->twin())) {
+          dead.push_back(c);
+        }
+      } while (++c != first);
+    };
+    scan(f->outer_ccb());
+    for (auto h = f->holes_begin(); h != f->holes_end(); ++h) scan(*h);
+    if (dead.empty()) return removed;
+    for (auto e : dead) arr.remove_edge(e);
+    removed += static_cast<int>(dead.size());
+  }
+}
+
+// Slivers, smallest first, each merged into the neighbour across its longest edge (the
+// edge removed, then any dead end that leaves). Faces wait in a queue by area; a merge
+// queues the merged face afresh, and an entry whose face has been merged away or has
+// changed its area since is skipped. Merges only delete faces, never make one, so a face's
+// address names it throughout. Areas in doubles: enough to order faces and to compare them
+// with `min_block_area`.
+void merge_slivers(Arrangement& arr, double min_block_area, CutResult& result) {
+  const auto outer_area = [](Arrangement::Face_handle f) {
+    double twice = 0.0;
+    auto c = f->outer_ccb();
+    const auto first = c;
+    do {
+      const Vec2 p = approximate(c->source()->point()), q = approximate(c->target()->point());
+      twice += p.x() * q.y() - p.y() * q.x();
+    } while (++c != first);
+    return 0.5 * twice;
+  };
+  struct Entry {
+    double area;
+    std::size_t order;  // ties in queueing order, so that the cut is the same every run
+    Arrangement::Face_handle face;
+    bool operator>(const Entry& o) const {
+      return area != o.area ? area > o.area : order > o.order;
+    }
+  };
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  std::map<const Arrangement::Face*, double> area_of;  // faces alive, by area
+  std::size_t order = 0;
+  const auto enqueue = [&](Arrangement::Face_handle f) {
+    const double a = outer_area(f);
+    area_of[&*f] = a;
+    if (a < min_block_area) queue.push({a, order++, f});
+  };
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (!f->is_unbounded()) enqueue(f);
+  }
+  while (!queue.empty()) {
+    const Entry top = queue.top();
+    queue.pop();
+    const auto alive = area_of.find(&*top.face);
+    if (alive == area_of.end() || alive->second != top.area) continue;
+    // Its longest edge with a block on the other side.
+    Arrangement::Halfedge_handle longest;
+    Kernel::FT longest_length = 0;
+    auto c = top.face->outer_ccb();
+    const auto first = c;
+    do {
+      if (!c->twin()->face()->is_unbounded()) {
+        const Kernel::FT l = CGAL::squared_distance(c->source()->point(), c->target()->point());
+        if (l > longest_length) {
+          longest_length = l;
+          longest = c;
+        }
+      }
+    } while (++c != first);
+    if (longest_length == 0) continue;  // alone against the boundary: kept
+    area_of.erase(&*top.face);
+    area_of.erase(&*longest->twin()->face());
+    const Arrangement::Face_handle merged = arr.remove_edge(longest);
+    ++result.slivers_merged;
+    result.dead_end_edges += remove_dead_ends_of(arr, merged);
+    enqueue(merged);
+  }
+}
+
+// The pairs of blocks on the two sides of each edge between two bounded faces, with the
+// length each group contributes; per pair the group of the longest total (the lower on a tie).
+std::vector<BlockAdjacency> adjacency(const Arrangement& arr,
+                                      const std::map<const Arrangement::Face*, int>& block_of) {
+  std::map<std::pair<int, int>, std::map<int, double>> lengths;  // pair -> group -> length
+  for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+    // Faces left out (the unbounded one, collapsed ones) have no block.
+    const auto fi = block_of.find(&*e->face()), fj = block_of.find(&*e->twin()->face());
+    if (fi == block_of.end() || fj == block_of.end()) continue;
+    const int i = fi->second, j = fj->second;
+    if (i == j) continue;  // cannot happen once dead ends are gone; harmless if it did
+    const double length =
+        (approximate(e->target()->point()) - approximate(e->source()->point())).norm();
+    lengths[std::minmax(i, j)][e->curve().data()] += length;
+  }
+  std::vector<BlockAdjacency> pairs;
+  pairs.reserve(lengths.size());
+  for (const auto& [pair, by_group] : lengths) {
+    BlockAdjacency adjacent{pair.first, pair.second, kNoGroup, 0.0};
+    double longest = -1.0;
+    for (const auto& [group, length] : by_group) {  // groups in increasing order
+      adjacent.shared_length += length;
+      if (length > longest) {
+        longest = length;
+        adjacent.group = group;
+      }
+    }
+    pairs.push_back(adjacent);
+  }
+  return pairs;
+}
+
 }  // namespace
 
 CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joints,
@@ -61,10 +280,11 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
   std::vector<Segment> segments;
   segments.reserve(domain.size() + joints.size());
   for (std::size_t i = 0; i < domain.size(); ++i) {
-    segments.emplace_back(exact(domain[i]), exact(domain[(i + 1) % domain.size()]));
+    const Vec2& next = domain[(i + 1) % domain.size()];
+    segments.push_back(segment(exact(domain[i]), exact(next), kNoGroup));
   }
   for (const JointSegment& j : joints) {
-    if (j.from != j.to) segments.emplace_back(exact(j.from), exact(j.to));
+    if (j.from != j.to) segments.push_back(segment(exact(j.from), exact(j.to), j.group));
   }
   Arrangement arr;
   CGAL::insert(arr, segments.begin(), segments.end());  // one sweep
@@ -79,76 +299,66 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
   const auto dead_end = [](Arrangement::Edge_iterator e) { return e->face() == e->twin()->face(); };
   result.dead_end_edges = remove_edges_while(arr, dead_end);
 
-  // Slivers: one merge at a time (a merge changes the faces around it), smallest first.
-  for (;;) {
-    Arrangement::Halfedge_handle best_edge;
-    double smallest = min_block_area;
-    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-      if (f->is_unbounded()) continue;
-      CGAL::Polygon_2<Kernel> outline;
-      for (const Point& p : cycle_points(f->outer_ccb())) outline.push_back(p);
-      const double area = CGAL::to_double(outline.area());
-      if (area >= smallest) continue;
-      // Its longest edge with a block on the other side.
-      Arrangement::Halfedge_handle longest;
-      Kernel::FT longest_length = 0;
-      auto c = f->outer_ccb();
-      const auto first = c;
-      do {
-        if (!c->twin()->face()->is_unbounded()) {
-          const Kernel::FT l = CGAL::squared_distance(c->source()->point(), c->target()->point());
-          if (l > longest_length) {
-            longest_length = l;
-            longest = c;
-          }
-        }
-      } while (++c != first);
-      if (longest_length == 0) continue;  // alone against the boundary: kept
-      smallest = area;
-      best_edge = longest;
-    }
-    if (best_edge == Arrangement::Halfedge_handle()) break;
-    arr.remove_edge(best_edge);
-    ++result.slivers_merged;
-    result.dead_end_edges += remove_edges_while(arr, dead_end);
-  }
+  merge_slivers(arr, min_block_area, result);
 
-  // A face with a hole: bridge the hole to the outer boundary by a segment from the hole's
-  // lowest-leftmost vertex straight down to the first edge below it, then start again.
+  // A face with a hole: two bridges from the hole to what surrounds it, one straight down
+  // from its lowest vertex of least x, one straight up from its highest vertex of greatest x
+  // (nothing of the hole lies below the one or above the other), then start again. One
+  // bridge alone would leave a slit, an edge with the same block on both sides, which no
+  // simple polygon has; two split the face into simple blocks (or reach another hole, which
+  // gets its own two).
   for (bool bridged = true; bridged;) {
     bridged = false;
     for (auto f = arr.faces_begin(); f != arr.faces_end() && !bridged; ++f) {
       if (f->is_unbounded() || f->number_of_holes() == 0) continue;
-      Point low = (*f->holes_begin())->source()->point();
-      auto h = *f->holes_begin();
+      const auto h = *f->holes_begin();
+      Point low = h->source()->point(), high = low;
       auto c = h;
       do {
-        if (c->source()->point() < low) low = c->source()->point();
+        low = std::min(low, c->source()->point());
+        high = std::max(high, c->source()->point());
       } while (++c != h);
-      // The nearest intersection below `low` with an edge not on the hole.
-      std::optional<Point> hit;
-      for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
-        const Kernel::Segment_2 s(e->source()->point(), e->target()->point());
-        const Kernel::Ray_2 down(low, Kernel::Direction_2(0, -1));
-        const auto x = CGAL::intersection(s, down);
-        if (!x) continue;
-        const Point* p = boost::get<Point>(&*x);  // CGAL 5.5: a boost::variant
-        if (p == nullptr || *p == low) continue;
-        if (!hit || CGAL::has_larger_distance_to_point(low, *hit, *p)) hit = *p;
-      }
-      if (!hit) continue;  // cannot happen inside a bounded face; leave it
-      CGAL::insert(arr, Segment(low, *hit));
+      const std::optional<Point> below = first_hit(arr, low, Kernel::Direction_2(0, -1));
+      const std::optional<Point> above = first_hit(arr, high, Kernel::Direction_2(0, 1));
+      if (!below || !above) continue;  // cannot happen inside a bounded face; leave it
+      const std::vector<Segment> bridges{segment(low, *below, kNoGroup),
+                                         segment(high, *above, kNoGroup)};
+      CGAL::insert(arr, bridges.begin(), bridges.end());
       ++result.holes_bridged;
       bridged = true;
     }
   }
 
+  // Corners to doubles, each once. Vertices joined by an edge shorter than 1e-12 of the
+  // domain's diagonal (a trace through a corner of the domain, up to its rounding; traces
+  // crossing all but at one point) become one point, so that no block has an edge the scene
+  // reader would take for a repeated vertex (its tolerance: 1e-12 of the block's diagonal,
+  // never more than the domain's). A point moves by about that much, far inside the
+  // touching tolerance between blocks (1e-9 of a block's size).
+  const Box box = bounding_box(domain);
+  const std::map<const Arrangement::Vertex*, Vec2> corner =
+      snapped_corners(arr, domain, 1e-12 * (box.max - box.min).norm());
+  std::map<const Arrangement::Face*, int> block_of;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
     if (f->is_unbounded()) continue;
     Polygon block;
-    for (const Point& p : cycle_points(f->outer_ccb())) block.push_back(plain(p));
+    for (const auto v : cycle_vertices(f->outer_ccb())) {
+      const Vec2& p = corner.at(&*v);
+      if (block.empty() || block.back() != p) block.push_back(p);
+    }
+    while (block.size() > 1 && block.back() == block.front()) block.pop_back();
+    // A face that is no more than a line once rounded (narrower than 1e-11 of its size, so
+    // that the scene reader, at 1e-12, would find no area) is left out: nothing is lost.
+    const Box b = bounding_box(block);
+    const double size = (b.max - b.min).norm();
+    if (block.size() < 3 || std::abs(signed_area(block)) <= 1e-11 * size * size) {
+      ++result.collapsed_faces;
+      continue;
+    }
+    block_of[&*f] = static_cast<int>(result.blocks.size());
     result.blocks.push_back(std::move(block));
   }
+  result.adjacency = adjacency(arr, block_of);
   return result;
 }
 

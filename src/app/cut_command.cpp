@@ -1,0 +1,119 @@
+#include "app/cut_command.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <vector>
+
+#include "cutting/model.hpp"
+#include "io/block_picture.hpp"
+#include "io/cut_scene.hpp"
+#include "io/json_input.hpp"
+#include "io/model_reader.hpp"
+#include "io/scene_reader.hpp"
+#include "kinematics/polygon.hpp"
+
+namespace dda {
+namespace {
+
+// The cut as a picture next to the scene (SCENE.png for SCENE.json): blocks coloured by
+// material (in order of first appearance), fixed blocks grey, a legend of both.
+std::string write_cut_picture(const CutModel& cut, const std::string& scene_path) {
+  std::vector<std::string> names;
+  std::vector<PictureBlock> blocks;
+  constexpr Rgb kFixedGrey{190, 190, 190};
+  for (std::size_t i = 0; i < cut.cut.blocks.size(); ++i) {
+    auto it = std::find(names.begin(), names.end(), cut.materials[i]);
+    if (it == names.end()) it = names.insert(names.end(), cut.materials[i]);
+    const Rgb colour = category_colour(static_cast<int>(it - names.begin()));
+    blocks.push_back({cut.cut.blocks[i], cut.fixed[i] ? kFixedGrey : colour});
+  }
+  PictureOptions options;
+  options.width_px = 1600;
+  options.title = std::to_string(blocks.size()) + " blocks cut from " + scene_path;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    options.legend.push_back({names[k], category_colour(static_cast<int>(k))});
+  }
+  if (std::find(cut.fixed.begin(), cut.fixed.end(), true) != cut.fixed.end()) {
+    options.legend.push_back({"fixed", kFixedGrey});
+  }
+  std::filesystem::path png(scene_path);
+  png.replace_extension(".png");
+  write_block_picture(png.string(), blocks, options);
+  return png.string();
+}
+
+// "rock 1900, weak 87" from the count of each name.
+std::string counts_text(const std::map<std::string, int>& counts) {
+  std::string text;
+  for (const auto& [name, count] : counts) {
+    text += (text.empty() ? "" : ", ") + name + " " + std::to_string(count);
+  }
+  return text;
+}
+
+void print_statistics(const Model& model, const CutModel& cut, const CutScene& scene,
+                      const std::string& out_path) {
+  const CutResult& c = cut.cut;
+  double smallest = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < c.blocks.size(); ++i) {
+    const double a = signed_area(c.blocks[i]);
+    smallest = i == 0 ? a : std::min(smallest, a);
+    largest = i == 0 ? a : std::max(largest, a);
+  }
+  std::map<std::string, int> by_material, by_joint;
+  for (const std::string& m : cut.materials) ++by_material[m];
+  const long fixed = std::count(cut.fixed.begin(), cut.fixed.end(), true);
+  by_joint[kDefaultJointMaterial] = static_cast<int>(c.adjacency.size() - cut.joints.size());
+  for (const CutJoint& j : cut.joints) ++by_joint[j.joint_material];
+  using input::format_number;
+  std::cerr << "dda: cut " << model.source << ": " << c.blocks.size() << " blocks; scene in "
+            << out_path << "\n"
+            << "dda: cut: " << c.dead_end_edges << " dead-end edges removed, " << c.holes_bridged
+            << " holes bridged, " << c.slivers_merged << " slivers merged"
+            << (c.collapsed_faces > 0
+                    ? ", " + std::to_string(c.collapsed_faces) + " faces without area left out"
+                    : std::string())
+            << "\n"
+            << "dda: cut: block area from " << format_number(smallest) << " to "
+            << format_number(largest) << " m^2\n"
+            << "dda: cut: blocks by material: " << counts_text(by_material) << "\n"
+            << "dda: cut: " << fixed << " fixed blocks\n"
+            << "dda: cut: pairs of touching blocks by joint material: " << counts_text(by_joint)
+            << "\n";
+  for (const std::string& name : scene.unused_joint_materials) {
+    std::cerr << "dda: cut: joint material \"" << name
+              << "\" left out of the scene: no pair of blocks shares an edge of its joints\n";
+  }
+}
+
+}  // namespace
+
+int cut_command(const std::string& model_path, const std::string& out_path) {
+  if (model_path.empty()) {
+    throw InputError("cut: no model file given (dda cut MODEL.json --out SCENE.json; see "
+                     "docs/model-format.md)");
+  }
+  const Model model = read_model_file(model_path);
+  const CutModel cut = cut_model(model.spec);
+  const CutScene scene = cut_scene(model, cut);
+  const std::string text = scene_text(scene.scene);
+  write_text_file(out_path, text);
+  // The scene is read back as `dda run` reads it. A cut whose blocks a scene cannot hold
+  // (e.g. a block too thin to have an area at the reader's tolerance) is the model's doing:
+  // an input error, with the scene left for inspection.
+  try {
+    const Scene check = parse_scene_text(text, out_path);
+    if (!check.warnings.empty()) throw InputError(check.warnings.front());
+  } catch (const InputError& e) {
+    throw InputError(model_path + ": the cut gives a scene that dda run does not accept as it "
+                     "is (" + e.what() + "); a larger min_block_area may help");
+  }
+  print_statistics(model, cut, scene, out_path);
+  const std::string picture = write_cut_picture(cut, out_path);
+  std::cerr << "dda: cut: picture of the blocks in " << picture << "\n";
+  return 0;
+}
+
+}  // namespace dda

@@ -1,0 +1,88 @@
+#include "cutting/model.hpp"
+
+#include <algorithm>
+
+#include "cutting/block_labels.hpp"
+#include "kinematics/polygon.hpp"
+
+namespace dda {
+namespace {
+
+// Tolerance of the geometric labels (fixed by an edge or a polygon, a centroid on a block's
+// boundary): 1e-9 of the domain's bounding-box diagonal. The blocks' corners are exact
+// intersections rounded to doubles once (~1e-16 relative), so a block edge on the domain's
+// boundary is on it to far better than this, and no real block is this thin.
+double label_tolerance(const Polygon& domain) {
+  const Box box = bounding_box(domain);
+  return 1e-9 * (box.max - box.min).norm();
+}
+
+std::string block_material(const ModelSpec& model, const Polygon& block, double tol) {
+  const Vec2 p = interior_point(block, tol);
+  for (const RegionModel& region : model.regions) {
+    if (contains_point(region.polygon, p)) return region.material;
+  }
+  return model.material;
+}
+
+bool block_fixed(const ModelSpec& model, const Polygon& block, double tol) {
+  const Polygon& d = model.domain;
+  for (int i : model.fixed.edges) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    if (has_edge_along(block, d[k], d[(k + 1) % d.size()], tol)) return true;
+  }
+  return model.fixed.polygon && lies_within(block, *model.fixed.polygon, tol);
+}
+
+// The joint material of the segments of group `group` (model_segments' numbering).
+const std::string& group_joint_material(const ModelSpec& model, int group) {
+  static const std::string kDefault = kDefaultJointMaterial;
+  if (group < 0) return kDefault;
+  const std::size_t g = static_cast<std::size_t>(group);
+  if (g < model.joint_sets.size()) return model.joint_sets[g].joint_material;
+  return model.joints[g - model.joint_sets.size()].joint_material;
+}
+
+}  // namespace
+
+// splitmix64 (Steele, Lea and Flood 2014) of the seed advanced by k golden-ratio steps: one
+// well-mixed 64-bit value per set, the same on every platform.
+std::uint64_t joint_set_seed(std::uint64_t seed, std::size_t k) {
+  std::uint64_t z = seed + (static_cast<std::uint64_t>(k) + 1) * 0x9E3779B97F4A7C15ULL;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+std::vector<JointSegment> model_segments(const ModelSpec& model) {
+  const Box box = bounding_box(model.domain);
+  std::vector<JointSegment> segments;
+  for (std::size_t k = 0; k < model.joint_sets.size(); ++k) {
+    std::vector<JointSegment> traces = joint_set_traces(
+        model.joint_sets[k].traces, box.min, box.max, joint_set_seed(model.seed, k));
+    for (JointSegment& t : traces) t.group = static_cast<int>(k);
+    segments.insert(segments.end(), traces.begin(), traces.end());
+  }
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const int group = static_cast<int>(model.joint_sets.size() + j);
+    segments.push_back({model.joints[j].from, model.joints[j].to, group});
+  }
+  return segments;
+}
+
+CutModel cut_model(const ModelSpec& model) {
+  CutModel out;
+  out.cut = cut_domain(model.domain, model_segments(model), model.min_block_area);
+  const double tol = label_tolerance(model.domain);
+  for (const Polygon& block : out.cut.blocks) {
+    out.materials.push_back(block_material(model, block, tol));
+    out.fixed.push_back(block_fixed(model, block, tol));
+  }
+  for (const BlockAdjacency& pair : out.cut.adjacency) {
+    const std::string& name = group_joint_material(model, pair.group);
+    if (name != kDefaultJointMaterial) out.joints.push_back({pair.a, pair.b, name});
+  }
+  return out;
+}
+
+}  // namespace dda

@@ -1,0 +1,85 @@
+// A rock-slope model (issue 11): a domain, its joint sets and single joints, regions of
+// other materials, what is fixed; and the blocks it is cut into, each with its material,
+// fixed or not, with the joint material of every pair of neighbouring blocks.
+// docs/model-format.md documents the file that io/model_reader turns into a ModelSpec.
+// Plain data and pure functions; the names of materials are only carried, never checked here
+// (the reader has checked them).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cutting/cut_domain.hpp"
+#include "cutting/joint_sets.hpp"
+#include "kinematics/types.hpp"
+
+namespace dda {
+
+inline constexpr const char* kDefaultJointMaterial = "default";
+
+struct JointSetModel {
+  JointSetSpec traces;
+  std::string joint_material = kDefaultJointMaterial;
+};
+
+struct SingleJointModel {
+  Vec2 from = Vec2::Zero();
+  Vec2 to = Vec2::Zero();
+  std::string joint_material = kDefaultJointMaterial;
+};
+
+struct RegionModel {
+  Polygon polygon;
+  std::string material;
+};
+
+// Blocks fixed in place: those with an edge on one of the domain's edges listed (edge i runs
+// from vertex i to vertex i + 1), and those lying wholly inside or on `polygon`. Both may be
+// given; a block that meets either rule is fixed.
+struct FixedModel {
+  std::vector<int> edges;
+  std::optional<Polygon> polygon;
+};
+
+struct ModelSpec {
+  Polygon domain;  // counter-clockwise, simple
+  std::vector<JointSetModel> joint_sets;
+  std::uint64_t seed = 1;
+  std::vector<SingleJointModel> joints;
+  std::vector<RegionModel> regions;
+  std::string material;  // of every block in no region
+  FixedModel fixed;
+  double min_block_area = 0.0;  // m^2
+};
+
+// A pair of neighbouring blocks whose contacts use a joint material other than "default".
+struct CutJoint {
+  int a = 0;
+  int b = 0;
+  std::string joint_material;
+};
+
+struct CutModel {
+  CutResult cut;                        // blocks, adjacency and the cut's counts
+  std::vector<std::string> materials;   // per block
+  std::vector<bool> fixed;              // per block
+  std::vector<CutJoint> joints;         // pairs of a non-default joint material, by (a, b)
+};
+
+// The seed of joint set k's traces: the model's seed and k mixed (splitmix64), so that the
+// sets draw independent streams and adding a set leaves the others' traces as they were.
+std::uint64_t joint_set_seed(std::uint64_t seed, std::size_t k);
+
+// Every trace of every set (group k for set k) and every single joint (group S + j for
+// joint j, S the number of sets): the segments cut_domain cuts the domain by.
+std::vector<JointSegment> model_segments(const ModelSpec& model);
+
+// Cuts the model's domain and labels the blocks: material (regions, cutting/block_labels),
+// fixed, and the joint material of each neighbouring pair from the group that made most of
+// their shared length (BlockAdjacency). A single joint that coincides with a trace of a set
+// along some length takes that length (the higher group).
+CutModel cut_model(const ModelSpec& model);
+
+}  // namespace dda

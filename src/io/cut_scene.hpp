@@ -1,0 +1,34 @@
+// The scene a cut model gives (`dda cut`, issue 11): an ordinary scene JSON that `dda run`
+// reads, laid out to be edited by hand. The model's scene keys are copied as given.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cutting/model.hpp"
+#include "io/model_reader.hpp"
+
+namespace dda {
+
+struct CutScene {
+  nlohmann::ordered_json scene;
+  // Joint materials of the model that no pair of blocks uses: left out of the scene, where
+  // the scene reader would warn about them (docs/scene-format.md, joint_materials).
+  std::vector<std::string> unused_joint_materials;
+};
+
+// The scene: description (the model's, or one naming the model), gravity, plane, control,
+// materials, joint_materials ("default" and those used), blocks (vertices, material, fixed
+// when fixed) and joints (the pairs of a non-default joint material).
+CutScene cut_scene(const Model& model, const CutModel& cut);
+
+// The scene's text: objects indented by 2, one key a line; each block and each joint on
+// one line; numbers as the shortest text that reads back as the same double.
+std::string scene_text(const nlohmann::ordered_json& scene);
+
+// Writes `text` to `path`. Throws std::runtime_error naming the path when it cannot.
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace dda
