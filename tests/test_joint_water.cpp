@@ -63,7 +63,7 @@ TEST_CASE("joint water forces push the two faces of a joint apart with the face'
   }
   WaterTable water;
   water.phreatic_line = {{-10.0, 3.0}, {10.0, 3.0}};
-  const std::vector<BlockForce> forces = joint_water_forces(water, {&base, &box}, contacts);
+  const std::vector<BlockForce> forces = joint_water_forces(water, {&base, &box}, contacts, 0.01);
   Vec2 on_box = Vec2::Zero(), on_base = Vec2::Zero();
   double moment = 0.0;  // about the origin, on the box
   for (const BlockForce& f : forces) {
@@ -75,6 +75,33 @@ TEST_CASE("joint water forces push the two faces of a joint apart with the face'
   CHECK(on_box.x() == Approx(0.0).margin(1e-9));
   CHECK((on_box + on_base).norm() == Approx(0.0).margin(1e-9));
   CHECK(moment / on_box.y() == Approx(2.0).epsilon(1e-13));
+}
+
+TEST_CASE("an open joint seen from both sides is wetted once", "[water]") {
+  // A vertical crack between block 0 (left) and block 1 (right), opened by 1 cm: block 1's
+  // lower vertex sits on block 0's edge and block 0's lower vertex on block 1's edge, so
+  // both lower halves of the face are shares of contacts. Counted per contact, the lower
+  // half would be wet twice; per face, the thrust is gamma z^2 / 2 once.
+  const Polygon left{{-4, 0}, {0, 0}, {0, 6}, {-4, 6}};
+  const Polygon right{{0.01, -0.5}, {4, -0.5}, {4, 5.5}, {0.01, 5.5}};
+  std::vector<Contact> contacts(3);
+  contacts[0].key = {1, 3, 0, 1};  // right's top-left vertex on left's right edge
+  contacts[1].key = {1, 0, 0, 1};  // right's bottom-left vertex on left's right edge
+  contacts[2].key = {0, 1, 1, 3};  // left's bottom-right vertex on right's left edge
+  for (int k = 0; k < 3; ++k) {
+    contacts[static_cast<std::size_t>(k)].normal = k < 2 ? Vec2(1.0, 0.0) : Vec2(-1.0, 0.0);
+    contacts[static_cast<std::size_t>(k)].length = 3.0;
+  }
+  WaterTable water;
+  water.phreatic_line = {{-10.0, 6.0}, {10.0, 6.0}};
+  water.unit_weight = 1.0;
+  const std::vector<BlockForce> forces = joint_water_forces(water, {&left, &right}, contacts, 0.05);
+  double on_right = 0.0;
+  for (const BlockForce& f : forces) on_right += f.block == 1 ? f.force.x() : 0.0;
+  // The shares are [2.5, 5.5] and [-0.5, 2.5] of right's edge and [0, 3] of left's: their
+  // union is [-0.5, 5.5], and the integral of (6 - y) over it is 36 - (5.5^2 - 0.5^2) / 2 =
+  // 21 (per contact it would be 6 + 15 + 13.5 = 34.5). Exact integrals: round-off only.
+  CHECK(on_right == Approx(21.0).epsilon(1e-12));
 }
 
 TEST_CASE("the water table is checked where it is read", "[water][input]") {

@@ -83,11 +83,12 @@ TEST_CASE("Goodman and Bray's toppling example: limiting friction 38.15 and the 
 }
 
 TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the planar block, the "
-          "dry tension-crack slope and the active-passive wedges",
+          "tension-crack slope dry and with water, and the active-passive wedges",
           "[slope]") {
   // Each about 0.2 s in the release build (rigid blocks; 12 trials on 2 threads).
   const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
-  for (const char* name : {"planar_c10", "hoek_bray_dry", "wedge_smooth", "wedge_rough"}) {
+  for (const char* name : {"planar_c10", "planar_uplift", "hoek_bray_dry", "hoek_bray_half",
+                           "hoek_bray_full", "wedge_smooth", "wedge_rough"}) {
     const SlopeCase& c = find_case(cases, name);
     const CaseResult r = run_case(c, RunOptions{}, {});
     INFO(name << ": DDA " << r.factor << " in [" << r.last_stable << ", " << r.first_failing

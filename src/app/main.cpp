@@ -5,14 +5,13 @@
 // `dda material-point` does the same for one material point on a strain/stress path
 // (materials), with 3 for a path that could not be followed.
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <string>
 
 #include "app/cut_command.hpp"
+#include "app/fos_command.hpp"
 #include "app/progress.hpp"
-#include "io/fos_report.hpp"
 #include "io/material_point_output.hpp"
 #include "io/material_point_reader.hpp"
 #include "io/output.hpp"
@@ -66,61 +65,6 @@ int run_command(const std::string& scene_path, const std::string& out_dir) {
   }
   std::cerr << "dda: " << stats.steps << " steps (" << stats.cut_steps << " cut) in "
             << stats.wall_time_s << " s; results in " << out_dir << "\n";
-  return kExitOk;
-}
-
-// `dda fos`: consolidate the scene at F = 1 (its own control and stages), then search for
-// the factor by strength-reduction trials (solver/strength_reduction.hpp). Exit 0 with a
-// factor, 3 without one (the report says why) or when the consolidation diverged.
-int fos_command(const std::string& scene_path, const std::string& out_dir,
-                dda::FosSettings settings) {
-  if (scene_path.empty()) {
-    throw dda::InputError(
-        "fos: no scene given (dda fos SCENE.json --out DIR; see docs/factor-of-safety.md)");
-  }
-  const dda::Scene scene = dda::read_scene_file(scene_path);
-  for (const std::string& warning : scene.warnings) std::cerr << "dda: warning: " << warning << "\n";
-  dda::World world = dda::make_world(scene);
-  bool any_free = false;
-  for (const dda::Block& b : world.blocks) any_free = any_free || !b.fixed;
-  if (!any_free) throw dda::InputError(scene_path + ": blocks: every block is fixed; nothing can fail");
-
-  std::cerr << "dda: consolidating " << scene_path << " at F = 1\n";
-  dda::ProgressBar progress(run_length(scene), scene.control.steps ? "steps" : "s");
-  const dda::RunStats consolidated = dda::run(world, [&](const dda::World& w, const dda::RunStats&) {
-    progress.update(scene.control.steps ? static_cast<double>(w.step) : w.time);
-    return true;
-  });
-  progress.finish();
-  if (consolidated.diverged) {
-    std::cerr << "dda: error: the consolidation at F = 1 diverged at " << consolidated.message
-              << "; no trial was run\n";
-    return kExitDiverged;
-  }
-  dda::ConsolidationInfo info{consolidated.steps, world.time, consolidated.wall_time_s, 0.0};
-  for (const dda::Block& b : world.blocks) info.kinetic_end += b.fixed ? 0.0 : dda::kinetic_energy(b);
-  settings = dda::resolve_fos_settings(world, settings);
-  std::cerr << "dda: trials of " << settings.trial_time << " s, failing beyond "
-            << settings.failure_displacement << " m, " << settings.jobs << " at once\n";
-
-  const auto start = std::chrono::steady_clock::now();
-  const dda::FosResult result = dda::find_factor_of_safety(
-      settings, [&](const std::vector<double>& factors) {
-        return dda::run_trials(world, settings, factors, [](const dda::TrialResult& t) {
-          std::cerr << "dda: " << dda::trial_line(t) << "\n";
-        });
-      });
-  const double wall = consolidated.wall_time_s +
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  dda::write_fos_report(out_dir, scene, settings, info, result, wall);
-  if (!result.found) {
-    std::cerr << "dda: error: no factor of safety: " << result.message << "; trials in "
-              << out_dir << "/report.json\n";
-    return kExitDiverged;
-  }
-  std::cerr << "dda: factor of safety " << result.factor_of_safety << " (bracket "
-            << result.last_stable << " to " << result.first_failing << ") in " << wall
-            << " s; report in " << out_dir << "\n";
   return kExitOk;
 }
 
@@ -193,6 +137,10 @@ int main(int argc, char** argv) {
                     "Also divide plastic blocks' strengths by F");
   fos_app->add_option("--jobs", fos.jobs, "Trials at once")->capture_default_str()
       ->check(CLI::Range(1, 64));
+  fos_app->add_option("--consolidation-factor", fos.consolidation_factor,
+                      "Consolidate with the joints' strengths divided by this (e.g. 0.5 for a "
+                      "slope whose factor is below 1)")->capture_default_str()
+      ->check(CLI::Range(1e-3, 1.0));
 
   std::string model_path;
   std::string scene_out = "scene.json";
@@ -206,7 +154,7 @@ int main(int argc, char** argv) {
   try {
     if (run->parsed()) return run_command(scene_path, out_dir);
     if (point->parsed()) return material_point_command(spec_path, csv_file);
-    if (fos_app->parsed()) return fos_command(fos_scene, fos_dir, fos);
+    if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos);
     if (cut->parsed()) return dda::cut_command(model_path, scene_out);
   } catch (const dda::InputError& e) {
     std::cerr << "dda: error: " << e.what() << "\n";

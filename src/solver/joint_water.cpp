@@ -65,24 +65,78 @@ SegmentPressure segment_pressure(const WaterTable& water, const Vec2& a, const V
   return out;
 }
 
+namespace {
+
+// One joint face between two blocks: the pair (force on `a` along +normal, on `b` against
+// it), the face's line (normal, offset = normal . x) and the intervals of it that the
+// contacts' shares cover, as coordinates along the tangent (-normal.y, normal.x).
+struct Face {
+  int a = -1, b = -1;
+  Vec2 normal = Vec2::Zero();
+  double offset = 0.0;
+  std::vector<std::pair<double, double>> covered;
+};
+
+}  // namespace
+
 std::vector<BlockForce> joint_water_forces(const WaterTable& water,
                                            const std::vector<const Polygon*>& polygons,
-                                           const std::vector<Contact>& contacts) {
-  std::vector<BlockForce> out;
+                                           const std::vector<Contact>& contacts,
+                                           double face_tolerance) {
+  // A joint face may be covered by contacts from both sides: once it opens, a vertex of
+  // either block may project on the other's edge. The shares are therefore collected per
+  // face (the same pair of blocks, parallel within the wedge tolerance, lines within
+  // face_tolerance of each other), their union taken, and the pressure on it counted once.
+  std::vector<Face> faces;
   for (const Contact& c : contacts) {
     if (c.length <= 0.0) continue;  // a point contact: no face, no water force
+    const int a = std::min(c.key.vertex_block, c.key.edge_block);
+    const int b = std::max(c.key.vertex_block, c.key.edge_block);
+    const Vec2 n = c.key.vertex_block == a ? c.normal : Vec2(-c.normal);  // pushes a off b
     const Polygon& vp = *polygons[static_cast<std::size_t>(c.key.vertex_block)];
-    const int n = static_cast<int>(vp.size());
+    const int count = static_cast<int>(vp.size());
     const int v = c.key.vertex;
-    for (int w : {(v + n - 1) % n, (v + 1) % n}) {
+    for (int w : {(v + count - 1) % count, (v + 1) % count}) {
       const Vec2 along = vp[w] - vp[v];
       // The same test as the contact's length share (contact_detection.cpp).
       if (std::abs(along.dot(c.normal)) > kWedgeTolerance * along.norm()) continue;
-      const SegmentPressure p = segment_pressure(water, vp[v], vp[v] + 0.5 * along);
-      if (p.force <= 0.0) continue;
-      out.push_back({c.key.vertex_block, p.centre, p.force * c.normal});
-      out.push_back({c.key.edge_block, p.centre, -p.force * c.normal});
+      Face* face = nullptr;
+      for (Face& f : faces) {
+        if (f.a == a && f.b == b && f.normal.dot(n) > std::cos(kWedgeTolerance) &&
+            std::abs(f.normal.dot(vp[v]) - f.offset) <= face_tolerance) {
+          face = &f;
+          break;
+        }
+      }
+      if (face == nullptr) {
+        faces.push_back({a, b, n, n.dot(vp[v]), {}});
+        face = &faces.back();
+      }
+      const Vec2 t(-face->normal.y(), face->normal.x());
+      const double s0 = t.dot(vp[v]), s1 = t.dot(vp[v] + 0.5 * along);
+      face->covered.emplace_back(std::min(s0, s1), std::max(s0, s1));
     }
+  }
+  std::vector<BlockForce> out;
+  for (Face& f : faces) {
+    std::sort(f.covered.begin(), f.covered.end());
+    const Vec2 t(-f.normal.y(), f.normal.x());
+    auto flush = [&](double lo, double hi) {
+      const SegmentPressure p =
+          segment_pressure(water, f.offset * f.normal + lo * t, f.offset * f.normal + hi * t);
+      if (p.force <= 0.0) return;
+      out.push_back({f.a, p.centre, p.force * f.normal});
+      out.push_back({f.b, p.centre, -p.force * f.normal});
+    };
+    double lo = f.covered.front().first, hi = f.covered.front().second;
+    for (const auto& [s0, s1] : f.covered) {
+      if (s0 > hi) {
+        flush(lo, hi);
+        lo = s0;
+      }
+      hi = std::max(hi, s1);
+    }
+    flush(lo, hi);
   }
   return out;
 }

@@ -37,13 +37,16 @@ struct BlockForce {
   Vec2 force = Vec2::Zero();  // N per metre
 };
 
-// The water forces on the blocks from their joint faces: each contact that carries a share of
+// The water forces on the blocks from their joint faces. Each contact that carries a share of
 // a face (the halves of the vertex's edges that lie along the contact edge, as for its
-// cohesion; contact_detection.cpp) takes the pressure on that share, pushing the vertex's
-// block along the contact normal and the edge's block against it, at the centre of pressure.
-// `polygons[i]` are block i's vertices at the step's start.
+// cohesion; contact_detection.cpp) marks that share of the face as wet. The shares of one
+// face (one pair of blocks, parallel, lines within `face_tolerance` m: an open joint's two
+// sides) are united, so that a part covered from both sides counts once, and the pressure
+// on each covered stretch pushes the two blocks apart along the face's normal, at its centre
+// of pressure. `polygons[i]` are block i's vertices at the step's start.
 std::vector<BlockForce> joint_water_forces(const WaterTable& water,
                                            const std::vector<const Polygon*>& polygons,
-                                           const std::vector<Contact>& contacts);
+                                           const std::vector<Contact>& contacts,
+                                           double face_tolerance);
 
 }  // namespace dda

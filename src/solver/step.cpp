@@ -404,7 +404,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       const double scene_g = world.stages.gravity.norm();
       water.unit_weight *= scene_g > 0.0 ? world.gravity.norm() / scene_g : 0.0;
     }
-    world.water_forces = joint_water_forces(water, polygons, world.contacts);
+    // An open joint's two sides are one face up to the contact search distance.
+    world.water_forces =
+        joint_water_forces(water, polygons, world.contacts, world.search_distance);
   }
   clock.lap(stats.stage_times.detect);
   int penetration_cuts = 0;

@@ -98,6 +98,31 @@ MaterialParameters reduced_material(const MaterialParameters& m, double factor) 
   return r;
 }
 
+Consolidation consolidate(const Scene& scene, double factor, const StepObserver& observe) {
+  assert(factor > 0.0);
+  auto reduce = [factor](JointMaterial& j) {
+    j.friction_angle = reduced_angle_deg(j.friction_angle, factor);
+    j.cohesion /= factor;
+    j.tensile_strength /= factor;
+  };
+  Scene stronger = scene;
+  for (JointMaterial& j : stronger.joint_materials) reduce(j);
+  for (StageSpec& stage : stronger.stages) {
+    for (StageJoint& j : stage.joint_materials) reduce(j.material);
+  }
+  Consolidation out{make_world(stronger), {}};
+  out.stats = run(out.world, observe);
+  // The trials reduce the scene's own strengths (scene_joint_laws), not the consolidation's.
+  std::vector<JointLaw> laws;
+  for (const JointMaterial& j : scene.joint_materials) laws.push_back(joint_law_of(j));
+  if (out.world.stages.stages.empty()) {
+    out.world.joint_laws = laws;
+  } else {
+    out.world.stages.joint_laws = laws;
+  }
+  return out;
+}
+
 std::vector<JointLaw> scene_joint_laws(const World& consolidated) {
   return consolidated.stages.stages.empty() ? consolidated.joint_laws
                                             : consolidated.stages.joint_laws;
@@ -112,6 +137,11 @@ FosSettings resolve_fos_settings(const World& consolidated, FosSettings s) {
     assert(!areas.empty());
     std::nth_element(areas.begin(), areas.begin() + static_cast<long>(areas.size() / 2), areas.end());
     s.failure_displacement = 0.05 * std::sqrt(areas[areas.size() / 2]);
+    // Joint water acts on the contacts found within the search distance: a trial judged
+    // beyond it would have lost the water in a joint that opened (a tension crack's thrust).
+    if (consolidated.water) {
+      s.failure_displacement = std::min(s.failure_displacement, consolidated.search_distance);
+    }
   }
   if (s.trial_time <= 0.0) {
     const double g = std::max(consolidated.gravity.norm(), 1e-12);

@@ -11,6 +11,7 @@
 
 #include "contact/joint_law.hpp"
 #include "materials/material.hpp"
+#include "solver/run.hpp"
 #include "solver/world.hpp"
 
 namespace dda {
@@ -53,6 +54,10 @@ struct FosSettings {
   bool reduce_materials = false;
   // Trials run at once (threads): the search evaluates this many factors per round.
   int jobs = 2;
+  // The consolidation runs with the joints' strengths divided by this (1: the scene's own).
+  // A slope whose factor is below 1 cannot come to rest at full strength; consolidating it
+  // at, say, 0.5 (double strength) gives the trials a state at rest. Range (0, 1].
+  double consolidation_factor = 1.0;
 };
 
 // What one trial found.
@@ -72,6 +77,17 @@ struct TrialResult {
   int watched_point = -1;             // monitor index (monitors given) or block index that moved most
   World world;                        // the state where the trial ended (for pictures)
 };
+
+// The scene run as `dda run` runs it (its control and stages), with every joint material's
+// strength, and every stage's replacement of it, divided by settings.consolidation_factor;
+// afterwards the world carries the scene's own joint laws again, for the trials. `observe`
+// as for run().
+struct Consolidation {
+  World world;
+  RunStats stats;
+};
+Consolidation consolidate(const Scene& scene, double consolidation_factor,
+                          const StepObserver& observe);
 
 // The scene's joint laws as given (a staged consolidation may have replaced them for its
 // stages; the trials start from the scene's).

@@ -1,0 +1,115 @@
+#include "app/fos_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "app/progress.hpp"
+#include "io/block_picture.hpp"
+#include "io/fos_report.hpp"
+#include "io/scene_reader.hpp"
+#include "solver/run.hpp"
+
+namespace dda {
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitNoFactor = 3;
+
+std::string format(double x, const char* spec) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, spec, x);
+  return buf;
+}
+
+// The mechanism of one trial: every block coloured by how far its centroid moved from the
+// consolidated state (viridis, 0 to the largest), fixed blocks grey.
+void write_mechanism_picture(const std::filesystem::path& path, const World& consolidated,
+                             const TrialResult& t, const std::string& what) {
+  double largest = 0.0;
+  std::vector<double> moved(t.world.blocks.size(), 0.0);
+  for (std::size_t i = 0; i < moved.size(); ++i) {
+    moved[i] = (t.world.blocks[i].moments.centroid - consolidated.blocks[i].moments.centroid).norm();
+    largest = std::max(largest, moved[i]);
+  }
+  std::vector<PictureBlock> blocks;
+  for (std::size_t i = 0; i < moved.size(); ++i) {
+    const Block& b = t.world.blocks[i];
+    const Rgb fill = b.fixed ? Rgb{190, 190, 190}
+                             : sequential_colour(largest > 0.0 ? moved[i] / largest : 0.0);
+    blocks.push_back({b.vertices, fill});
+  }
+  PictureOptions options;
+  options.width_px = 1600;
+  options.title = what + ": F = " + format(t.factor, "%.4f") + ", " +
+                  (t.stable ? "stable" : "failing") + " (" + t.verdict + ")";
+  options.colour_bar = ColourBar{"displacement since the consolidation (m)", 0.0, largest};
+  write_block_picture(path.string(), blocks, options);
+}
+
+}  // namespace
+
+int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings) {
+  if (scene_path.empty()) {
+    throw InputError(
+        "fos: no scene given (dda fos SCENE.json --out DIR; see docs/factor-of-safety.md)");
+  }
+  const Scene scene = read_scene_file(scene_path);
+  for (const std::string& warning : scene.warnings) std::cerr << "dda: warning: " << warning << "\n";
+  bool any_free = false;
+  for (const BlockSpec& b : scene.blocks) any_free = any_free || !b.fixed;
+  if (!any_free) throw InputError(scene_path + ": blocks: every block is fixed; nothing can fail");
+
+  std::cerr << "dda: consolidating " << scene_path << " at F = " << settings.consolidation_factor << "\n";
+  const bool by_steps = scene.control.steps.has_value();
+  ProgressBar progress(by_steps ? static_cast<double>(*scene.control.steps) : *scene.control.end_time,
+                       by_steps ? "steps" : "s");
+  const Consolidation consolidation =
+      consolidate(scene, settings.consolidation_factor, [&](const World& w, const RunStats&) {
+        progress.update(by_steps ? static_cast<double>(w.step) : w.time);
+        return true;
+      });
+  progress.finish();
+  if (consolidation.stats.diverged) {
+    std::cerr << "dda: error: the consolidation diverged at " << consolidation.stats.message
+              << "; no trial was run\n";
+    return kExitNoFactor;
+  }
+  const World& world = consolidation.world;
+  ConsolidationInfo info{consolidation.stats.steps, world.time, consolidation.stats.wall_time_s, 0.0};
+  for (const Block& b : world.blocks) info.kinetic_end += b.fixed ? 0.0 : kinetic_energy(b);
+  settings = resolve_fos_settings(world, settings);
+  std::cerr << "dda: trials of " << settings.trial_time << " s, failing beyond "
+            << settings.failure_displacement << " m, " << settings.jobs << " at once\n";
+
+  const auto start = std::chrono::steady_clock::now();
+  const FosResult result = find_factor_of_safety(settings, [&](const std::vector<double>& factors) {
+    return run_trials(world, settings, factors, [](const TrialResult& t) {
+      std::cerr << "dda: " << trial_line(t) << "\n";
+    });
+  });
+  const double wall = consolidation.stats.wall_time_s +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_fos_report(out_dir, scene, settings, info, result, wall);
+  if (!result.found) {
+    std::cerr << "dda: error: no factor of safety: " << result.message << "; trials in "
+              << out_dir << "/report.json\n";
+    return kExitNoFactor;
+  }
+  for (const TrialResult& t : result.trials) {
+    if (t.factor == result.last_stable) {
+      write_mechanism_picture(std::filesystem::path(out_dir) / "last_stable.png", world, t,
+                              "last stable trial");
+    } else if (t.factor == result.first_failing) {
+      write_mechanism_picture(std::filesystem::path(out_dir) / "first_failing.png", world, t,
+                              "first failing trial");
+    }
+  }
+  std::cerr << "dda: factor of safety " << result.factor_of_safety << " (bracket "
+            << result.last_stable << " to " << result.first_failing << ") in " << wall
+            << " s; report and pictures in " << out_dir << "\n";
+  return kExitOk;
+}
+
+}  // namespace dda

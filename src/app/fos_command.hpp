@@ -1,0 +1,17 @@
+// `dda fos SCENE.json --out DIR` (issue 11): consolidate the scene, search for its factor of
+// safety by strength reduction (solver/strength_reduction.hpp), write the report and the
+// pictures of the mechanism (docs/factor-of-safety.md).
+#pragma once
+
+#include <string>
+
+#include "solver/strength_reduction.hpp"
+
+namespace dda {
+
+// Returns the exit code: 0 with a factor, 3 without one or when the consolidation diverged.
+// Throws InputError for a bad scene (exit 2) and std::runtime_error when the report cannot
+// be written (exit 1).
+int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings);
+
+}  // namespace dda
