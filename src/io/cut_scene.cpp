@@ -93,6 +93,9 @@ CutScene cut_scene(const Model& model, const CutModel& cut) {
     joints.push_back({{"blocks", {j.a, j.b}}, {"material", j.joint_material}});
   }
   if (!joints.empty()) scene["joints"] = joints;
+  // Stages (e.g. a static consolidation with gravity ramped up, for dda fos) are copied as
+  // the model gives them; the model reader has checked them as a scene's.
+  if (settings.contains("stages")) scene["stages"] = ordered_json(settings.at("stages"));
   return out;
 }
 

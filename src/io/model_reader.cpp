@@ -25,8 +25,8 @@ using input::non_negative_number;
 using input::positive_number;
 using input::read_polygon;
 
-constexpr std::string_view kSceneKeys[] = {"description", "gravity", "plane",
-                                           "control", "materials", "joint_materials"};
+constexpr std::string_view kSceneKeys[] = {"description", "gravity", "plane",    "control",
+                                           "materials",   "joint_materials", "stages"};
 
 // Caps on the traces a set may draw, so that a spacing or trace length given in the wrong
 // unit is an error at its key rather than a cut that runs out of memory. A cut of 100 000
@@ -182,7 +182,7 @@ FixedModel read_fixed(const Field& f, std::size_t domain_edges) {
 Model read_model(const Field& root, const std::string& source) {
   root.expect_keys({"description", "gravity", "plane", "control", "materials",
                     "joint_materials", "material", "domain", "joint_sets", "seed", "joints",
-                    "regions", "fixed", "min_block_area"});
+                    "regions", "fixed", "min_block_area", "stages"});
   Model model;
   model.source = source;
   const Scene settings = read_scene_settings(root, source, model.scene_settings);
