@@ -6,6 +6,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "../bench/brick_wall.hpp"
 #include "cli_helpers.hpp"
 #include "contact/joint_law.hpp"
 #include "io/scene_reader.hpp"
@@ -290,4 +291,32 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   const json none_report = json::parse(test::read_file(dir.path / "none" / "report.json"));
   CHECK(none_report.at("factor_of_safety").is_null());
   CHECK_THAT(none.output, Catch::Contains("no trial failed up to F"));
+}
+
+TEST_CASE("trials run on two threads give exactly what they give one at a time", "[fos]") {
+  // A 1000-brick wall: its factor is supernodal, so CHOLMOD calls BLAS, which Debian's serial
+  // OpenBLAS does not allow from two threads at once (sparse_cholesky.cpp, blas_mutex).
+  // Unlocked, both trials ended at their first step with a corrupted factor. Each trial is
+  // deterministic, so the threaded results must equal the serial ones bit for bit.
+  Material rock;
+  rock.name = "rock";
+  rock.density = 2500.0;
+  rock.young = 1e9;
+  rock.poisson = 0.25;
+  Scene scene = bench::brick_wall_scene(1000, rock);
+  scene.control.steps = 3;
+  const Consolidation c = consolidate(scene, 1.0, [](const World&, const RunStats&) { return true; });
+  REQUIRE_FALSE(c.stats.diverged);
+  FosSettings s = resolve_fos_settings(c.world, FosSettings{});
+  s.trial_time = 0.01;  // 5 steps of 2 ms
+  const std::vector<double> factors{1.5, 3.0};
+  const std::vector<TrialResult> threaded = run_trials(c.world, s, factors, {});
+  for (std::size_t k = 0; k < factors.size(); ++k) {
+    const TrialResult alone = run_trial(c.world, s, factors[k]);
+    INFO("F = " << factors[k] << ": " << threaded[k].verdict << " / " << alone.verdict);
+    CHECK(threaded[k].steps == alone.steps);
+    CHECK(threaded[k].steps == 5);
+    CHECK(threaded[k].largest_displacement == alone.largest_displacement);
+    CHECK(threaded[k].kinetic_end == alone.kinetic_end);
+  }
 }

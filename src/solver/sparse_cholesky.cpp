@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cassert>
 #include <iterator>
+#include <mutex>
 
 namespace dda {
 namespace {
@@ -23,6 +24,17 @@ void keep_large_allocations_mapped() {
     return true;
   }();
   (void)done;
+}
+
+// CHOLMOD's supernodal factorisation and solve call BLAS, and Debian's serial OpenBLAS
+// (libopenblas0-serial, the alternative scripts/install-deps.sh selects) is not safe for
+// concurrent callers: two strength-reduction trials factorising at once on two threads
+// (dda fos) got corrupted factors, "not positive definite or not finite", where each alone
+// ran clean (and ran clean together under the reference BLAS). The calls that reach BLAS
+// take this lock; everything else in a step (assembly, contacts, CG) runs in parallel.
+std::mutex& blas_mutex() {
+  static std::mutex m;
+  return m;
 }
 
 // A cholmod_sparse view of an Eigen compressed lower triangle (no copy).
@@ -191,7 +203,10 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
     if (factor_ == nullptr) return false;
   }
   modified_ = false;
-  if (!cholmod_factorize(&a, factor_, &common_)) return false;
+  {
+    const std::lock_guard<std::mutex> lock(blas_mutex());
+    if (!cholmod_factorize(&a, factor_, &common_)) return false;
+  }
   factored_ = common_.status == CHOLMOD_OK && positive_pivots();
   if (factored_) make_cost_tables();
   return factored_;
@@ -321,7 +336,11 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) {
   rhs.x = const_cast<double*>(b.data());
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* x = cholmod_solve(CHOLMOD_A, factor_, &rhs, &common_);
+  cholmod_dense* x = nullptr;
+  {
+    const std::lock_guard<std::mutex> lock(blas_mutex());
+    x = cholmod_solve(CHOLMOD_A, factor_, &rhs, &common_);
+  }
   Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(x->x), b.size());
   cholmod_free_dense(&x, &common_);
   return out;
