@@ -64,8 +64,9 @@ struct FosSettings {
 struct TrialResult {
   double factor = 0.0;
   bool stable = false;
-  // Why: "did not fail within the trial time", "still moving at the end" (end speed above
-  // d / T), "moved beyond the failure displacement", "diverged: ...".
+  // Why: "at rest" (stopped early: nothing sliding, every watched point still),
+  // "did not fail within the trial time", "still moving at the end" (end speed above d / T),
+  // "moved beyond the failure displacement", "diverged: ...".
   std::string verdict;
   double largest_displacement = 0.0;  // m, of the watched points since the trial started
   double end_speed = 0.0;             // m/s, the fastest watched point at the trial's end
