@@ -69,7 +69,10 @@ struct TrialResult {
   // "moved beyond the failure displacement", "diverged: ...".
   std::string verdict;
   double largest_displacement = 0.0;  // m, of the watched points since the trial started
-  double end_speed = 0.0;             // m/s, the fastest watched point at the trial's end
+  // m/s, the fastest watched point at the trial's end, as a mean over a window: its
+  // displacement over the trial's last quarter, or over the last 20 steps when the trial
+  // stopped before that quarter (failing or at rest), divided by the window's time.
+  double end_speed = 0.0;
   double kinetic_peak = 0.0;          // J/m, the largest kinetic energy during the trial
   double kinetic_end = 0.0;           // J/m, at its end
   int steps = 0;
