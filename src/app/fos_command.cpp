@@ -9,6 +9,7 @@
 #include "io/block_picture.hpp"
 #include "io/fos_report.hpp"
 #include "io/scene_reader.hpp"
+#include "solver/energy.hpp"
 #include "solver/run.hpp"
 
 namespace dda {
@@ -62,12 +63,10 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   if (!any_free) throw InputError(scene_path + ": blocks: every block is fixed; nothing can fail");
 
   std::cerr << "dda: consolidating " << scene_path << " at F = " << settings.consolidation_factor << "\n";
-  const bool by_steps = scene.control.steps.has_value();
-  ProgressBar progress(by_steps ? static_cast<double>(*scene.control.steps) : *scene.control.end_time,
-                       by_steps ? "steps" : "s");
+  ProgressBar progress(run_length(scene), run_unit(scene));
   const Consolidation consolidation =
       consolidate(scene, settings.consolidation_factor, [&](const World& w, const RunStats&) {
-        progress.update(by_steps ? static_cast<double>(w.step) : w.time);
+        progress.update(run_position(scene, w));
         return true;
       });
   progress.finish();
@@ -77,8 +76,8 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     return kExitNoFactor;
   }
   const World& world = consolidation.world;
-  ConsolidationInfo info{consolidation.stats.steps, world.time, consolidation.stats.wall_time_s, 0.0};
-  for (const Block& b : world.blocks) info.kinetic_end += b.fixed ? 0.0 : kinetic_energy(b);
+  const ConsolidationInfo info{consolidation.stats.steps, world.time,
+                               consolidation.stats.wall_time_s, scene_energy(world).kinetic};
   settings = resolve_fos_settings(world, settings);
   std::cerr << "dda: trials of " << settings.trial_time << " s, failing beyond "
             << settings.failure_displacement << " m, " << settings.jobs << " at once\n";

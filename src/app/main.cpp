@@ -36,10 +36,6 @@ dda::Scene load_scene(const std::string& path) {
   return dda::read_scene_file(path);
 }
 
-double run_length(const dda::Scene& scene) {
-  return scene.control.steps ? static_cast<double>(*scene.control.steps) : *scene.control.end_time;
-}
-
 int run_command(const std::string& scene_path, const std::string& out_dir) {
   const dda::Scene scene = load_scene(scene_path);
   for (const std::string& warning : scene.warnings) {
@@ -47,11 +43,11 @@ int run_command(const std::string& scene_path, const std::string& out_dir) {
   }
   dda::World world = dda::make_world(scene);
   dda::OutputWriter writer(out_dir, scene);
-  dda::ProgressBar progress(run_length(scene), scene.control.steps ? "steps" : "s");
+  dda::ProgressBar progress(dda::run_length(scene), dda::run_unit(scene));
   const int every = scene.control.output_every;
   const auto observe = [&](const dda::World& w, const dda::RunStats&) {
     if (w.step % every == 0 || dda::is_finished(w)) writer.record(w);
-    progress.update(scene.control.steps ? static_cast<double>(w.step) : w.time);
+    progress.update(dda::run_position(scene, w));
     return true;
   };
   const dda::RunStats stats = dda::run(world, observe);

@@ -5,7 +5,20 @@
 #include <chrono>
 #include <string>
 
+#include "solver/scene.hpp"
+#include "solver/world.hpp"
+
 namespace dda {
+
+// A run's progress in the unit its bar counts: completed steps when the scene gives
+// control.steps, else simulated seconds up to its end time.
+inline double run_length(const Scene& scene) {
+  return scene.control.steps ? static_cast<double>(*scene.control.steps) : *scene.control.end_time;
+}
+inline double run_position(const Scene& scene, const World& world) {
+  return scene.control.steps ? static_cast<double>(world.step) : world.time;
+}
+inline const char* run_unit(const Scene& scene) { return scene.control.steps ? "steps" : "s"; }
 
 class ProgressBar {
  public:

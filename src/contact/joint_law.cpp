@@ -54,6 +54,17 @@ bool coulomb_slip_bond(const Contact& c, const JointLaw& law) {
 
 }  // namespace
 
+const char* joint_law_name(JointLawKind kind) {
+  return kind == JointLawKind::CoulombSlip ? "coulomb_slip" : "brittle_bond";
+}
+
+std::optional<JointLawKind> joint_law_of_name(std::string_view name) {
+  for (JointLawKind k : {JointLawKind::BrittleBond, JointLawKind::CoulombSlip}) {
+    if (name == joint_law_name(k)) return k;
+  }
+  return std::nullopt;
+}
+
 double shear_strength(const Contact& c, const JointLaw& law, double normal_force) {
   const double friction = law.tan_phi * normal_force;
   return c.state.bonded ? friction + law.cohesion * c.length : friction;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 #include "contact/contact.hpp"
 
@@ -29,6 +31,11 @@ struct JointLaw {
   double tensile_strength = 0.0;  // Pa
   JointLawKind kind = JointLawKind::BrittleBond;
 };
+
+// The law's name in scenes, summaries and reports: "brittle_bond" or "coulomb_slip".
+const char* joint_law_name(JointLawKind kind);
+// The law of a name, or nothing for a name that is not a law's.
+std::optional<JointLawKind> joint_law_of_name(std::string_view name);
 
 // The shear force (N per metre) a closed contact can carry at normal force `normal_force`
 // (compression positive): tan(phi) N, plus cohesion x length while bonded (the brittle

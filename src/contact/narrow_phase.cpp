@@ -249,6 +249,16 @@ void polygon_features(const Polygon& poly, PolygonFeatures& out) {
   }
 }
 
+FaceShares face_shares(const Polygon& vp, int v, const Vec2& normal) {
+  const int n = static_cast<int>(vp.size());
+  FaceShares out;
+  for (int w : {wrap(v - 1, n), wrap(v + 1, n)}) {
+    const Vec2 a = vp[w] - vp[v];
+    if (std::abs(a.dot(normal)) <= kWedgeTolerance * a.norm()) out.halves[out.count++] = 0.5 * a;
+  }
+  return out;
+}
+
 void find_contacts(const Polygon& a, int ia, const Polygon& b, int ib, double search_distance,
                    std::vector<ContactCandidate>& out) {
   PolygonFeatures fa, fb;

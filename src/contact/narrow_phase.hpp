@@ -10,6 +10,7 @@
 // of the two outer half-planes: both constrain). Pure functions over plain data.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "kinematics/types.hpp"
@@ -69,6 +70,17 @@ inline constexpr double kCandidateWedgeTolerance = 0.26;
 // on an edge that ends at the paired vertex when it projects farther than this share of the
 // search distance from that end (narrow_phase.cpp says why).
 inline constexpr double kPairClearanceShare = 0.05;
+
+// The share of a face-to-face contact that vertex `v` of `vp` carries: each of its two edges
+// that lies along a contact edge of outward normal `normal` (within kWedgeTolerance) gives
+// its half next to the vertex, as the vector from the vertex to that edge's midpoint. A
+// vertex meeting the edge at an angle (a point contact) carries none. Contact::length is
+// their total length (what cohesion and tensile strength act on); joint water wets them.
+struct FaceShares {
+  int count = 0;
+  std::array<Vec2, 2> halves{Vec2::Zero(), Vec2::Zero()};
+};
+FaceShares face_shares(const Polygon& vp, int v, const Vec2& normal);
 
 // Appends the contacts between polygons a (block ia) and b (block ib), ia < ib, for vertices
 // within `search_distance` of an edge (on either side). Deterministic: the same geometry

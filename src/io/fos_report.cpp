@@ -11,10 +11,6 @@ namespace {
 
 using json = nlohmann::json;
 
-std::string law_name(JointLawKind k) {
-  return k == JointLawKind::CoulombSlip ? "coulomb_slip" : "brittle_bond";
-}
-
 std::string fixed(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, x);
@@ -64,7 +60,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
 
   json laws = json::object();
-  for (const JointMaterial& j : scene.joint_materials) laws[j.name] = law_name(j.law);
+  for (const JointMaterial& j : scene.joint_materials) laws[j.name] = joint_law_name(j.law);
   json trials = json::array();
   for (const TrialResult& t : result.trials) trials.push_back(trial_json(t));
   const json report = {
@@ -108,7 +104,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   if (result.found && !result.message.empty()) md << "Note: " << result.message << "\n\n";
   md << "Strength reduction: tan(phi)/F, c/F and tensile strength/F on every joint"
      << (s.reduce_materials ? " and on plastic blocks' materials" : "") << ". Joint laws:";
-  for (const JointMaterial& j : scene.joint_materials) md << " " << j.name << " (" << law_name(j.law) << ")";
+  for (const JointMaterial& j : scene.joint_materials) md << " " << j.name << " (" << joint_law_name(j.law) << ")";
   md << ".\n\nEach trial starts at rest from the scene consolidated at F = 1 ("
      << consolidation.steps << " steps, " << general(consolidation.time) << " s simulated) and runs "
      << general(s.trial_time) << " s with dynamic coefficient " << general(s.dynamic_coefficient)

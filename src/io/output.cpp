@@ -403,7 +403,7 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
   json settings = settings_json(world);
   json laws = json::object();  // which joint law each joint material uses
   for (const JointMaterial& j : scene_.joint_materials) {
-    laws[j.name] = j.law == JointLawKind::CoulombSlip ? "coulomb_slip" : "brittle_bond";
+    laws[j.name] = joint_law_name(j.law);
   }
   settings["joint_laws"] = laws;
   const json summary = {

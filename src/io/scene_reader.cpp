@@ -176,10 +176,11 @@ JointMaterial read_joint_material(const std::string& name, const Field& f) {
   j.name = name;
   if (auto g = f.optional_member("law")) {
     const std::string law = g->string();
-    if (law != "brittle_bond" && law != "coulomb_slip") {
+    const std::optional<JointLawKind> kind = joint_law_of_name(law);
+    if (!kind) {
       g->fail("unknown joint law \"" + law + "\" (known: \"brittle_bond\", \"coulomb_slip\")");
     }
-    j.law = law == "coulomb_slip" ? JointLawKind::CoulombSlip : JointLawKind::BrittleBond;
+    j.law = *kind;
   }
   // 90 degrees would make tan(phi), the friction coefficient, infinite.
   j.friction_angle = number_in_range(f.member("friction_angle"), 0.0, false, 90.0, true,

@@ -27,6 +27,16 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
   }
 }
 
+// A force (N per metre) at point `at` of block `index`, constant over the step: point loads
+// and joint water. Fixed blocks take none.
+void add_point_force(const World& world, const StepContext& ctx, int index, const Vec2& at,
+                     const Vec2& force, BlockSystem& system) {
+  const Block& b = world.blocks[static_cast<std::size_t>(index)];
+  if (b.fixed) return;
+  const Mat26 tp = step_t(ctx, index).at(at - b.moments.centroid);
+  system.rhs.segment<6>(b.first_dof) += point_force(tp, force);
+}
+
 }  // namespace
 
 std::vector<bool> rigid_rows(const World& world) {
@@ -54,16 +64,10 @@ void assemble(const World& world, const StepContext& ctx, BlockSystem& system) {
     system.rhs.segment<6>(b.first_dof) += spring_force(tp, ctx.penalty, pin.anchor - pin.current);
   }
   for (const PointLoad& load : world.loads) {
-    const Block& b = world.blocks[load.block];
-    if (b.fixed) continue;
-    const Mat26 tp = step_t(ctx, load.block).at(load.current - b.moments.centroid);
-    system.rhs.segment<6>(b.first_dof) += point_force(tp, load.force);
+    add_point_force(world, ctx, load.block, load.current, load.force, system);
   }
   for (const BlockForce& w : world.water_forces) {
-    const Block& b = world.blocks[static_cast<std::size_t>(w.block)];
-    if (b.fixed) continue;
-    const Mat26 tp = step_t(ctx, w.block).at(w.point - b.moments.centroid);
-    system.rhs.segment<6>(b.first_dof) += point_force(tp, w.force);
+    add_point_force(world, ctx, w.block, w.point, w.force, system);
   }
 }
 

@@ -6,20 +6,17 @@
 
 #include "contact/broad_phase.hpp"
 #include "contact/carry_over.hpp"
+#include "contact/narrow_phase.hpp"
 
 namespace dda {
 namespace {
 
-// The share of a face-to-face contact this vertex carries: half of each of its two edges
-// that lies along the contact edge (within the entrance tolerance). A vertex meeting the edge
-// at an angle (a point contact) carries no length, so no cohesion or tensile strength.
+// The length of the face share this vertex carries (narrow_phase.hpp, face_shares): a point
+// contact carries none, so no cohesion or tensile strength.
 double contact_length(const Polygon& vp, int v, const Vec2& edge_normal) {
-  const int n = static_cast<int>(vp.size());
+  const FaceShares shares = face_shares(vp, v, edge_normal);
   double length = 0.0;
-  for (int w : {(v + n - 1) % n, (v + 1) % n}) {
-    const Vec2 a = vp[w] - vp[v];
-    if (std::abs(a.dot(edge_normal)) <= kWedgeTolerance * a.norm()) length += 0.5 * a.norm();
-  }
+  for (int k = 0; k < shares.count; ++k) length += shares.halves[static_cast<std::size_t>(k)].norm();
   return length;
 }
 

@@ -108,18 +108,18 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     const Mat26 tp = step_t(ctx, pin.block).at(pin.current - b.moments.centroid);
     s.damping_dissipation += 0.5 * ctx.penalty * (tp * d.segment<6>(b.first_dof)).squaredNorm();
   }
+  // A constant force at a material point: its work on the point's motion (point loads and
+  // joint water, both held over the step).
+  auto point_force_work = [&](int index, const Vec2& at, const Vec2& force) {
+    const Block& b = world.blocks[static_cast<std::size_t>(index)];
+    if (b.fixed) return 0.0;
+    const Mat26 tp = step_t(ctx, index).at(at - b.moments.centroid);
+    return force.dot(tp * d.segment<6>(b.first_dof));
+  };
   for (const PointLoad& load : world.loads) {
-    const Block& b = world.blocks[static_cast<std::size_t>(load.block)];
-    if (b.fixed) continue;
-    const Mat26 tp = step_t(ctx, load.block).at(load.current - b.moments.centroid);
-    s.load_work += load.force.dot(tp * d.segment<6>(b.first_dof));
+    s.load_work += point_force_work(load.block, load.current, load.force);
   }
-  for (const BlockForce& w : world.water_forces) {  // joint water: constant over the step
-    const Block& b = world.blocks[static_cast<std::size_t>(w.block)];
-    if (b.fixed) continue;
-    const Mat26 tp = step_t(ctx, w.block).at(w.point - b.moments.centroid);
-    s.load_work += w.force.dot(tp * d.segment<6>(b.first_dof));
-  }
+  for (const BlockForce& w : world.water_forces) s.load_work += point_force_work(w.block, w.point, w.force);
   auto suspect = [&s](const Contact& c, double energy) {
     if (energy <= 0.0) return;
     s.suspects.push_back({c.key, energy});

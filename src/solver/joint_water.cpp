@@ -94,26 +94,25 @@ std::vector<BlockForce> joint_water_forces(const WaterTable& water,
     const int b = std::max(c.key.vertex_block, c.key.edge_block);
     const Vec2 n = c.key.vertex_block == a ? c.normal : Vec2(-c.normal);  // pushes a off b
     const Polygon& vp = *polygons[static_cast<std::size_t>(c.key.vertex_block)];
-    const int count = static_cast<int>(vp.size());
-    const int v = c.key.vertex;
-    for (int w : {(v + count - 1) % count, (v + 1) % count}) {
-      const Vec2 along = vp[w] - vp[v];
-      // The same test as the contact's length share (contact_detection.cpp).
-      if (std::abs(along.dot(c.normal)) > kWedgeTolerance * along.norm()) continue;
+    const Vec2& p = vp[static_cast<std::size_t>(c.key.vertex)];
+    // The same share as the contact's length (and its cohesion).
+    const FaceShares shares = face_shares(vp, c.key.vertex, c.normal);
+    for (int k = 0; k < shares.count; ++k) {
+      const Vec2& half = shares.halves[static_cast<std::size_t>(k)];
       Face* face = nullptr;
       for (Face& f : faces) {
         if (f.a == a && f.b == b && f.normal.dot(n) > std::cos(kWedgeTolerance) &&
-            std::abs(f.normal.dot(vp[v]) - f.offset) <= face_tolerance) {
+            std::abs(f.normal.dot(p) - f.offset) <= face_tolerance) {
           face = &f;
           break;
         }
       }
       if (face == nullptr) {
-        faces.push_back({a, b, n, n.dot(vp[v]), {}});
+        faces.push_back({a, b, n, n.dot(p), {}});
         face = &faces.back();
       }
       const Vec2 t(-face->normal.y(), face->normal.x());
-      const double s0 = t.dot(vp[v]), s1 = t.dot(vp[v] + 0.5 * along);
+      const double s0 = t.dot(p), s1 = t.dot(p + half);
       face->covered.emplace_back(std::min(s0, s1), std::max(s0, s1));
     }
   }

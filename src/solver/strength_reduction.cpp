@@ -8,15 +8,14 @@
 #include <optional>
 #include <thread>
 
-#include "kinematics/block_matrices.hpp"
 #include "solver/run.hpp"
 #include "solver/step.hpp"
 
 namespace dda {
 namespace {
 
-// The at-rest test of a trial (run_trial): this many quiet steps in a row, each with every
-// watched point slower than this share of the creep speed d / T.
+// The at-rest test of a trial (run_trial): over a window of this many steps, every watched
+// point moved at less than this share of the creep speed d / T.
 constexpr int kRestSteps = 20;
 constexpr double kRestSpeedShare = 0.01;
 
@@ -24,29 +23,17 @@ double reduced_angle_deg(double angle_deg, double factor) {
   return std::atan(std::tan(angle_deg * M_PI / 180.0) / factor) * 180.0 / M_PI;
 }
 
-// The points a trial watches and where they are: the monitors when the scene has any (the
-// user's choice of what failing means), else the centroid of every free block.
-struct Watched {
-  std::vector<Vec2> positions;
-  std::vector<Vec2> velocities;
-};
-
-Watched watched_points(const World& w) {
-  Watched out;
+// Where the points a trial watches are: the monitors when the scene has any (the user's
+// choice of what failing means), else the centroid of every free block. (Their speeds are
+// taken from these positions over windows of steps, run_trial.)
+std::vector<Vec2> watched_points(const World& w) {
+  std::vector<Vec2> out;
   if (!w.monitors.empty()) {
-    const LinearT t = shi_t();
-    for (const Monitor& m : w.monitors) {
-      const Block& b = w.blocks[static_cast<std::size_t>(m.block)];
-      out.positions.push_back(m.current);
-      out.velocities.push_back(b.fixed ? Vec2(Vec2::Zero())
-                                       : Vec2(t.at(m.current - b.moments.centroid) * b.velocity));
-    }
+    for (const Monitor& m : w.monitors) out.push_back(m.current);
     return out;
   }
   for (const Block& b : w.blocks) {
-    if (b.fixed) continue;
-    out.positions.push_back(b.moments.centroid);
-    out.velocities.push_back(b.velocity.head<2>());
+    if (!b.fixed) out.push_back(b.moments.centroid);
   }
   return out;
 }
@@ -182,7 +169,7 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
   // that ended dynamic must not hand its motion to the verdict.
   for (Block& b : w.blocks) b.velocity.setZero();
 
-  const std::vector<Vec2> start_points = watched_points(w).positions;
+  const std::vector<Vec2> start_points = watched_points(w);
   // A step count far beyond what the trial time needs (step cuts shorten steps) bounds the
   // trial even if the time step collapses.
   const double dt = *std::min_element(w.control.time_steps.begin(), w.control.time_steps.end());
@@ -215,10 +202,10 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
       break;
     }
     ++r.steps;
-    const Watched now = watched_points(w);
+    const std::vector<Vec2> now = watched_points(w);
     const double elapsed = w.time - consolidated.time;
     for (std::size_t i = 0; i < start_points.size(); ++i) {
-      const double u = (now.positions[i] - start_points[i]).norm();
+      const double u = (now[i] - start_points[i]).norm();
       if (u > r.largest_displacement) {
         r.largest_displacement = u;
         r.watched_point = static_cast<int>(i);
@@ -230,7 +217,7 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
       break;
     }
     if (late_points.empty() && elapsed >= 0.75 * s.trial_time) {
-      late_points = now.positions;
+      late_points = now;
       late_time = elapsed;
     }
     // At rest: after a quarter of the trial time, every watched point moved over the last
@@ -238,26 +225,26 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
     // repeat the same state.
     const std::size_t slot = static_cast<std::size_t>(r.steps % kRestSteps);
     if (r.steps > kRestSteps && elapsed >= 0.25 * s.trial_time &&
-        window_speed(ring[slot], now.positions, elapsed - ring_time[slot]) <
+        window_speed(ring[slot], now, elapsed - ring_time[slot]) <
             kRestSpeedShare * creep_speed) {
       at_rest = true;
       break;
     }
-    ring[slot] = now.positions;
+    ring[slot] = now;
     ring_time[slot] = elapsed;
   }
-  const Watched end = watched_points(w);
+  const std::vector<Vec2> end = watched_points(w);
   r.kinetic_end = total_kinetic(w);
   r.simulated_time = w.time - consolidated.time;
   // The end speed: over the trial's last quarter (or over the last kRestSteps steps when it
   // stopped at rest or early).
   if (!late_points.empty() && r.simulated_time > late_time) {
-    r.end_speed = window_speed(late_points, end.positions, r.simulated_time - late_time);
+    r.end_speed = window_speed(late_points, end, r.simulated_time - late_time);
   } else if (r.steps > kRestSteps) {
     const std::size_t slot = static_cast<std::size_t>(r.steps % kRestSteps);
-    r.end_speed = window_speed(ring[slot], end.positions, r.simulated_time - ring_time[slot]);
+    r.end_speed = window_speed(ring[slot], end, r.simulated_time - ring_time[slot]);
   } else if (r.simulated_time > 0.0) {
-    r.end_speed = window_speed(start_points, end.positions, r.simulated_time);
+    r.end_speed = window_speed(start_points, end, r.simulated_time);
   }
   if (!r.verdict.empty()) {
     r.stable = false;  // diverged
