@@ -82,6 +82,49 @@ TEST_CASE("Goodman and Bray's toppling example: limiting friction 38.15 and the 
   check_published(topple_factor(s, 45.0), 1.27, 2);
 }
 
+TEST_CASE("DDA strength reduction finds Goodman and Bray's toppling factor with the interface "
+          "friction it mobilises, and their modes",
+          "[slope]") {
+  // The tabular method puts limiting friction on every column interface; where neighbours do
+  // not slip against each other (two sliding columns, the lowest toppling column over the
+  // highest sliding one) a rigid-block model carries less, and its factor is the tabular
+  // method's with the shares it carries (README "Toppling: the interface that does not
+  // slip"). Measured: shares 0.947 (2|3) and 0.884 (3|4), every other interface at the limit;
+  // that tabular factor 1.2488, DDA 1.2490, against 1.2730 with limiting friction everywhere.
+  const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
+  const SlopeCase& c = find_case(cases, "toppling");
+  const CaseResult r = run_case(c, RunOptions{}, {});
+  INFO("DDA " << r.factor << " in [" << r.last_stable << ", " << r.first_failing << "], LE "
+              << c.le_factor << ", LE with DDA's interface friction " << r.le_mobilised
+              << ", allowed " << r.allowed);
+  REQUIRE(r.found);
+  REQUIRE(r.interface_shares.size() == 15);
+  CHECK(r.pass);  // |DDA - LE with the mobilised shares| <= tolerance / 2 + resolution
+  CHECK(r.first_failing >= r.le_mobilised - 1e-9);
+  // The tabular method's own modes at its limit: columns 1-3 slide, 4-13 topple. Every
+  // interface where both neighbours topple slips, so DDA carries the limit there: a sliding
+  // contact's friction is tan phi times the normal force of the open-close loop's previous
+  // solve (the loop stops when modes stop changing, not forces), measured 5e-6 to 8e-6 below
+  // the final one, hence 1e-4; only the interfaces of no relative slip, 1|2,
+  // 2|3 and 3|4, may carry less, and they bring DDA below the tabular factor.
+  for (std::size_t k = 3; k < 12; ++k) {
+    INFO("interface " << k + 1 << "|" << k + 2);
+    CHECK(r.interface_shares[k] == Approx(1.0).epsilon(1e-4));
+  }
+  CHECK(r.le_mobilised < c.le_factor);
+  // The mechanism: each column's mode at the first failing trial is the tabular method's.
+  REQUIRE(r.columns.size() == 16);
+  for (const ColumnMotion& m : r.columns) {
+    INFO("column " << m.column);
+    CHECK(m.mode == m.le_mode);
+  }
+  // The verdicts are monotone: every scanned trial below the first failing F is stable.
+  for (const auto& p : r.scan) {
+    INFO("F " << p.factor);
+    CHECK(p.stable == (p.factor < r.first_failing - 1e-9 && p.factor <= r.last_stable + 1e-9));
+  }
+}
+
 TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the planar block, the "
           "tension-crack slope dry and with water, and the active-passive wedges",
           "[slope]") {

@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
                       "Simulated time of a trial (s); default: resolves 0.002 g")
       ->check(CLI::PositiveNumber);
   fos_app->add_option("--dynamic-coefficient", fos.dynamic_coefficient,
-                      "Velocity carried between the trial's steps")->capture_default_str()
+                      "Velocity carried between the trial's steps (0: static trials, 1: dynamic)")->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
   fos_app->add_flag("--reduce-materials", fos.reduce_materials,
                     "Also divide plastic blocks' strengths by F");

@@ -104,6 +104,9 @@ ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
 bool change_allowed(const Contact& c, const ContactDecision& next, int free_changes) {
   if (c.iterate.mode_changes < free_changes) return true;
   if (next.bonded != c.state.bonded) return true;  // a bond breaks for good
+  // A locked contact whose shear passes its strength always slides: held locked, nothing
+  // would bound its shear (docs/contacts.md, "Chatter").
+  if (c.state.mode == ContactMode::Lock && next.mode == ContactMode::Slide) return true;
   // ContactMode is ordered Open < Slide < Lock.
   return static_cast<int>(next.mode) > static_cast<int>(c.state.mode);
 }
@@ -116,11 +119,15 @@ bool change_within_resolution(const Contact& c, const ContactDecision& next,
   if (c.state.bonded != next.bonded) return false;
   if (c.state.bonded && law.kind != JointLawKind::CoulombSlip) return false;
   if (c.state.mode == ContactMode::Open) return -trial.new_gap <= resolution;  // closing
-  if (next.mode == ContactMode::Open) return trial.new_gap <= resolution;  // opening
-  if (c.state.mode == ContactMode::Lock) {  // lock -> slide
-    return std::abs(trial.shear_force) - shear_strength(c, law, trial.normal_force) <=
-           ks * resolution;
+  // A locked contact left locked for the step keeps its shear spring: only if that spring
+  // is within the resolution of its strength, whether it is to slide or to open (a heel
+  // that lifts by nanometres must not keep a shear spring with no normal force).
+  if (c.state.mode == ContactMode::Lock &&
+      std::abs(trial.shear_force) - shear_strength(c, law, trial.normal_force) > ks * resolution) {
+    return false;
   }
+  if (next.mode == ContactMode::Open) return trial.new_gap <= resolution;  // opening
+  if (c.state.mode == ContactMode::Lock) return true;                      // lock -> slide
   return std::abs(trial.slip) <= resolution;  // sliding: its slip reversed
 }
 

@@ -18,6 +18,9 @@ namespace {
 // point moved at less than this share of the creep speed d / T.
 constexpr int kRestSteps = 20;
 constexpr double kRestSpeedShare = 0.01;
+// A damped trial fails early when, after a quarter of its time, a watched point moves over
+// that window at more than this multiple of the speed limit.
+constexpr double kFailSpeedShare = 4.0;
 
 double reduced_angle_deg(double angle_deg, double factor) {
   return std::atan(std::tan(angle_deg * M_PI / 180.0) / factor) * 180.0 / M_PI;
@@ -176,20 +179,34 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
   const long step_cap = 20L * static_cast<long>(std::ceil(s.trial_time / dt)) + 100;
   StepWorkspace ws;
   RunStats stats;
-  bool moved_too_far = false, at_rest = false;
+  bool moved_too_far = false, at_rest = false, moving_fast = false;
   // A point still moving faster than d / T would pass the failure displacement within
   // another trial time: the slope has not come to rest, it is failing slowly. Speeds are
   // taken as displacements over a window of steps, not from the blocks' velocities: rigid
   // blocks on penalty springs keep vibrating at centimetres per second in a slope that
   // stands (measured on models/slope-fos.json at F = 1: 2.6 cm/s after 1 s, against a creep
   // speed of 3.5 cm/s, with 0.5 mm of displacement), and the vibration averages out.
+  // A damped trial (dynamic coefficient k < 1) carries only k of each step's velocity, so a
+  // mechanism whose out-of-balance force accelerates it at a settles to a steady speed: per
+  // step v' = k v + a dt, hence v = a dt / (1 - k), and a mean speed over the step of
+  // a dt (1 + k) / (2 (1 - k)) (a dt / 2 from rest in a static trial, k = 0). Its speed
+  // limit is that of a mechanism at detect_acceleration g, over the window's mean step.
   const double creep_speed = s.failure_displacement / s.trial_time;
-  // Positions and times of the last kRestSteps steps (a ring), and the positions a quarter
-  // of the trial time before its end.
+  const double k = s.dynamic_coefficient;
+  const double g = consolidated.gravity.norm();
+  const auto speed_limit = [&](double window_time, long window_steps) {
+    if (k >= 1.0 || window_steps <= 0) return creep_speed;
+    const double mean_dt = window_time / static_cast<double>(window_steps);
+    return s.detect_acceleration * g * mean_dt * (1.0 + k) / (2.0 * (1.0 - k));
+  };
+  // Positions, times and step counts of the last kRestSteps steps (a ring), and the
+  // positions a quarter of the trial time before its end.
   std::vector<std::vector<Vec2>> ring(kRestSteps);
   std::vector<double> ring_time(kRestSteps, 0.0);
+  std::vector<long> ring_step(kRestSteps, 0);
   std::vector<Vec2> late_points;
   double late_time = 0.0;
+  long late_step = 0;
   auto window_speed = [](const std::vector<Vec2>& from, const std::vector<Vec2>& to, double dt_window) {
     double fastest = 0.0;
     for (std::size_t i = 0; i < from.size(); ++i) fastest = std::max(fastest, (to[i] - from[i]).norm());
@@ -219,19 +236,31 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
     if (late_points.empty() && elapsed >= 0.75 * s.trial_time) {
       late_points = now;
       late_time = elapsed;
+      late_step = r.steps;
     }
     // At rest: after a quarter of the trial time, every watched point moved over the last
-    // kRestSteps steps at less than 1 % of the creep speed. The rest of the trial would
+    // kRestSteps steps at less than 1 % of the speed limit. The rest of the trial would
     // repeat the same state.
     const std::size_t slot = static_cast<std::size_t>(r.steps % kRestSteps);
-    if (r.steps > kRestSteps && elapsed >= 0.25 * s.trial_time &&
-        window_speed(ring[slot], now, elapsed - ring_time[slot]) <
-            kRestSpeedShare * creep_speed) {
-      at_rest = true;
-      break;
+    if (r.steps > kRestSteps && elapsed >= 0.25 * s.trial_time) {
+      const double window_time = elapsed - ring_time[slot];
+      const double limit = speed_limit(window_time, r.steps - ring_step[slot]);
+      const double speed = window_speed(ring[slot], now, window_time);
+      if (speed < kRestSpeedShare * limit) {
+        at_rest = true;
+        break;
+      }
+      // A damped trial has no inertia to carry it through a pause: a mechanism that moves
+      // at several times the limit after a quarter of the trial time is failing, and the
+      // rest of the trial would only repeat that.
+      if (k < 1.0 && speed > kFailSpeedShare * limit) {
+        moving_fast = true;
+        break;
+      }
     }
     ring[slot] = now;
     ring_time[slot] = elapsed;
+    ring_step[slot] = r.steps;
   }
   const std::vector<Vec2> end = watched_points(w);
   r.kinetic_end = total_kinetic(w);
@@ -240,18 +269,24 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
   // stopped at rest or early).
   if (!late_points.empty() && r.simulated_time > late_time) {
     r.end_speed = window_speed(late_points, end, r.simulated_time - late_time);
+    r.end_speed_limit = speed_limit(r.simulated_time - late_time, r.steps - late_step);
   } else if (r.steps > kRestSteps) {
     const std::size_t slot = static_cast<std::size_t>(r.steps % kRestSteps);
     r.end_speed = window_speed(ring[slot], end, r.simulated_time - ring_time[slot]);
+    r.end_speed_limit = speed_limit(r.simulated_time - ring_time[slot], r.steps - ring_step[slot]);
   } else if (r.simulated_time > 0.0) {
     r.end_speed = window_speed(start_points, end, r.simulated_time);
+    r.end_speed_limit = speed_limit(r.simulated_time, r.steps);
   }
   if (!r.verdict.empty()) {
     r.stable = false;  // diverged
   } else if (moved_too_far) {
     r.stable = false;
     r.verdict = "moved beyond the failure displacement";
-  } else if (r.end_speed > creep_speed) {
+  } else if (moving_fast) {
+    r.stable = false;
+    r.verdict = "moving faster than the speed limit";
+  } else if (r.end_speed > r.end_speed_limit) {
     r.stable = false;
     r.verdict = "still moving at the end";
   } else {

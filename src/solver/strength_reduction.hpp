@@ -48,8 +48,10 @@ struct FosSettings {
   // of its driving force by 0.4 % accelerates at 0.002 g (docs/factor-of-safety.md).
   double detect_acceleration = 0.002;
   // Share of the velocity carried from step to step in a trial (the scene's own
-  // dynamic_coefficient applies to the consolidation only). 1: dynamic.
-  double dynamic_coefficient = 1.0;
+  // dynamic_coefficient applies to the consolidation only), range [0, 1]. 0 (default):
+  // static trials, as strength reduction asks for the static limit; 1: dynamic
+  // (docs/factor-of-safety.md, "Static or dynamic trials").
+  double dynamic_coefficient = 0.0;
   // Also reduce the strengths of plastic blocks' materials.
   bool reduce_materials = false;
   // Trials run at once (threads): the search evaluates this many factors per round.
@@ -65,7 +67,8 @@ struct TrialResult {
   double factor = 0.0;
   bool stable = false;
   // Why: "at rest" (stopped early: nothing sliding, every watched point still),
-  // "did not fail within the trial time", "still moving at the end" (end speed above d / T),
+  // "did not fail within the trial time", "still moving at the end" (end speed above
+  // end_speed_limit), "moving faster than the speed limit" (a damped trial, stopped early),
   // "moved beyond the failure displacement", "diverged: ...".
   std::string verdict;
   double largest_displacement = 0.0;  // m, of the watched points since the trial started
@@ -73,6 +76,10 @@ struct TrialResult {
   // displacement over the trial's last quarter, or over the last 20 steps when the trial
   // stopped before that quarter (failing or at rest), divided by the window's time.
   double end_speed = 0.0;
+  // m/s, the speed above which the end speed means failing: d / T in a dynamic trial; in a
+  // damped one (dynamic coefficient k < 1) the steady speed of a mechanism accelerating at
+  // detect_acceleration g, a g dt (1 + k) / (2 (1 - k)) over the window's mean step dt.
+  double end_speed_limit = 0.0;
   double kinetic_peak = 0.0;          // J/m, the largest kinetic energy during the trial
   double kinetic_end = 0.0;           // J/m, at its end
   int steps = 0;

@@ -116,12 +116,25 @@ std::string mode_name(ColumnMode m) {
 //    (the upper side's friction acts dx from the corner; the lower side's passes through it).
 //  - Sliding on its base: along and across the base, with the base's S = R tan phi and both
 //    sides' frictions, P_(n-1),s = P_n - W (cos psi tan phi - sin psi) / (1 - tan^2 phi).
+// Goodman and Bray put the limiting friction P tan phi on every side. With a share s <= 1 of
+// it on an interface (`interface_shares`, README "Toppling: the interface that does not
+// slip"), t_u = s_n tan phi on column n's upper side and t_l = s_(n-1) tan phi on its lower
+// side: the same balances give
+//    P_(n-1),t = [P_n (M_n - dx t_u) + W/2 (y sin psi - dx cos psi)] / L_n,
+//    P_(n-1),s = [P_n (1 - tan phi t_u) + W (sin psi - cos psi tan phi)] / (1 - tan phi t_l),
+// which are the two above when both shares are 1.
 // From the top: columns that neither topple nor slide without load (both negative) pass
 // P = 0 down; from the first that topples, each passes the larger of the two, until sliding
 // needs more than toppling: from there down all slide. P_0 is what the toe would need.
-ToppleSolution topple_at(const ToppleSlope& s, double friction_angle) {
+ToppleSolution topple_at(const ToppleSlope& s, double friction_angle,
+                         const std::vector<double>& interface_shares) {
   const std::vector<double> y = column_heights(s);
   const double t = std::tan(rad(friction_angle));
+  // The share on the interface between columns n and n + 1 (1 where none is given).
+  const auto share = [&](int n) {
+    const auto i = static_cast<std::size_t>(n - 1);
+    return n >= 1 && i < interface_shares.size() ? interface_shares[i] : 1.0;
+  };
   const double sp = std::sin(rad(s.base_dip)), cp = std::cos(rad(s.base_dip));
   ToppleSolution out;
   out.modes.assign(y.size(), ColumnMode::Stable);
@@ -133,8 +146,9 @@ ToppleSolution topple_at(const ToppleSlope& s, double friction_angle) {
     const double w = s.unit_weight * h * s.width;
     const double m = n < s.crest_column ? h : h - s.a2;
     const double l = n > s.crest_column ? h : h - s.a1;
-    const double topple = (p * (m - s.width * t) + 0.5 * w * (h * sp - s.width * cp)) / l;
-    const double slide = p - w * (cp * t - sp) / (1.0 - t * t);
+    const double t_upper = share(n) * t, t_lower = share(n - 1) * t;
+    const double topple = (p * (m - s.width * t_upper) + 0.5 * w * (h * sp - s.width * cp)) / l;
+    const double slide = (p * (1.0 - t * t_upper) + w * (sp - cp * t)) / (1.0 - t * t_lower);
     ColumnMode mode;
     double below;
     if (regime == ColumnMode::Stable && topple <= 0.0 && slide <= 0.0) {
@@ -156,13 +170,13 @@ ToppleSolution topple_at(const ToppleSlope& s, double friction_angle) {
   return out;
 }
 
-double limiting_friction_angle(const ToppleSlope& s) {
+double limiting_friction_angle(const ToppleSlope& s, const std::vector<double>& interface_shares) {
   // P_0 falls as phi rises; bisection between a friction too small to hold anything and one
   // that holds every column.
   double lo = 1.0, hi = 80.0;
   for (int i = 0; i < 200; ++i) {
     const double mid = 0.5 * (lo + hi);
-    if (topple_at(s, mid).toe_force > 0.0) {
+    if (topple_at(s, mid, interface_shares).toe_force > 0.0) {
       lo = mid;
     } else {
       hi = mid;
@@ -171,8 +185,9 @@ double limiting_friction_angle(const ToppleSlope& s) {
   return 0.5 * (lo + hi);
 }
 
-double topple_factor(const ToppleSlope& s, double friction_angle) {
-  return std::tan(rad(friction_angle)) / std::tan(rad(limiting_friction_angle(s)));
+double topple_factor(const ToppleSlope& s, double friction_angle,
+                     const std::vector<double>& interface_shares) {
+  return std::tan(rad(friction_angle)) / std::tan(rad(limiting_friction_angle(s, interface_shares)));
 }
 
 }  // namespace dda::slope

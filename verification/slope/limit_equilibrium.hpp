@@ -87,12 +87,17 @@ struct ToppleSolution {
   std::vector<double> forces;     // P_n on the upper side of each column, kN/m
 };
 // The tabular method from the top column down at friction angle phi (degrees) on every
-// surface (bases and column sides).
-ToppleSolution topple_at(const ToppleSlope& s, double friction_angle);
+// surface (bases and column sides). `interface_shares` (optional): element n - 1 is the
+// share of the limiting friction on the interface between columns n and n + 1 (1, Goodman
+// and Bray's assumption, where it is not given).
+ToppleSolution topple_at(const ToppleSlope& s, double friction_angle,
+                         const std::vector<double>& interface_shares = {});
 // The friction angle at which P_0 = 0 (bisection), degrees.
-double limiting_friction_angle(const ToppleSlope& s);
+double limiting_friction_angle(const ToppleSlope& s,
+                               const std::vector<double>& interface_shares = {});
 // The strength-reduction factor at friction angle phi: tan(phi) / tan(phi_limit).
-double topple_factor(const ToppleSlope& s, double friction_angle);
+double topple_factor(const ToppleSlope& s, double friction_angle,
+                     const std::vector<double>& interface_shares = {});
 
 // The F at which `out_of_balance(F)` (increasing in F through 0 at the factor of safety)
 // reaches `force`: the verdict's resolution (README "Tolerances"). Bisection on [lo, hi].

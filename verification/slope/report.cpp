@@ -62,6 +62,9 @@ json case_json(const SlopeCase& c, const CaseResult& r) {
                       {"top_move", m.top_move}, {"mode", m.mode}, {"le_mode", m.le_mode}});
     }
     j["columns"] = cols;
+    j["interface_shares"] = r.interface_shares;
+    j["le_mobilised_factor"] = r.le_mobilised;
+    j["error_mobilised"] = r.error_mobilised;
   }
   if (!r.scan.empty()) {
     json scan = json::array();
@@ -78,10 +81,11 @@ std::string markdown(const RunInfo& info, const std::vector<SlopeCase>& cases,
   md << (info.smoke ? "Smoke run (a subset, search tolerance " + fixed(info.tolerance, 3) +
                           "; not the verification itself).\n\n"
                     : "Full run, search tolerance " + fixed(info.tolerance, 3) + ".\n\n");
-  md << "Trials on " << info.jobs << " threads; a trial fails when a free block's centroid moves "
-        "beyond the failure displacement or still moves faster than d/T at its end "
-        "(detect_acceleration " << info.detect_acceleration << "). Allowed error = tolerance/2 + "
-        "resolution (README \"Tolerances\"). Total wall time " << fixed(info.wall_s, 1) << " s.\n\n";
+  md << "Static trials on " << info.jobs << " threads; a trial fails when a free block's centroid "
+        "still moves at its end faster than a mechanism accelerating at detect_acceleration g ("
+     << info.detect_acceleration << ") would in static steps, or moves beyond the failure "
+        "displacement. Allowed error = tolerance/2 + resolution (README \"Tolerances\"). Total "
+        "wall time " << fixed(info.wall_s, 1) << " s.\n\n";
   md << "| case | LE | published | DDA | bracket | error | allowed | status | wall (s) | trials |\n";
   md << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -113,18 +117,28 @@ std::string markdown(const RunInfo& info, const std::vector<SlopeCase>& cases,
     if (r.columns.empty()) continue;
     md << "\n## " << cases[i].name << ": columns at the first failing trial (F = "
        << fixed(r.first_failing, 4) << ")\n\n";
+    md << "Share of the limiting friction on each column interface (n | n+1) at the end of that "
+          "trial:";
+    for (std::size_t k = 0; k < r.interface_shares.size(); ++k) {
+      md << (k == 0 ? " " : ", ") << k + 1 << "|" << k + 2 << " " << fixed(r.interface_shares[k], 3);
+    }
+    md << ". The tabular method with these shares gives " << fixed(r.le_mobilised, 4)
+       << "; DDA's factor differs from it by " << fixed(r.error_mobilised, 4) << " (allowed "
+       << fixed(r.allowed, 4) << "), and from the tabular method with limiting friction on every "
+          "interface by " << fixed(r.error, 4) << " (README \"Toppling: the interface that does not "
+          "slip\").\n\n";
     md << "| column | rotation (deg) | base corner moved (m) | top corner moved (m) | DDA mode | LE mode |\n";
     md << "|---|---|---|---|---|---|\n";
     for (const ColumnMotion& m : r.columns) {
-      md << "| " << m.column << " | " << fixed(m.rotation_deg, 3) << " | " << fixed(m.base_slip, 3)
-         << " | " << fixed(m.top_move, 3) << " | " << m.mode << " | " << m.le_mode << " |\n";
+      md << "| " << m.column << " | " << fixed(m.rotation_deg, 5) << " | " << fixed(m.base_slip, 6)
+         << " | " << fixed(m.top_move, 6) << " | " << m.mode << " | " << m.le_mode << " |\n";
     }
     if (r.scan.empty()) continue;
     md << "\nTrials every 0.05 below the search's first failing F (is the verdict monotone?):\n\n";
     md << "| F | verdict | largest displacement (m) |\n|---|---|---|\n";
     for (const auto& p : r.scan) {
       md << "| " << fixed(p.factor, 2) << " | " << (p.stable ? "stable" : "FAILS") << " | "
-         << fixed(p.moved, 3) << " |\n";
+         << fixed(p.moved, 6) << " |\n";
     }
   }
   return md.str();

@@ -9,6 +9,7 @@
 #include "solver/run.hpp"
 #include "solver/strength_reduction.hpp"
 #include "solver/world.hpp"
+#include "contact/contact.hpp"
 
 namespace dda::slope {
 namespace {
@@ -50,6 +51,26 @@ std::vector<ColumnMotion> column_motions(const SlopeCase& c, const World& before
     } else {
       m.mode = m.base_slip >= 0.5 * m.top_move ? "slide" : "topple";
     }
+  }
+  return out;
+}
+
+// The share of the limiting friction on each interface between neighbouring columns, from
+// the contacts of `w` (a trial at factor F on joints of friction kToppleFriction / F).
+std::vector<double> interface_shares(const SlopeCase& c, const World& w, double factor) {
+  const double tan_phi = std::tan(kToppleFriction * 3.14159265358979323846 / 180.0) / factor;
+  std::vector<double> out;
+  for (std::size_t k = 0; k + 1 < c.columns.size(); ++k) {
+    const int lower = c.columns[k], upper = c.columns[k + 1];
+    double normal = 0.0, shear = 0.0;
+    for (const Contact& ct : w.contacts) {
+      const int a = ct.key.vertex_block, b = ct.key.edge_block;
+      if (ct.state.mode == ContactMode::Open) continue;
+      if (!((a == lower && b == upper) || (a == upper && b == lower))) continue;
+      normal += ct.state.normal_force;
+      shear += std::abs(ct.iterate.shear_force);
+    }
+    out.push_back(normal > 0.0 ? std::min(1.0, shear / (tan_phi * normal)) : 1.0);
   }
   return out;
 }
@@ -118,7 +139,13 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
   for (const TrialResult& t : fos.trials) {
     if (t.factor != fos.first_failing || t.stable) continue;
     for (const Block& b : t.world.blocks) r.after.push_back(b.vertices);
-    if (!c.columns.empty()) r.columns = column_motions(c, world, t.world);
+    if (!c.columns.empty()) {
+      r.columns = column_motions(c, world, t.world);
+      r.interface_shares = interface_shares(c, t.world, t.factor);
+      r.le_mobilised = topple_factor(goodman_bray_slope(), kToppleFriction, r.interface_shares);
+      r.error_mobilised = r.factor - r.le_mobilised;
+      r.pass = std::abs(r.error_mobilised) <= r.allowed;
+    }
     break;
   }
   if (!c.columns.empty()) {

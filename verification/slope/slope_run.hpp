@@ -44,6 +44,14 @@ struct CaseResult {
   std::vector<Polygon> before, after;
   std::vector<bool> fixed;
   std::vector<ColumnMotion> columns;  // toppling only
+  // Toppling only (README "Toppling: the interface that does not slip"): the share of the
+  // limiting friction each column interface (columns n, n + 1: element n - 1) carries at the
+  // end of the first failing trial, sum |S| / (tan phi_F sum N) over its contacts (1 where
+  // it carries no normal force); the tabular method's factor with those shares; DDA's
+  // factor less that one. The case passes when that difference is within `allowed`.
+  std::vector<double> interface_shares;
+  double le_mobilised = 0.0;
+  double error_mobilised = 0.0;
   // Toppling only: trials every 0.05 in F from 1 up to the search's first failing F, to see
   // whether the verdicts are monotone (the search assumes they are).
   struct ScanPoint {
