@@ -46,7 +46,12 @@ void carry_over(const std::vector<Contact>& previous, std::vector<Contact>& foun
         // The change the last step left for this one (ContactState::deferred), made now.
         s.mode = s.deferred->mode;
         s.slide_sign = s.deferred->slide_sign;
-        if (s.deferred->relock) s.t_lock = c.t;
+        if (s.deferred->relock) {
+          s.t_lock = c.t;
+          if (s.deferred->lock_offset != 0.0) {
+            s.t_lock -= s.deferred->lock_offset / (c.edge_end - c.edge_start).norm();
+          }
+        }
         if (s.mode != ContactMode::Slide) s.predicted_slip = 0.0;
         if (s.mode == ContactMode::Open) s.normal_force = 0.0;
         s.deferred.reset();

@@ -19,6 +19,11 @@ struct ModeChange {
   ContactMode mode = ContactMode::Open;
   int slide_sign = 0;
   bool relock = false;
+  // A sliding contact that locks keeps the friction it carried: its new anchor lies this far
+  // (m, along `tangent`, vertex minus anchor) behind the vertex, so that the shear spring
+  // starts at that force (the elastic unloading of a return map starts on the limit). Zero
+  // for a contact that closes.
+  double lock_offset = 0.0;
 };
 
 struct ContactKey {
@@ -66,6 +71,10 @@ struct ContactIterate {
   double shear_force = 0.0;   // along `tangent`, on the vertex (N per metre)
   double slip = 0.0;          // the step's tangential displacement of the vertex against the edge (m)
   int mode_changes = 0;       // within this attempt's open-close loop
+  // The mode and lock anchor the contact started the attempt with (recorded at its first
+  // change; update_contact_modes): a lock made again within the loop starts from them.
+  ContactMode start_mode = ContactMode::Open;
+  double start_t_lock = 0.0;
 };
 
 struct Contact {

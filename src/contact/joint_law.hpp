@@ -92,11 +92,13 @@ ContactDecision decide_contact_mode(const Contact& c, const ContactTrial& trial,
 
 // Whether a contact that has already changed mode `c.mode_changes` times in this
 // open-close loop may take the decision `next`. Up to `free_changes` changes, any; after
-// that only a tightening one (open -> sliding or locked, sliding -> locked) or a bond that
-// breaks. Tightening only, the loop must end; and it ends on the side that cannot create
-// energy: a contact held open while it penetrates hands the next step a compressed spring
-// nobody loaded, and one held sliding while its slip reverses lets friction push forward,
-// while a closed or locked spring is conservative and its energy is accounted.
+// that only a tightening one (open -> sliding or locked, sliding -> locked), a bond that
+// breaks, or a locked contact that slides (its shear passed its strength: held locked,
+// nothing would bound that shear). Tightening only, the loop ends on the side that cannot
+// create energy: a contact held open while it penetrates hands the next step a compressed
+// spring nobody loaded, and one held sliding while its slip reverses lets friction push
+// forward, while a closed or locked spring is conservative and its energy is accounted. A
+// contact that cycles lock -> slide -> lock runs the loop to its limit, and the step is cut.
 bool change_allowed(const Contact& c, const ContactDecision& next, int free_changes);
 
 // Whether the change c -> next that `trial` asks for lies within the contact resolution

@@ -18,7 +18,8 @@ namespace {
 constexpr double kSlipToleranceShare = 1e-6;
 constexpr double kOpenToleranceShare = 1e-6;
 // A contact that has changed mode this many times in one open-close loop may from then on
-// only tighten (open -> sliding -> locked; docs/contacts.md, "Chatter"): such a contact
+// only tighten (open -> sliding -> locked; a lock past its strength still slides;
+// docs/contacts.md, "Chatter"): such a contact
 // chatters between states that differ by nanometres (a brick's side against its
 // neighbour), and the loop would otherwise be cut for nothing.
 constexpr int kFreeModeChanges = 2;
@@ -138,6 +139,31 @@ RankOneTerm rank_one(const World& w, const Contact& c, const Measure& m, double 
   return term;
 }
 
+// Where a contact that locks again within the open-close loop anchors its shear spring
+// (docs/contacts.md, "Relocking"). What the accepted step will say is decided by the whole
+// loop, so it starts from what the contact carried at the step's start: a contact that
+// started locked keeps its anchor, its shear capped at its present strength (the return map
+// of a spring the loop found past it); one that started sliding starts at the friction it
+// carries (`slide_offset`, vertex minus anchor along the tangent); one that started open, at
+// zero (Shi's lock on closing).
+double relock_anchor(const World& world, const Contact& c, double slide_offset, double ks) {
+  const double length = (c.edge_end - c.edge_start).norm();
+  switch (c.iterate.start_mode) {
+    case ContactMode::Open:
+      return c.t;
+    case ContactMode::Slide:
+      return c.t - slide_offset / length;
+    case ContactMode::Lock: {
+      const double stretch = c.tangent.dot(c.vertex - c.edge_point(c.iterate.start_t_lock));
+      const double strength =
+          shear_strength(c, world.joint_laws[c.joint], c.state.normal_force);
+      const double capped = std::clamp(ks * stretch, -strength, strength) / ks;
+      return c.t - capped / length;
+    }
+  }
+  return c.t;
+}
+
 }  // namespace
 
 void contact_spring_terms(const World& world, const Contact& c, const StepContext& ctx,
@@ -189,6 +215,7 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     ContactDecision next;
     bool changes = false;
     bool deferrable = false;
+    double lock_offset = 0.0;  // ModeChange::lock_offset
   };
   std::vector<Pending> pending(contacts.size());
   for (std::size_t i = 0; i < contacts.size(); ++i) {
@@ -235,6 +262,10 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     p.changes = changes && change_allowed(c, next, kFreeModeChanges);
     if (!p.changes && wants_to_open && trial.new_gap > tension_band) ++result.held_in_tension;
     p.deferrable = p.changes && change_within_resolution(c, next, trial, law, ks, resolution);
+    // A sliding contact that locks starts its shear spring at the friction it carried in
+    // this solve (trial.shear_force), not at zero: locked afresh, it would have to slip
+    // S / ks again before carrying it, a slip per relock (docs/contacts.md, "Relocking").
+    if (next.relock && c.state.mode == ContactMode::Slide) p.lock_offset = -trial.shear_force / ks;
     c.iterate.new_gap = trial.new_gap;
     c.iterate.slip = trial.slip;
     c.state.normal_force = trial.normal_force;
@@ -251,14 +282,18 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     const Pending& p = pending[i];
     c.state.deferred.reset();
     if (p.changes && p.deferrable && defer) {
-      c.state.deferred = ModeChange{p.next.mode, p.next.slide_sign, p.next.relock};
+      c.state.deferred = ModeChange{p.next.mode, p.next.slide_sign, p.next.relock, p.lock_offset};
     } else if (p.changes) {
       if (!p.deferrable) ++result.changed;
+      if (c.iterate.mode_changes == 0) {
+        c.iterate.start_mode = c.state.mode;
+        c.iterate.start_t_lock = c.state.t_lock;
+      }
       ++c.iterate.mode_changes;
       c.state.mode = p.next.mode;
       c.state.slide_sign = p.next.slide_sign;
       c.state.bonded = p.next.bonded;
-      if (p.next.relock) c.state.t_lock = c.t;
+      if (p.next.relock) c.state.t_lock = relock_anchor(world, c, p.lock_offset, ks);
     }
     // A sliding contact's normal spring moves to where the vertex now slides to (see
     // ContactState::predicted_slip); the next iteration measures there.

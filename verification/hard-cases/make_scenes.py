@@ -111,18 +111,30 @@ def case_column(n=20):
     blocks = [fixed(rect(-1.0, -0.2, 1.0, 0.0))] + [free(p) for p in polys]
     # Block k closes its own 1 cm gap and the k gaps below it.
     scale = sum(weight(p) * 0.01 * (k + 1) for k, p in enumerate(polys))
-    # A column of squares has no reason to lean: its drift is round-off and chatter.
-    # Static runs (no impacts): round-off only, measured 1e-9 to 5e-8 m; 1e-6 m bounds it.
+    # A column of squares has no reason to lean: its drift is round-off, chatter and friction.
+    # Static runs (no impacts): the elastic squares spread sideways under the column's
+    # weight, and the lowest one's base corners slip outwards on the floor, each by up to
+    # nu (1 + nu) sigma (b / 2) / E (plane strain, sigma the column's weight over the base).
+    # Since 2026-11-23 a corner that locks again keeps the friction it slid against
+    # (docs/contacts.md, "Relocking"), and which of the two corners locks first in a step is
+    # decided by round-off: the column may shift by up to that slip (measured 1.5e-6 and
+    # 2.1e-6 m at the two time steps; before, with the friction dropped at each lock, 1e-9 to
+    # 5e-8 m). The limit is that slip, 5.2e-6 m.
     # Dynamic runs: the squares land flat on each other, and a landing a hair off flat
     # tilts; the impacts amplify round-off about 1e10-fold between 0.12 s and 0.2 s, on the
     # plain factorise path as on the kept-factor one (measured 2026-11-23: 1e-15 m -> 1e-5
-    # m), and the drift saturates at a few mm whose value is a chaotic outcome (dt 0.002 s:
-    # 1.0 mm factorising, 2.3 to 3.6 mm with CG on the kept factor at tolerances 1e-13 and
-    # 1e-14). So the dynamic check asks for no lean a user would see: 1 cm, 4 % of a block
-    # width, a 0.1 degree lean of the 5.2 m column. (It was 2.5 mm for both until then.)
+    # m), and the drift saturates at millimetres whose value is a chaotic outcome: over nine
+    # time steps from 0.0005 to 0.0022 s it ranged from 0.3 to 13.4 mm (13.4 at 0.002 s,
+    # 0.3 at 0.00205 s; measured 2026-11-23), so a limit inside that range would pass or fail
+    # on round-off. The check asks for no lean a user would see and that the column
+    # stands: 2.5 cm, a tenth of a block's width, a 0.3 degree lean of the 5.2 m column.
+    # (It was 2.5 mm until 2026-11-23, then 1 cm when the kept factor's CG showed 3.6 mm.)
+    half_width, poisson, young = 0.125, ROCK["poisson"], ROCK["young"]
+    sigma = n * RHO * G * (2 * half_width) ** 2 / (2 * half_width)
+    spread = poisson * (1 + poisson) * sigma * half_width / young
     return dict(blocks=blocks, scale=scale, scale_note="m g x gaps closed below each block",
-                checks=[{"kind": "drift_x", "limit": 0.01, "dynamic_only": True},
-                        {"kind": "drift_x", "limit": 1e-6, "static_only": True},
+                checks=[{"kind": "drift_x", "limit": 0.025, "dynamic_only": True},
+                        {"kind": "drift_x", "limit": round(spread, 8), "static_only": True},
                         {"kind": "rest", "fraction": 0.01}, released(0.9)],
                 end_time=1.0, fall=0.2)
 
