@@ -21,11 +21,12 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: dda_verify_slope --out DIR [--smoke] [--case NAME]... [--jobs N] [--verbose]\n"
+    "usage: dda_verify_slope --out DIR [--smoke] [--case NAME]... [--jobs N] [--dynamic] [--verbose]\n"
     "  --out DIR    write slope.csv, report.json, report.md, mechanism_*.json into DIR\n"
     "  --smoke      the CI subset (planar_c10, hoek_bray_dry) with search tolerance 0.05\n"
     "  --case NAME  run only this case (repeatable); --list shows the names\n"
     "  --jobs N     trials at once (default 2)\n"
+    "  --dynamic    dynamic trials (dynamic coefficient 1) instead of the default static ones\n"
     "  --verbose    a line per trial on standard error\n";
 
 }  // namespace
@@ -50,6 +51,8 @@ int main(int argc, char** argv) {
       only.emplace_back(argv[++i]);
     } else if (arg == "--jobs" && i + 1 < argc) {
       options.jobs = std::max(1, std::atoi(argv[++i]));
+    } else if (arg == "--dynamic") {
+      options.dynamic_coefficient = 1.0;
     } else if (arg == "--help" || arg == "-h") {
       std::cout << kUsage;
       return 0;
@@ -97,6 +100,7 @@ int main(int argc, char** argv) {
     info.smoke = smoke;
     info.tolerance = options.tolerance;
     info.jobs = options.jobs;
+    info.dynamic_coefficient = options.dynamic_coefficient;
     info.detect_acceleration = a_det;
     info.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << write_reports(out, info, cases, results);

@@ -81,9 +81,10 @@ std::string markdown(const RunInfo& info, const std::vector<SlopeCase>& cases,
   md << (info.smoke ? "Smoke run (a subset, search tolerance " + fixed(info.tolerance, 3) +
                           "; not the verification itself).\n\n"
                     : "Full run, search tolerance " + fixed(info.tolerance, 3) + ".\n\n");
-  md << "Static trials on " << info.jobs << " threads; a trial fails when a free block's centroid "
-        "still moves at its end faster than a mechanism accelerating at detect_acceleration g ("
-     << info.detect_acceleration << ") would in static steps, or moves beyond the failure "
+  md << (info.dynamic_coefficient >= 1.0 ? "Dynamic" : "Static") << " trials on " << info.jobs
+     << " threads; a trial fails when a free block's centroid still moves at its end faster "
+        "than a mechanism accelerating at detect_acceleration g ("
+     << info.detect_acceleration << ") would (d/T in dynamic trials), or moves beyond the failure "
         "displacement. Allowed error = tolerance/2 + resolution (README \"Tolerances\"). Total "
         "wall time " << fixed(info.wall_s, 1) << " s.\n\n";
   md << "| case | LE | published | DDA | bracket | error | allowed | status | wall (s) | trials |\n";
@@ -168,7 +169,7 @@ std::string write_reports(const std::filesystem::path& dir, const RunInfo& info,
   std::ostringstream csv;
   csv << "case,le_factor,published_factor,dda_factor,last_stable,first_failing,error,allowed_error,"
          "status,wall_time_s,trials\n";
-  json report = {{"smoke", info.smoke}, {"tolerance", info.tolerance}, {"jobs", info.jobs},
+  json report = {{"smoke", info.smoke}, {"tolerance", info.tolerance}, {"jobs", info.jobs}, {"dynamic_coefficient", info.dynamic_coefficient},
                  {"detect_acceleration", info.detect_acceleration}, {"wall_time_s", info.wall_s},
                  {"cases", json::array()}};
   for (std::size_t i = 0; i < cases.size(); ++i) {

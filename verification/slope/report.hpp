@@ -16,6 +16,7 @@ struct RunInfo {
   double tolerance = 0.01;
   int jobs = 2;
   double detect_acceleration = 0.002;
+  double dynamic_coefficient = 0.0;  // the trials'
   double wall_s = 0.0;
 };
 

@@ -114,6 +114,7 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
   FosSettings settings;
   settings.jobs = options.jobs;
   settings.tolerance = options.tolerance;
+  settings.dynamic_coefficient = options.dynamic_coefficient;
   settings = resolve_fos_settings(world, settings);
   r.failure_displacement = settings.failure_displacement;
   r.trial_time = settings.trial_time;

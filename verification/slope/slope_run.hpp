@@ -15,6 +15,7 @@ namespace dda::slope {
 struct RunOptions {
   int jobs = 2;             // trials at once (threads)
   double tolerance = 0.01;  // the search's bracket width
+  double dynamic_coefficient = 0.0;  // the trials' (FosSettings); 0: static, the default
 };
 
 // A toppling column at the first failing trial (moved against the consolidated state).
