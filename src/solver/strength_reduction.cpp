@@ -15,7 +15,7 @@ namespace dda {
 namespace {
 
 // The at-rest test of a trial (run_trial): over a window of this many steps, every watched
-// point moved at less than this share of the creep speed d / T.
+// point moved at less than this share of the speed limit (d / T in a dynamic trial).
 constexpr int kRestSteps = 20;
 constexpr double kRestSpeedShare = 0.01;
 // A damped trial fails early when, after a quarter of its time, a watched point moves over
@@ -180,12 +180,13 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
   StepWorkspace ws;
   RunStats stats;
   bool moved_too_far = false, at_rest = false, moving_fast = false;
-  // A point still moving faster than d / T would pass the failure displacement within
-  // another trial time: the slope has not come to rest, it is failing slowly. Speeds are
-  // taken as displacements over a window of steps, not from the blocks' velocities: rigid
-  // blocks on penalty springs keep vibrating at centimetres per second in a slope that
-  // stands (measured on models/slope-fos.json at F = 1: 2.6 cm/s after 1 s, against a creep
-  // speed of 3.5 cm/s, with 0.5 mm of displacement), and the vibration averages out.
+  // In a dynamic trial, a point still moving faster than d / T would pass the failure
+  // displacement within another trial time: the slope has not come to rest, it is failing
+  // slowly. Speeds are taken as displacements over a window of steps, not from the blocks'
+  // velocities: rigid blocks on penalty springs keep vibrating at centimetres per second in
+  // a slope that stands (measured on models/slope-fos.json at F = 1: 2.6 cm/s after 1 s,
+  // against a creep speed of 3.5 cm/s, with 0.5 mm of displacement), and the vibration
+  // averages out.
   // A damped trial (dynamic coefficient k < 1) carries only k of each step's velocity, so a
   // mechanism whose out-of-balance force accelerates it at a settles to a steady speed: per
   // step v' = k v + a dt, hence v = a dt / (1 - k), and a mean speed over the step of

@@ -3,7 +3,7 @@
 # limit-equilibrium factors of Hoek & Bray's examples. Prints the report and leaves slope.csv,
 # report.md, report.json, mechanism_*.json and mechanism_*.png in OUT_DIR.
 #
-#   verification/slope/run.sh OUT_DIR [--smoke] [--case NAME]... [--verbose]
+#   verification/slope/run.sh OUT_DIR [--smoke] [--case NAME]... [--dynamic] [--verbose]
 #
 # It builds nothing: it runs $DDA_BUILD_DIR/dda_verify_slope (default: build/release of this
 # repository; build it first with `cmake --preset release && cmake --build --preset release`),
@@ -13,7 +13,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then
-  echo "usage: $0 OUT_DIR [--smoke] [--case NAME]... [--verbose]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
+  echo "usage: $0 OUT_DIR [--smoke] [--case NAME]... [--dynamic] [--verbose]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
   exit 2
 fi
 out="$1"
