@@ -47,10 +47,8 @@ void carry_over(const std::vector<Contact>& previous, std::vector<Contact>& foun
         s.mode = s.deferred->mode;
         s.slide_sign = s.deferred->slide_sign;
         if (s.deferred->relock) {
-          s.t_lock = c.t;
-          if (s.deferred->lock_offset != 0.0) {
-            s.t_lock -= s.deferred->lock_offset / (c.edge_end - c.edge_start).norm();
-          }
+          const double offset = s.deferred->lock_offset;
+          s.t_lock = offset != 0.0 ? c.t_behind(offset) : c.t;
         }
         if (s.mode != ContactMode::Slide) s.predicted_slip = 0.0;
         if (s.mode == ContactMode::Open) s.normal_force = 0.0;

@@ -95,6 +95,13 @@ struct Contact {
   ContactIterate iterate;
 
   Vec2 edge_point(double s) const { return edge_start + s * (edge_end - edge_start); }
+  // A shear spring anchored at edge parameter `t_anchor`: its stretch at the step's start,
+  // vertex minus anchor along `tangent` (m). And its inverse: the anchor's parameter for a
+  // stretch `stretch` (ModeChange::lock_offset).
+  double stretch_from(double t_anchor) const {
+    return tangent.dot(vertex - edge_point(t_anchor));
+  }
+  double t_behind(double stretch) const { return t - stretch / (edge_end - edge_start).norm(); }
   // Where the normal gap and the friction are measured (see ContactState::predicted_slip;
   // only a sliding contact moves it).
   Vec2 measure_point() const {

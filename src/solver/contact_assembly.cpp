@@ -147,18 +147,16 @@ RankOneTerm rank_one(const World& w, const Contact& c, const Measure& m, double 
 // carries (`slide_offset`, vertex minus anchor along the tangent); one that started open, at
 // zero (Shi's lock on closing).
 double relock_anchor(const World& world, const Contact& c, double slide_offset, double ks) {
-  const double length = (c.edge_end - c.edge_start).norm();
   switch (c.iterate.start_mode) {
     case ContactMode::Open:
       return c.t;
     case ContactMode::Slide:
-      return c.t - slide_offset / length;
+      return c.t_behind(slide_offset);
     case ContactMode::Lock: {
-      const double stretch = c.tangent.dot(c.vertex - c.edge_point(c.iterate.start_t_lock));
+      const double stretch = c.stretch_from(c.iterate.start_t_lock);
       const double strength =
           shear_strength(c, world.joint_laws[c.joint], c.state.normal_force);
-      const double capped = std::clamp(ks * stretch, -strength, strength) / ks;
-      return c.t - capped / length;
+      return c.t_behind(std::clamp(ks * stretch, -strength, strength) / ks);
     }
   }
   return c.t;

@@ -142,7 +142,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     s.damping_dissipation += kn * g1 * (g1 - g0) - (0.5 * kn * g1 * g1 - stored_start);
     double brought = stored_start;
     if (c.state.mode == ContactMode::Lock) {
-      const double s_start = c.tangent.dot(c.vertex - c.edge_point(c.state.t_lock));
+      const double s_start = c.stretch_from(c.state.t_lock);
       const double s_end = -c.iterate.shear_force / ks;
       s.damping_dissipation += 0.5 * ks * (s_end - s_start) * (s_end - s_start);
       brought += 0.5 * ks * s_start * s_start;

@@ -200,19 +200,29 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
     const double mean_dt = window_time / static_cast<double>(window_steps);
     return s.detect_acceleration * g * mean_dt * (1.0 + k) / (2.0 * (1.0 - k));
   };
-  // Positions, times and step counts of the last kRestSteps steps (a ring), and the
-  // positions a quarter of the trial time before its end.
-  std::vector<std::vector<Vec2>> ring(kRestSteps);
-  std::vector<double> ring_time(kRestSteps, 0.0);
-  std::vector<long> ring_step(kRestSteps, 0);
-  std::vector<Vec2> late_points;
-  double late_time = 0.0;
-  long late_step = 0;
-  auto window_speed = [](const std::vector<Vec2>& from, const std::vector<Vec2>& to, double dt_window) {
-    double fastest = 0.0;
-    for (std::size_t i = 0; i < from.size(); ++i) fastest = std::max(fastest, (to[i] - from[i]).norm());
-    return dt_window > 0.0 ? fastest / dt_window : 0.0;
+  // Where the watched points were at a step (time since the trial started, step count):
+  // speeds are taken from such a mark to the present. Marks of the last kRestSteps steps (a
+  // ring), of the step a quarter of the trial time before its end, and of the start.
+  struct Mark {
+    std::vector<Vec2> points;
+    double time = 0.0;
+    long step = 0;
   };
+  struct Window {
+    double speed = 0.0;  // m/s, the fastest watched point's displacement over the time
+    double limit = 0.0;  // m/s, speed_limit over the same window
+  };
+  const auto since = [&](const Mark& from, const std::vector<Vec2>& to, double time, long step) {
+    const double span = time - from.time;
+    double fastest = 0.0;
+    for (std::size_t i = 0; i < from.points.size(); ++i) {
+      fastest = std::max(fastest, (to[i] - from.points[i]).norm());
+    }
+    return Window{span > 0.0 ? fastest / span : 0.0, speed_limit(span, step - from.step)};
+  };
+  const Mark at_start{start_points, 0.0, 0};
+  std::vector<Mark> ring(kRestSteps);
+  std::optional<Mark> late;
   while (!is_finished(w) && r.steps < step_cap) {
     const StepOutcome outcome = advance_step(w, ws, stats);
     if (!outcome.ok) {
@@ -234,50 +244,44 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
       moved_too_far = true;
       break;
     }
-    if (late_points.empty() && elapsed >= 0.75 * s.trial_time) {
-      late_points = now;
-      late_time = elapsed;
-      late_step = r.steps;
-    }
+    if (!late && elapsed >= 0.75 * s.trial_time) late = Mark{now, elapsed, r.steps};
     // At rest: after a quarter of the trial time, every watched point moved over the last
     // kRestSteps steps at less than 1 % of the speed limit. The rest of the trial would
     // repeat the same state.
     const std::size_t slot = static_cast<std::size_t>(r.steps % kRestSteps);
     if (r.steps > kRestSteps && elapsed >= 0.25 * s.trial_time) {
-      const double window_time = elapsed - ring_time[slot];
-      const double limit = speed_limit(window_time, r.steps - ring_step[slot]);
-      const double speed = window_speed(ring[slot], now, window_time);
-      if (speed < kRestSpeedShare * limit) {
+      const Window recent = since(ring[slot], now, elapsed, r.steps);
+      if (recent.speed < kRestSpeedShare * recent.limit) {
         at_rest = true;
         break;
       }
       // A damped trial has no inertia to carry it through a pause: a mechanism that moves
       // at several times the limit after a quarter of the trial time is failing, and the
       // rest of the trial would only repeat that.
-      if (k < 1.0 && speed > kFailSpeedShare * limit) {
+      if (k < 1.0 && recent.speed > kFailSpeedShare * recent.limit) {
         moving_fast = true;
         break;
       }
     }
-    ring[slot] = now;
-    ring_time[slot] = elapsed;
-    ring_step[slot] = r.steps;
+    ring[slot] = Mark{now, elapsed, r.steps};
   }
   const std::vector<Vec2> end = watched_points(w);
   r.kinetic_end = total_kinetic(w);
   r.simulated_time = w.time - consolidated.time;
   // The end speed: over the trial's last quarter (or over the last kRestSteps steps when it
   // stopped at rest or early).
-  if (!late_points.empty() && r.simulated_time > late_time) {
-    r.end_speed = window_speed(late_points, end, r.simulated_time - late_time);
-    r.end_speed_limit = speed_limit(r.simulated_time - late_time, r.steps - late_step);
+  const Mark* from = nullptr;
+  if (late && r.simulated_time > late->time) {
+    from = &*late;
   } else if (r.steps > kRestSteps) {
-    const std::size_t slot = static_cast<std::size_t>(r.steps % kRestSteps);
-    r.end_speed = window_speed(ring[slot], end, r.simulated_time - ring_time[slot]);
-    r.end_speed_limit = speed_limit(r.simulated_time - ring_time[slot], r.steps - ring_step[slot]);
+    from = &ring[static_cast<std::size_t>(r.steps % kRestSteps)];
   } else if (r.simulated_time > 0.0) {
-    r.end_speed = window_speed(start_points, end, r.simulated_time);
-    r.end_speed_limit = speed_limit(r.simulated_time, r.steps);
+    from = &at_start;
+  }
+  if (from != nullptr) {
+    const Window last = since(*from, end, r.simulated_time, r.steps);
+    r.end_speed = last.speed;
+    r.end_speed_limit = last.limit;
   }
   if (!r.verdict.empty()) {
     r.stable = false;  // diverged
