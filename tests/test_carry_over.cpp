@@ -95,6 +95,33 @@ TEST_CASE("carry_over: a change the last step deferred is made as the contact is
   for (const Contact& c : found) CHECK_FALSE(c.state.deferred.has_value());
 }
 
+TEST_CASE("carry_over: a sliding contact deferred to lock keeps the friction it carried",
+          "[contact][carry]") {
+  // It slid (slide sign +1) against a friction of 600 N/m on the vertex (shear force -600
+  // along the tangent); the loop left it to lock (ModeChange::lock_offset = -S / ks, the
+  // stretch that carries S). Found again on a 2 m edge along x with the vertex at t = 0.5,
+  // its anchor lies lock_offset behind the vertex, so the spring starts at -ks x stretch =
+  // -600 N/m (docs/contacts.md, "Relocking"). The stretch (1.5e-7 m) is a difference of
+  // coordinates of order 1, so its round-off is about 1e-16 / 1.5e-7 = 1e-9 of it: 1e-6.
+  const std::vector<JointLaw> laws = {{0.5, 0.0, 0.0}};
+  const double ks = 4e9, shear_force = -600.0;
+  Contact slid = contact(0, -1e-6);
+  slid.state.mode = ContactMode::Slide;
+  slid.state.slide_sign = 1;
+  slid.state.deferred = ModeChange{ContactMode::Lock, 0, true, -shear_force / ks};
+  std::vector<Contact> found = {contact(0, -1e-6)};
+  Contact& c = found[0];
+  c.edge_start = Vec2(0.0, 0.0);
+  c.edge_end = Vec2(2.0, 0.0);
+  c.tangent = Vec2(1.0, 0.0);
+  c.t = 0.5;
+  c.vertex = Vec2(1.0, -1e-6);
+  carry_over({slid}, found, 1e-12, false, laws);
+  CHECK(c.state.mode == ContactMode::Lock);
+  CHECK(c.state.t_lock == Approx(0.5 - 1.5e-7 / 2.0).epsilon(1e-12));
+  CHECK(-ks * c.stretch_from(c.state.t_lock) == Approx(shear_force).epsilon(1e-6));
+}
+
 TEST_CASE("carry_over: each contact finds its own predecessor whatever the two lists' order",
           "[contact][carry]") {
   // carry_over looks for a predecessor first where the last one was found and then by key:
