@@ -46,7 +46,6 @@ StepContext context(const World& w) {
   ctx.dt = 0.002;
   ctx.penalty = w.penalty;
   ctx.dynamic_coefficient = 1.0;
-  ctx.allowed_displacement = w.control.max_displacement_ratio * w.w0;
   return ctx;
 }
 

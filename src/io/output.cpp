@@ -424,6 +424,7 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
                     {"max", stats.contacts_max},
                     {"deepest_penetration", stats.deepest_penetration},
                     {"largest_normal_force", stats.largest_normal_force},
+                    {"candidate_pairs_max", stats.candidate_pairs_max},
                     {"modes_by_joint_material", modes}}},
       {"penalty_raises", stats.penalty_raises},
       {"augmentations", stats.augmentations},

@@ -181,15 +181,15 @@ Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const
   return b.vertices[k];
 }
 
-double max_vertex_displacement(const World& world, const Eigen::VectorXd& d) {
+double max_displacement_share(const World& world, const Eigen::VectorXd& d) {
   const LinearT t = shi_t();
   double largest = 0.0;
   for (const Block& b : world.blocks) {
     if (b.fixed) continue;
     const Vec6 db = increments_of(b, d);
-    for (const Vec2& v : b.vertices) {
-      largest = std::max(largest, (t.at(v - b.moments.centroid) * db).norm());
-    }
+    double moved = 0.0;
+    for (const Vec2& v : b.vertices) moved = std::max(moved, (t.at(v - b.moments.centroid) * db).norm());
+    largest = std::max(largest, moved / b.step_limit);
   }
   return largest;
 }

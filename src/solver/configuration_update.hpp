@@ -10,8 +10,9 @@
 
 namespace dda {
 
-// The largest distance any vertex of a free block would move with increments d (m).
-double max_vertex_displacement(const World& world, const Eigen::VectorXd& d);
+// The largest share of its own step limit (Block::step_limit) that any vertex of a free
+// block would move with increments d: above 1, the step moves too far.
+double max_displacement_share(const World& world, const Eigen::VectorXd& d);
 
 // Moves vertices, pins and point loads and accumulates translation, rotation and strain by
 // the treatment in world.control.rotation_update (one switch; paper Sections 2-4):

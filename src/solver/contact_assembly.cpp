@@ -297,7 +297,8 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     // ContactState::predicted_slip); the next iteration measures there.
     // (Bounded by the step's displacement limit: an iteration far from the solution must not
     // carry the measure point off the edge; a larger slip is cut by the displacement check.)
-    const double reach = 2.0 * ctx.allowed_displacement;
+    const double reach = 2.0 * std::max(world.blocks[static_cast<std::size_t>(c.key.vertex_block)].step_limit,
+                                        world.blocks[static_cast<std::size_t>(c.key.edge_block)].step_limit);
     c.state.predicted_slip =
         c.state.mode == ContactMode::Slide ? std::clamp(c.iterate.slip, -reach, reach) : 0.0;
     // (A held contact keeps its mode, but its forces follow the latest solve.)

@@ -51,6 +51,13 @@ void carry_and_replace(const World& world, std::vector<Contact>& contacts,
   std::swap(contacts, found);
 }
 
+// A block's box grown by its share of the pair search distance (pair_search_distance): two
+// grown boxes overlap when the blocks' boxes are within the pair's search distance.
+Box search_box(const World& world, const Block& b) {
+  return grown_box(b.vertices,
+                   0.5 * (kSearchDistanceFactor * b.step_limit + world.allowed_penetration));
+}
+
 bool both_fixed(const World& world, int i, int j) {
   return world.blocks[i].fixed && world.blocks[j].fixed;  // nothing can move
 }
@@ -60,13 +67,13 @@ bool both_fixed(const World& world, int i, int j) {
 void detect_contacts_full(const World& world, std::vector<Contact>& contacts) {
   std::vector<Box> boxes;
   boxes.reserve(world.blocks.size());
-  for (const Block& b : world.blocks) boxes.push_back(grown_box(b.vertices, 0.5 * world.search_distance));
+  for (const Block& b : world.blocks) boxes.push_back(search_box(world, b));
 
   std::vector<ContactCandidate> candidates;
   for (const auto& [i, j] : overlapping_pairs(boxes)) {
     if (both_fixed(world, i, j)) continue;
-    find_contacts(world.blocks[i].vertices, i, world.blocks[j].vertices, j, world.search_distance,
-                  candidates);
+    find_contacts(world.blocks[i].vertices, i, world.blocks[j].vertices, j,
+                  pair_search_distance(world, i, j), candidates);
   }
   std::vector<Contact> found;
   found.reserve(candidates.size());
@@ -81,7 +88,7 @@ void detect_contacts(const World& world, std::vector<Contact>& contacts, Detecti
   const std::size_t n = world.blocks.size();
   cache.boxes.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    cache.boxes[i] = grown_box(world.blocks[i].vertices, 0.5 * world.search_distance);
+    cache.boxes[i] = search_box(world, world.blocks[i]);
   }
   carried_overlapping_pairs(cache.boxes, kCarriedPairMargin * world.search_distance, cache.pairs,
                             cache.close);
@@ -95,7 +102,7 @@ void detect_contacts(const World& world, std::vector<Contact>& contacts, Detecti
   for (const auto& [i, j] : cache.close) {
     if (both_fixed(world, i, j)) continue;
     find_contacts(world.blocks[i].vertices, cache.features[i], i, world.blocks[j].vertices,
-                  cache.features[j], j, world.search_distance, cache.candidates);
+                  cache.features[j], j, pair_search_distance(world, i, j), cache.candidates);
   }
   cache.found.clear();
   cache.found.reserve(cache.candidates.size());

@@ -29,10 +29,10 @@ struct DetectionCache {
 };
 
 // The extra margin of the carried pair list, as a share of the search distance: the boxes
-// the list is made from are grown by this much more than the present ones. A step moves a
-// vertex at most max_displacement_ratio w0, 1/2.5 of the search distance, so a block moving
-// at that limit leaves its grown box every 2 or 3 steps (and is swept again), a settling or
-// settled one stays in it; the larger boxes pair few more blocks (in the brick walls none:
+// the list is made from are grown by this much more than the present ones (the largest
+// pair's search distance, World::search_distance). A step moves a vertex at most its block's
+// step limit, at most 1/2.5 of that, so a block moving at its limit leaves its grown box every
+// 2 or 3 steps (and is swept again), a settling or settled one stays in it; the larger boxes pair few more blocks (in the brick walls none:
 // bricks two rows apart are 0.5 m apart, the grown boxes reach 3.75 cm).
 inline constexpr double kCarriedPairMargin = 1.0;
 

@@ -22,7 +22,7 @@ struct StageTimes {
 struct RunStats {
   int steps = 0;           // completed steps
   int cut_steps = 0;       // attempts thrown away and redone with a shorter dt, for:
-  int cuts_for_displacement = 0;  //   motion above max_displacement_ratio x w0
+  int cuts_for_displacement = 0;  //   a vertex moved more than its block's step limit
   int cuts_for_open_close = 0;    //   open-close loop not settled in max_open_close
   int cuts_for_penetration = 0;   //   a contact deeper than allowed_penetration
   int cuts_for_material = 0;      //   a plastic block's return map failed
@@ -34,6 +34,9 @@ struct RunStats {
   long contacts_total = 0;    // closed contacts at the end of each step, summed
   int contacts_max = 0;
   int contacts_final = 0;     // closed contacts at the end of the run
+  // The most block pairs the broad phase handed to the narrow phase in a step (pairs within
+  // their search distance, fixed pairs included): what the contact search costs.
+  long candidate_pairs_max = 0;
   double deepest_penetration = 0.0;   // m, deepest contact penetration after any accepted step
   double largest_normal_force = 0.0;  // N/m, largest contact normal force after any accepted step
   // Times the penalty was raised: always 0 since the penalty stays as the scene sets it

@@ -19,9 +19,9 @@
 namespace dda {
 namespace {
 
-// A step whose motion exceeds the displacement ratio retries with dt scaled by
-// 0.9 * allowed / moved, kept within [0.1, 0.9]: the motion is roughly proportional to dt,
-// so one cut usually suffices.
+// A step whose motion exceeds a block's step limit retries with dt scaled by
+// 0.9 / (the largest share of its limit a block moved), kept within [0.1, 0.9]: the motion
+// is roughly proportional to dt, so one cut usually suffices.
 constexpr double kCutSafety = 0.9;
 constexpr double kCutMin = 0.1;
 constexpr double kCutMax = 0.9;
@@ -72,7 +72,6 @@ StepContext make_step_context(const World& world, double dt) {
   ctx.dt = dt;
   ctx.penalty = world.penalty;
   ctx.dynamic_coefficient = world.control.dynamic_coefficient;
-  ctx.allowed_displacement = world.control.max_displacement_ratio * world.w0;
   if (world.base_motion) {
     ctx.base_acceleration = mean_base_acceleration(*world.base_motion, world.time, world.time + dt);
   }
@@ -319,10 +318,11 @@ double overshoot(const World& world, const Contact& c, const Eigen::VectorXd& d)
 
 // 4. The checks on a settled step: too large a motion, a contact deeper than allowed, or an
 //    open contact whose vertex ends inside the other block.
-std::optional<CutReason> check_step(const World& world, const Eigen::VectorXd& d,
-                                    const StepContext& ctx, double& moved, double& deepest_overshoot) {
-  moved = max_vertex_displacement(world, d);
-  if (moved > ctx.allowed_displacement) return CutReason::Displacement;
+//    `moved`: the largest share of its step limit a block moved.
+std::optional<CutReason> check_step(const World& world, const Eigen::VectorXd& d, double& moved,
+                                    double& deepest_overshoot) {
+  moved = max_displacement_share(world, d);
+  if (moved > 1.0) return CutReason::Displacement;
   if (max_penetration(world.contacts) > world.allowed_penetration) return CutReason::Penetration;
   deepest_overshoot = 0.0;
   for (const Contact& c : world.contacts) {
@@ -338,10 +338,10 @@ std::optional<CutReason> check_step(const World& world, const Eigen::VectorXd& d
 // that fails suggests its own fraction; contacts that do not settle or penetrate take Shi's
 // 0.3; an overshoot, which grows as dt^2, aims just below its limit. Each share is kept
 // within Shi's usual range [0.1, 0.9].
-double cut_share(CutReason reason, double allowed, double moved, double material_fraction,
+double cut_share(CutReason reason, double moved_share, double material_fraction,
                  double overshoot_limit, double overshoot) {
   switch (reason) {
-    case CutReason::Displacement: return std::clamp(kCutSafety * allowed / moved, kCutMin, kCutMax);
+    case CutReason::Displacement: return std::clamp(kCutSafety / moved_share, kCutMin, kCutMax);
     case CutReason::Overshoot:
       return std::clamp(kCutSafety * std::sqrt(overshoot_limit / overshoot), kCutMin, kCutMax);
     case CutReason::Material: return std::clamp(material_fraction, kCutMin, kCutMax);
@@ -391,6 +391,8 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   //    they had last step. A redone attempt starts again from these. (The pair list the
   //    workspace carries is only a shortcut: the contacts are those of a full detection.)
   detect_contacts(world, world.contacts, ws.detection);
+  stats.candidate_pairs_max =
+      std::max(stats.candidate_pairs_max, static_cast<long>(ws.detection.close.size()));
   const std::vector<Contact> contacts_at_start = world.contacts;
   // 2b. Joint water pressure on the faces those contacts share, constant over the step. The
   //     water weighs what gravity makes it weigh: a stage that ramps gravity up from zero
@@ -432,7 +434,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     //    allowed_penetration) ends the run with a message that says so.
     double moved = 0.0, deepest_overshoot = 0.0;
     const std::optional<CutReason> cut =
-        loop.unsettled ? loop.unsettled : check_step(world, loop.d, ctx, moved, deepest_overshoot);
+        loop.unsettled ? loop.unsettled : check_step(world, loop.d, moved, deepest_overshoot);
     if (cut) {
       if (*cut == CutReason::Penetration && ++penetration_cuts > kPenetrationCuts) {
         std::ostringstream what;
@@ -444,7 +446,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
         return {false, describe_failure(world, what.str())};
       }
       count_cut(*cut, stats);
-      dt *= cut_share(*cut, ctx.allowed_displacement, moved, loop.material_fraction,
+      dt *= cut_share(*cut, moved, loop.material_fraction,
                       kOvershootShare * world.allowed_penetration, deepest_overshoot);
       continue;
     }

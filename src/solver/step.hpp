@@ -31,7 +31,7 @@ struct StepWorkspace {
 // Why an attempt of a step is thrown away and redone with a shorter dt (one cut rule,
 // step.cpp: cut_share).
 enum class CutReason {
-  Displacement,  // a vertex moved more than max_displacement_ratio x w0
+  Displacement,  // a vertex moved more than its block's step limit (Block::step_limit)
   OpenClose,     // the open-close loop did not settle in max_open_close iterations
   Penetration,   // a contact ended deeper than allowed_penetration
   Material,      // a plastic block's return map failed

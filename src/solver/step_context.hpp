@@ -20,7 +20,6 @@ struct StepContext {
   double dt = 0.0;                    // this attempt's time step (s)
   double penalty = 0.0;               // pin and contact normal stiffness (N/m)
   double dynamic_coefficient = 1.0;   // share of last velocity carried in, [0, 1]
-  double allowed_displacement = 0.0;  // max_displacement_ratio * w0 (m)
   // Base shaking: the ground's mean acceleration over this attempt's step (m/s^2; zero
   // without base_motion). The step is solved in the ground's frame (solver/base_motion.hpp).
   Vec2 base_acceleration = Vec2::Zero();

@@ -16,9 +16,6 @@ namespace {
 constexpr double kAutoPenaltyFactor = 50.0;
 // Shi's usual allowed penetration, as a share of w0 (verification catalogue).
 constexpr double kAutoPenetrationShare = 4e-4;
-// Contact search distance as a multiple of the largest step motion (ratio x w0): a vertex
-// cannot travel farther than that in a step, so contacts it could make are all found.
-constexpr double kSearchDistanceFactor = 2.5;
 
 double resolve_penalty(const Scene& scene) {
   if (scene.control.penalty) return *scene.control.penalty;
@@ -77,7 +74,14 @@ World make_world(const Scene& scene) {
 
   world.allowed_penetration =
       scene.control.allowed_penetration.value_or(kAutoPenetrationShare * world.w0);
-  world.search_distance = kSearchDistanceFactor * scene.control.max_displacement_ratio * world.w0;
+  double largest_limit = 0.0;
+  for (Block& b : world.blocks) {
+    if (b.fixed) continue;
+    const Box own = bounding_box(b.initial_vertices);
+    b.step_limit = scene.control.max_displacement_ratio * 0.5 * (own.max - own.min).maxCoeff();
+    largest_limit = std::max(largest_limit, b.step_limit);
+  }
+  world.search_distance = kSearchDistanceFactor * largest_limit + world.allowed_penetration;
   for (const JointMaterial& j : scene.joint_materials) {
     world.joint_laws.push_back(joint_law_of(j));
   }

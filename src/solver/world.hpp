@@ -18,6 +18,11 @@
 
 namespace dda {
 
+// Contact search distance of two blocks as a multiple of what both may move in a step: a
+// pair of vertices cannot close a gap wider than the sum of their step limits, so contacts
+// the step could make are all found (Shi's 2.5 x g2 x w0 for two blocks of the scene's size).
+inline constexpr double kSearchDistanceFactor = 2.5;
+
 struct Block {
   // ---- cold: fixed at construction ----
   Polygon initial_vertices;     // X: the material points of the vertices at the start
@@ -31,6 +36,13 @@ struct Block {
   Vec3 initial_stress = Vec3::Zero();
   double initial_area = 0.0;
   int first_dof = -1;  // index of u0 in the global system; -1 for fixed blocks
+  // The most any of its vertices may move in one step (m): max_displacement_ratio x half the
+  // larger side of the block's own bounding box at the start; 0 for a fixed block, which does
+  // not move. Shi's g2 measured against the block, not the scene: a small block next to a
+  // wide floor may not jump by a share of the floor, and the contact search (2.5 x this,
+  // pair by pair: contact_detection.hpp) stays as local as the blocks (docs/contacts.md,
+  // "Search distance").
+  double step_limit = 0.0;
   // A rigid block (issue 10, item 7) keeps the six slots of d like any block, but the
   // linear system solves only its u0, v0, r0 (BlockSystem's dof map): its strain increments
   // are exactly zero, it has no elastic matrix (D = 0) and no initial stress.
@@ -136,7 +148,10 @@ struct World {
   double penalty = 0.0;  // resolved stiffness of pins and contact normal springs (N/m)
   double w0 = 0.0;       // half the larger extent of the scene at the start (m)
   double allowed_penetration = 0.0;  // resolved (m)
-  double search_distance = 0.0;      // contact search distance 2.5 x ratio x w0 (m)
+  // The largest contact search distance of any pair (pair_search_distance): 2.5 x the largest
+  // step limit + allowed_penetration (m). The carried broad phase's margin and joint water's
+  // face tolerance use it.
+  double search_distance = 0.0;
 
   // Joint laws: index 0 "default", used by every block pair not in `pair_joint`.
   std::vector<JointLaw> joint_laws;
@@ -162,6 +177,17 @@ inline std::uint64_t pair_key(int i, int j) {
   const auto lo = static_cast<std::uint64_t>(i < j ? i : j);
   const auto hi = static_cast<std::uint64_t>(i < j ? j : i);
   return (hi << 32) | lo;
+}
+
+// Contact search distance between blocks i and j (m): 1.25 x the sum of what their vertices
+// may move in a step, so every contact the step could close is found with a quarter to
+// spare, plus the allowed penetration, so a contact that starts the step that deep (the most
+// a step may leave) is found from inside too.
+inline double pair_search_distance(const World& world, int i, int j) {
+  return world.allowed_penetration +
+         0.5 * kSearchDistanceFactor *
+             (world.blocks[static_cast<std::size_t>(i)].step_limit +
+              world.blocks[static_cast<std::size_t>(j)].step_limit);
 }
 
 // The joint law index for contacts between blocks i and j.
