@@ -6,6 +6,7 @@
 #include <optional>
 #include <string_view>
 
+#include "io/input_limits.hpp"
 #include "io/json_input.hpp"
 #include "io/material_reader.hpp"
 
@@ -38,8 +39,14 @@ PathSegment read_segment(const Field& f) {
       s->fail("this component is also given in \"strain\" (" + std::string(kStrainKeys[i]) +
               "); control each in-plane component by strain or by stress, not both");
     }
-    if (e) segment.targets[i] = ComponentTarget{Control::Strain, e->number()};
-    if (s) segment.targets[i] = ComponentTarget{Control::Stress, s->number()};
+    if (e) {
+      segment.targets[i] = ComponentTarget{
+          Control::Strain, input::within_limit(*e, e->number(), input::kLargestStrain, "")};
+    }
+    if (s) {
+      segment.targets[i] = ComponentTarget{
+          Control::Stress, input::within_limit(*s, s->number(), input::kLargestStress, "Pa")};
+    }
     named = named || e || s;
   }
   // A segment that moves nothing would only repeat the last row (the models are rate
@@ -86,7 +93,8 @@ MaterialPointSpec read_spec(const Field& root, const std::string& source) {
         "\"rigid\" out of a material-point spec (it marks blocks rigid in a scene)");
   }
   if (auto g = root.optional_member("initial_stress")) {
-    spec.initial_stress = g->vec4("[sxx, syy, szz, sxy]");
+    spec.initial_stress =
+        input::within_limit(*g, g->vec4("[sxx, syy, szz, sxy]"), input::kLargestStress, "Pa");
     check_initial_stress(*g, spec);
   }
   for (const Field& segment : root.member("path").elements(1, "give at least one segment")) {

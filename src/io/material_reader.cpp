@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/input_limits.hpp"
 #include "materials/validate_material.hpp"
 
 namespace dda::input {
@@ -82,6 +83,7 @@ std::vector<HardeningPoint> read_hardening(const Field& f) {
                                      "give at least one [eps_p, cohesion] row, or leave "
                                      "\"hardening\" out for a constant cohesion")) {
     const Vec2 v = row.vec2("[eps_p, cohesion]");
+    within_limit(row, v.y(), kLargestStress, "Pa", "the cohesion ");
     table.push_back({v.x(), v.y()});
   }
   return table;
@@ -126,19 +128,22 @@ Material read_material(const std::string& name, const Field& f, PlaneMode plane)
   Material m;
   m.name = name;
   m.model = *model;
-  m.density = positive_number(f.member("density"));
-  m.young = positive_number(f.member("young"));
+  m.density = within_limit(f.member("density"), positive_number(f.member("density")),
+                           kLargestDensity, "kg/m^3");
+  m.young = within_limit(f.member("young"), positive_number(f.member("young")), kLargestStress, "Pa");
   // The bounds keep the elastic matrix positive definite (bulk and shear moduli positive).
   m.poisson = number_in_range(f.member("poisson"), -1.0, true, 0.5, true,
                               "greater than -1 and less than 0.5");
   if (is_plastic(m.model)) {
     // Types here; ranges and the rules between parameters are validate_material's.
-    m.cohesion = f.member("cohesion").number();
+    m.cohesion = within_limit(f.member("cohesion"), f.member("cohesion").number(), kLargestStress, "Pa");
     m.friction_angle = f.member("friction_angle").number();
     // Default 0: no plastic dilation, the usual choice for soils and rock masses, where
     // associated flow (dilation = friction) overstates the volume increase at failure.
     if (auto g = f.optional_member("dilation_angle")) m.dilation_angle = g->number();
-    if (auto g = f.optional_member("tensile_strength")) m.tensile_strength = g->number();
+    if (auto g = f.optional_member("tensile_strength")) {
+      m.tensile_strength = within_limit(*g, g->number(), kLargestStress, "Pa");
+    }
     if (auto g = f.optional_member("hardening")) m.hardening = read_hardening(*g);
     if (auto g = f.optional_member("match")) {
       const std::string match_text = g->string();

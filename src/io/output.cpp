@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "io/output.hpp"
 
 #include <cstdio>
@@ -228,6 +229,9 @@ json settings_json(const World& w) {
       {"allowed_penetration", w.allowed_penetration},
       {"allowed_penetration_rule", c.allowed_penetration ? "user" : "auto"},
       {"search_distance", w.search_distance},
+      // Blocks the run solves for; 0 when every block is fixed (then nothing moves).
+      {"free_blocks", std::count_if(w.blocks.begin(), w.blocks.end(),
+                                    [](const Block& b) { return !b.fixed; })},
       {"energy_tolerance", c.energy_tolerance},
       {"linear_solver", c.reuse_factor ? "reuse" : "factorise"},
   };

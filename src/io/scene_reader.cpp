@@ -10,11 +10,13 @@
 #include <utility>
 
 #include "contact/broad_phase.hpp"
+#include "io/input_limits.hpp"
 #include "io/json_input.hpp"
 #include "io/material_reader.hpp"
 #include "io/polygon_input.hpp"
 #include "kinematics/overlap.hpp"
 #include "kinematics/polygon.hpp"
+#include "materials/material.hpp"
 
 namespace dda {
 
@@ -27,6 +29,12 @@ using input::non_negative_number;
 using input::number_in_range;
 using input::positive_number;
 using input::read_polygon;
+using input::within_limit;
+
+// A duration (time step, stage, end time): positive and not below input::kSmallestDuration.
+double duration(const Field& f) {
+  return input::at_least(f, positive_number(f), input::kSmallestDuration, "s");
+}
 
 // A key that is not there but must be, when the rule is more than "always required" (so the
 // message can say why). Reported at the key's place, like Field::member does.
@@ -37,10 +45,10 @@ using input::read_polygon;
 // ---- top level and control ----
 
 std::vector<double> read_time_steps(const Field& f) {
-  if (!f.is_list()) return {positive_number(f)};
+  if (!f.is_list()) return {duration(f)};
   std::vector<double> steps;
   for (const Field& step : f.elements(1, "a list of time steps must not be empty")) {
-    steps.push_back(positive_number(step));
+    steps.push_back(duration(step));
   }
   return steps;
 }
@@ -55,7 +63,7 @@ void read_run_length(const Field& control, ControlSettings& c, bool staged) {
           "not allowed with \"stages\": the run lasts the sum of the stages' durations; remove "
           "it (\"end_time\" may be given if it equals that sum)");
     }
-    if (control.has("end_time")) c.end_time = positive_number(control.member("end_time"));
+    if (control.has("end_time")) c.end_time = duration(control.member("end_time"));
     return;
   }
   const bool has_steps = control.has("steps");
@@ -68,7 +76,7 @@ void read_run_length(const Field& control, ControlSettings& c, bool staged) {
                  "(seconds)");
   }
   if (has_steps) c.steps = integer_at_least(control.member("steps"), 1);
-  if (has_end_time) c.end_time = positive_number(control.member("end_time"));
+  if (has_end_time) c.end_time = duration(control.member("end_time"));
 }
 
 RotationUpdate read_rotation_update(const Field& f) {
@@ -111,7 +119,10 @@ ControlSettings read_control(const Field& f, bool staged) {
   if (auto g = f.optional_member("rotation_update")) {
     c.rotation_update = read_rotation_update(*g);
   }
-  if (auto g = f.optional_member("penalty")) c.penalty = positive_or_auto(*g, "N/m");
+  if (auto g = f.optional_member("penalty")) {
+    c.penalty = positive_or_auto(*g, "N/m");
+    if (c.penalty) within_limit(*g, *c.penalty, input::kLargestPenalty, "N/m");
+  }
   if (auto g = f.optional_member("output_every")) c.output_every = integer_at_least(*g, 1);
   // The open-close loop needs one iteration to change a contact's state and another to
   // confirm it, so fewer than 2 would cut every step in which a contact opens or closes.
@@ -185,8 +196,11 @@ JointMaterial read_joint_material(const std::string& name, const Field& f) {
   // 90 degrees would make tan(phi), the friction coefficient, infinite.
   j.friction_angle = number_in_range(f.member("friction_angle"), 0.0, false, 90.0, true,
                                      "at least 0 and less than 90 (degrees)");
-  j.cohesion = non_negative_number(f.member("cohesion"));
-  j.tensile_strength = non_negative_number(f.member("tensile_strength"));
+  j.cohesion = within_limit(f.member("cohesion"), non_negative_number(f.member("cohesion")),
+                            input::kLargestStress, "Pa");
+  j.tensile_strength =
+      within_limit(f.member("tensile_strength"), non_negative_number(f.member("tensile_strength")),
+                   input::kLargestStress, "Pa");
   return j;
 }
 
@@ -314,9 +328,12 @@ std::vector<StageJoint> read_stage_joints(const Field& f,
       o.material.friction_angle =
           number_in_range(*g, 0.0, false, 90.0, true, "at least 0 and less than 90 (degrees)");
     }
-    if (auto g = value.optional_member("cohesion")) o.material.cohesion = non_negative_number(*g);
+    if (auto g = value.optional_member("cohesion")) {
+      o.material.cohesion = within_limit(*g, non_negative_number(*g), input::kLargestStress, "Pa");
+    }
     if (auto g = value.optional_member("tensile_strength")) {
-      o.material.tensile_strength = non_negative_number(*g);
+      o.material.tensile_strength =
+          within_limit(*g, non_negative_number(*g), input::kLargestStress, "Pa");
     }
     overrides.push_back(o);
   }
@@ -329,7 +346,7 @@ StageSpec read_stage(const Field& f, const ControlSettings& control,
   f.expect_keys({"duration", "dynamic_coefficient", "gravity_factor", "gravity_ramp",
                  "time_step", "joint_materials", "bond_closed_contacts"});
   StageSpec s;
-  s.duration = positive_number(f.member("duration"));
+  s.duration = duration(f.member("duration"));
   s.dynamic_coefficient = control.dynamic_coefficient;
   if (auto g = f.optional_member("dynamic_coefficient")) {
     s.dynamic_coefficient = number_in_range(*g, 0.0, false, 1.0, false, "between 0 and 1");
@@ -407,18 +424,44 @@ void check_rigid_block(const Field& f, const BlockSpec& b, const Material& m) {
   }
 }
 
-BlockSpec read_block(const Field& f, const std::vector<Material>& materials) {
+// A plastic block must start where its material can be: a stress outside the yield surface
+// would be returned onto it at the first step, before any motion, with plastic strain from
+// nowhere (Drucker-Prager), or leave the first step's Newton iteration nothing to converge
+// to (Mohr-Coulomb). The same test as `dda material-point`'s (material_point_reader.cpp):
+// a return at zero strain from the block's start state (szz = nu (sxx + syy), as
+// make_world builds it) must stay elastic.
+void check_plastic_start(const Field& f, const BlockSpec& b, const Material& m, PlaneMode plane) {
+  if (!is_plastic(m.model) || b.fixed) return;
+  const Vec3& s0 = b.initial_stress;
+  const Vec4 start(s0[0], s0[1], m.poisson * (s0[0] + s0[1]), s0[2]);
+  const MaterialResult r = integrate(parameters_of(m, plane), MaterialState{}, Vec3::Zero(), start);
+  const Field place = b.initial_stress == Vec3::Zero() ? f.member("material") : f.member("initial_stress");
+  if (!r.status.converged) place.fail("the material \"" + m.name + "\" cannot start here: " + r.status.reason);
+  if (r.branch != Branch::Elastic) {
+    place.fail("[" + format_number(s0[0]) + ", " + format_number(s0[1]) + ", " +
+               format_number(s0[2]) + "] (with szz = poisson x (sxx + syy) = " +
+               format_number(start[2]) + ") lies outside the yield surface of the material \"" +
+               m.name + "\" (a return at zero strain takes the \"" +
+               std::string(branch_name(r.branch)) +
+               "\" branch); start the block from a stress on or inside it");
+  }
+}
+
+BlockSpec read_block(const Field& f, const std::vector<Material>& materials, PlaneMode plane) {
   f.expect_keys({"vertices", "material", "fixed", "velocity", "initial_stress", "rigid"});
   BlockSpec b;
   b.vertices = read_polygon(f.member("vertices"));
   b.material = material_index(f.member("material"), materials);
   if (auto g = f.optional_member("fixed")) b.fixed = g->boolean();
-  if (auto g = f.optional_member("velocity")) b.velocity = g->vec3("[vx, vy, omega]");
+  if (auto g = f.optional_member("velocity")) {
+    b.velocity = within_limit(*g, g->vec3("[vx, vy, omega]"), input::kLargestSpeed, "m/s (rad/s)");
+  }
   if (auto g = f.optional_member("initial_stress")) {
-    b.initial_stress = g->vec3("[sxx, syy, sxy]");
+    b.initial_stress = within_limit(*g, g->vec3("[sxx, syy, sxy]"), input::kLargestStress, "Pa");
   }
   if (auto g = f.optional_member("rigid")) b.rigid = g->boolean();
   check_rigid_block(f, b, materials[static_cast<std::size_t>(b.material)]);
+  check_plastic_start(f, b, materials[static_cast<std::size_t>(b.material)], plane);
   return b;
 }
 
@@ -454,6 +497,36 @@ void check_no_overlap(const std::vector<Field>& fields, const std::vector<BlockS
   }
 }
 
+// Coordinates must be fine enough for the contacts: double precision spaces numbers near
+// |x| = 1e15 m 0.125 m apart, so a block there cannot move by less (a free block at 1e15 m
+// falls without moving) and a contact cannot resolve its penetration. Refused when the
+// spacing at a vertex exceeds 1/1000 of the allowed penetration, so penetrations and step
+// motions are resolved to at least a thousandth of that depth (map coordinates of 1e6 m
+// are spaced 1.2e-10 m apart: a penetration down to 1.2e-7 m still passes).
+constexpr double kCoordinateSpacingShare = 1e-3;
+
+void check_coordinate_precision(const std::vector<Field>& fields,
+                                const std::vector<BlockSpec>& blocks,
+                                const ControlSettings& control) {
+  std::vector<Polygon> polygons;
+  for (const BlockSpec& b : blocks) polygons.push_back(b.vertices);
+  const double allowed =
+      control.allowed_penetration.value_or(kAutoPenetrationShare * scene_w0(polygons));
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    for (std::size_t k = 0; k < blocks[i].vertices.size(); ++k) {
+      const double reach = blocks[i].vertices[k].cwiseAbs().maxCoeff();
+      const double spacing = std::nextafter(reach, INFINITY) - reach;
+      if (spacing <= kCoordinateSpacingShare * allowed) continue;
+      fields[i].member("vertices").elements(0, "")[k].fail(
+          "a coordinate of " + format_number(reach) + " m: double precision spaces numbers that "
+          "large " + format_number(spacing) + " m apart, more than 1/1000 of the allowed "
+          "penetration (" + format_number(allowed) + " m), so the blocks' motion and contacts "
+          "would be lost in round-off; move the origin near the blocks (subtract a reference "
+          "point from every coordinate) or raise control.allowed_penetration");
+    }
+  }
+}
+
 // The first block (in list order) containing the point; boundary points count as inside,
 // so a pin on a shared edge goes to the block listed first.
 int block_containing(const Field& point_field, const Vec2& p,
@@ -479,7 +552,8 @@ PointLoadSpec read_point_load(const Field& f, const std::vector<BlockSpec>& bloc
   PointLoadSpec load;
   const Field point = f.member("point");
   load.point = point.vec2("[x, y]");
-  load.force = f.member("force").vec2("[fx, fy]");
+  load.force = within_limit(f.member("force"), f.member("force").vec2("[fx, fy]"),
+                            input::kLargestForce, "N/m");
   load.block = block_containing(point, load.point, blocks);
   return load;
 }
@@ -519,7 +593,9 @@ WaterTable read_water(const Field& f) {
                      input::format_number(water.phreatic_line[i - 1].x()));
     }
   }
-  if (auto g = f.optional_member("unit_weight")) water.unit_weight = positive_number(*g);
+  if (auto g = f.optional_member("unit_weight")) {
+    water.unit_weight = within_limit(*g, positive_number(*g), input::kLargestUnitWeight, "N/m^3");
+  }
   return water;
 }
 
@@ -568,8 +644,15 @@ void read_acceleration_record(const Field& f, const std::string& scene_source, d
       fail_line("times must increase, got " + input::format_number(v[0]) + " after " +
                 input::format_number(motion.times.back()));
     }
+    const Vec2 a = scale * Vec2(v[1], v[2]);
+    if (a.cwiseAbs().maxCoeff() > input::kLargestAcceleration) {
+      fail_line("the acceleration (" + input::format_number(a.x()) + ", " +
+                input::format_number(a.y()) + ") m/s^2, scale included, is beyond " +
+                input::format_number(input::kLargestAcceleration) +
+                " m/s^2 (see docs/scene-format.md, \"Limits\")");
+    }
     motion.times.push_back(v[0]);
-    motion.accelerations.push_back(scale * Vec2(v[1], v[2]));
+    motion.accelerations.push_back(a);
   }
   if (motion.times.size() < 2) f.fail(path.string() + ": a record needs at least two rows");
 }
@@ -589,7 +672,8 @@ BaseMotion read_base_motion(const Field& f, const std::string& source) {
     const Field s = f.member("sine");
     s.expect_keys({"amplitude", "frequency", "cycles"});
     m.is_sine = true;
-    m.amplitude = s.member("amplitude").vec2("[ax, ay]");
+    m.amplitude = within_limit(s.member("amplitude"), s.member("amplitude").vec2("[ax, ay]"),
+                               input::kLargestAcceleration, "m/s^2");
     m.frequency = positive_number(s.member("frequency"));
     if (auto c = s.optional_member("cycles")) m.cycles = positive_number(*c);
   } else {
@@ -608,15 +692,20 @@ Scene read_scene(const Field& root, const std::string& source) {
   Scene scene;
   scene.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
-  if (auto g = root.optional_member("gravity")) scene.gravity = g->vec2("[gx, gy]");
+  if (auto g = root.optional_member("gravity")) {
+    scene.gravity = within_limit(*g, g->vec2("[gx, gy]"), input::kLargestAcceleration, "m/s^2");
+  }
   if (auto g = root.optional_member("plane")) scene.plane = input::read_plane(*g);
   const bool staged = root.has("stages");
   scene.control = read_control(root.member("control"), staged);
   scene.materials = read_materials(root.member("materials"), scene.plane);
   const std::vector<Field> block_fields =
       root.member("blocks").elements(1, "list at least one block");
-  for (const Field& b : block_fields) scene.blocks.push_back(read_block(b, scene.materials));
+  for (const Field& b : block_fields) {
+    scene.blocks.push_back(read_block(b, scene.materials, scene.plane));
+  }
   check_no_overlap(block_fields, scene.blocks);
+  check_coordinate_precision(block_fields, scene.blocks, scene.control);
   scene.joint_materials = read_joint_materials(root, scene.blocks.size());
   if (auto joints = root.optional_member("joints")) {
     scene.joints = read_joints(*joints, scene.blocks.size(), scene.joint_materials);
@@ -643,6 +732,10 @@ Scene read_scene(const Field& root, const std::string& source) {
     check_staged_run_length(root.member("control"), scene.stages, scene.control);
   }
   scene.warnings = unused_joint_material_warnings(scene, source);
+  if (std::none_of(scene.blocks.begin(), scene.blocks.end(), [](const BlockSpec& b) { return !b.fixed; })) {
+    scene.warnings.push_back(source + ": blocks: every block is fixed, so nothing will move (the "
+                             "run takes its steps and writes its output unchanged)");
+  }
   return scene;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "contact/joint_law.hpp"
+#include "kinematics/polygon.hpp"
 #include "kinematics/types.hpp"
 #include "solver/base_motion.hpp"
 #include "solver/joint_water.hpp"
@@ -165,6 +166,16 @@ struct PointLoadSpec {
   int block = -1;
 };
 
+// Shi's usual allowed penetration, as a share of w0 (half the larger side of the bounding
+// box of all blocks at the start): ControlSettings::allowed_penetration's "auto".
+inline constexpr double kAutoPenetrationShare = 4e-4;
+
+// Half the larger side of the bounding box of all the blocks' vertices (m): Shi's w0.
+inline double scene_w0(const std::vector<Polygon>& polygons) {
+  const Box box = bounding_box(polygons);
+  return 0.5 * (box.max - box.min).maxCoeff();
+}
+
 struct ControlSettings {
   // Time step (s). One value, or a list used cyclically (the paper alternates 0.01/0.02 s).
   std::vector<double> time_steps{0.01};
@@ -197,7 +208,7 @@ struct ControlSettings {
   // same answer to ~1e-10 relative (CholmodSolver::kCgTolerance).
   bool reuse_factor = true;
   // Largest penetration allowed at a contact after a step (m); nullopt means "auto":
-  // 4e-4 x w0 (Shi's usual value). A step exceeding it is cut and redone.
+  // kAutoPenetrationShare x w0 (Shi's usual value). A step exceeding it is cut and redone.
   std::optional<double> allowed_penetration;
   // The energy guard (docs/energy-balance.md): the run stops as diverged (exit 3) when the
   // unexplained energy gain passes this share of the scene's energy scale. Range > 0; the

@@ -180,6 +180,9 @@ double scheduled_time_step(const World& world) {
 bool is_finished(const World& world) {
   const ControlSettings& c = world.control;
   if (c.steps) return world.step >= *c.steps;
+  // A run takes at least one step: an end time within round-off of the start (the reader
+  // keeps it at least 1e-9 s) is one step of that length, not none.
+  if (world.step == 0) return false;
   const double typical = *std::min_element(c.time_steps.begin(), c.time_steps.end());
   return world.time >= *c.end_time - kTimeRoundOff * typical;
 }

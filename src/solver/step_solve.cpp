@@ -17,6 +17,8 @@ void reduce_terms(const BlockSystem& system, std::vector<RankOneTerm>& terms) {
 
 std::optional<Eigen::VectorXd> solve_system(StepWorkspace& ws, SolvePath path) {
   BlockSystem& system = ws.system;
+  // A scene of fixed blocks only has nothing to solve for: every step moves nothing.
+  if (system.unknowns() == 0) return Eigen::VectorXd(Eigen::VectorXd::Zero(6 * system.block_rows()));
   const bool reduced = system.reduced();
   if (reduced) {
     system.rhs = system.reduce(system.rhs);

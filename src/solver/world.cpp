@@ -14,8 +14,6 @@ namespace {
 // Shi's usual penalty: about 50 times the largest Young's modulus (per metre of thickness);
 // see the verification catalogue ("Shi's usual controls").
 constexpr double kAutoPenaltyFactor = 50.0;
-// Shi's usual allowed penetration, as a share of w0 (verification catalogue).
-constexpr double kAutoPenetrationShare = 4e-4;
 
 double resolve_penalty(const Scene& scene) {
   if (scene.control.penalty) return *scene.control.penalty;
@@ -69,8 +67,7 @@ World make_world(const Scene& scene) {
     polygons.push_back(spec.vertices);
   }
 
-  const Box box = bounding_box(polygons);
-  world.w0 = 0.5 * (box.max - box.min).maxCoeff();
+  world.w0 = scene_w0(polygons);
 
   world.allowed_penetration =
       scene.control.allowed_penetration.value_or(kAutoPenetrationShare * world.w0);
