@@ -355,14 +355,19 @@ StageSpec read_stage(const Field& f, const ControlSettings& control,
     f.fail("give either \"gravity_factor\" (a constant factor) or \"gravity_ramp\" ([from, to] "
            "over the stage), not both");
   }
+  // A factor of gravity: at most input::kLargestAcceleration as a number, so that the factor
+  // times the (bounded) gravity stays far from overflow.
+  const auto factor = [](const Field& g) {
+    return within_limit(g, non_negative_number(g), input::kLargestAcceleration, "");
+  };
   if (auto g = f.optional_member("gravity_factor")) {
-    s.gravity_from = s.gravity_to = non_negative_number(*g);
+    s.gravity_from = s.gravity_to = factor(*g);
   }
   if (auto g = f.optional_member("gravity_ramp")) {
     g->vec2("[from, to]");  // the shape first, then each factor at its own place
     const std::vector<Field> ends = g->elements(2, "");
-    s.gravity_from = non_negative_number(ends[0]);
-    s.gravity_to = non_negative_number(ends[1]);
+    s.gravity_from = factor(ends[0]);
+    s.gravity_to = factor(ends[1]);
     s.gravity_ramp = true;
   }
   s.time_steps = control.time_steps;
