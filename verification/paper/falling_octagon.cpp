@@ -150,7 +150,9 @@ std::string falling_report(const Options& opt, const std::vector<FallingRun>& ru
         "\"end x, y\" the rock's final centroid (the run-out starts at x = "
      << fixed(st.steps * st.tread, 2) << " m; resting on it, y = 0.46 to 0.5 m). "
         "Time is the simulated time reached (steps cut by the displacement-ratio control are "
-        "shorter than scheduled).";
+        "shorter than scheduled). Each setting's ratio is the paper's g2, a share of w0 (half "
+        "the scene's larger extent, 6.25 m); this program measures the ratio against each "
+        "block, so the rock runs with g2 x w0 / 0.5 m, the same metres a step.";
   if (opt.smoke) md << " **Smoke run: only the first steps of each setting.**";
   md << "\n\n";
   for (const FallingSetting& s : table1_settings()) {

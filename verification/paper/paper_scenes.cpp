@@ -106,7 +106,15 @@ Scene falling_octagon_scene(const FallingSetting& setting, int steps, RotationUp
                                 launch.velocity));
   s.control.time_steps = setting.time_steps;
   s.control.steps = steps;
-  s.control.max_displacement_ratio = setting.max_displacement_ratio;
+  // The paper's ratio is Shi's g2, a share of w0 (half the scene's larger extent); this
+  // program measures the ratio against each block's own half side (docs/contacts.md, "Search
+  // distance and step limit"). The rock gets the ratio that allows it the same metres a step
+  // as the paper's setting: g2 x w0 / (the rock's half side), 0.125 and 0.25 here.
+  std::vector<Polygon> polygons;
+  for (const BlockSpec& b : s.blocks) polygons.push_back(b.vertices);
+  const Box rock = bounding_box(s.blocks.back().vertices);
+  s.control.max_displacement_ratio =
+      setting.max_displacement_ratio * scene_w0(polygons) / (0.5 * (rock.max - rock.min).maxCoeff());
   return s;
 }
 
