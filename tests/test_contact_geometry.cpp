@@ -183,7 +183,7 @@ TEST_CASE("edge frames and projections of a 3-4-5 triangle", "[contact-geometry]
 // 2. wedge_score / is_convex_vertex
 // ---------------------------------------------------------------------------------------
 
-TEST_CASE("convex and reflex vertices of the L-shape; a straight vertex is convex",
+TEST_CASE("convex and reflex vertices of the L-shape, and a straight vertex is convex",
           "[contact-geometry]") {
   // L: v0 (0,0), v1 (2,0), v2 (2,1), v3 (1,1), v4 (1,2), v5 (0,2). Turning (cross product of
   // incoming and outgoing edge) at each vertex: left turns (+) everywhere except at v3,

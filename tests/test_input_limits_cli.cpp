@@ -126,7 +126,7 @@ TEST_CASE("an end time shorter than round-off of a step still takes that one ste
 }
 
 TEST_CASE("coordinates whose double-precision spacing is coarser than the contacts need are "
-          "refused; map coordinates are not",
+          "refused, map coordinates are not",
           "[input][cli]") {
   dda::test::TempDir dir("dda-limits-");
   // At 1e15 m doubles are 0.125 m apart: a block there cannot fall by less, and the
@@ -169,7 +169,7 @@ TEST_CASE("coordinates whose double-precision spacing is coarser than the contac
 }
 
 TEST_CASE("a plastic block that starts outside its yield surface is refused at its initial "
-          "stress; one inside runs",
+          "stress, and one inside runs",
           "[input][cli][plastic]") {
   dda::test::TempDir dir("dda-limits-");
   const json mc = {{"model", "mohr_coulomb"}, {"density", 2000}, {"young", 1e8}, {"poisson", 0.3},

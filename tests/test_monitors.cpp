@@ -58,15 +58,18 @@ std::map<std::string, std::vector<MonitorRow>> run_scene(const std::string& scen
 
 }  // namespace
 
-TEST_CASE("a monitor on a falling block follows g t^2 / 2; one on a fixed block stays",
+TEST_CASE("a monitor on a falling block follows g t^2 / 2, and one on a fixed block stays",
           "[monitors][cli]") {
   // DDA's step is exact for a constant acceleration (d = v0 dt + g dt^2 / 2, v = 2 d / dt -
   // v0), and uniform gravity strains no block, so every row matches the closed form to
   // round-off: 1e-12 m on displacements of ~1 m (positions are summed over 50 steps of
-  // increments of ~1e-2 m, each exact to ~1e-17 m).
+  // increments of ~1e-2 m, each exact to ~1e-17 m). Ratio 0.2: the block's step limit,
+  // 0.2 x 0.5 m, stays above the last step's fall g dt^2 x 50.5 = 5 cm, so no step is cut
+  // and every row lands on a multiple of dt.
   const std::string scene = R"json({
     "gravity": [0, -9.81],
-    "control": {"time_step": 0.01, "steps": 50, "output_every": 10},
+    "control": {"time_step": 0.01, "steps": 50, "output_every": 10,
+                "max_displacement_ratio": 0.2},
     "materials": {"rock": {"model": "elastic", "density": 2500, "young": 1e9, "poisson": 0.2}},
     "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
     "blocks": [

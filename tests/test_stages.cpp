@@ -370,7 +370,7 @@ TEST_CASE("bond_closed_contacts bonds closed contacts of joints with strength", 
 // ---------------------------------------------------------------------------------------
 // Runs
 
-TEST_CASE("stages: gravity at once breaks a cohesive block's bond; consolidated statically "
+TEST_CASE("stages: gravity at once breaks a cohesive block's bond, but consolidated statically "
           "under a gravity ramp first, it holds",
           "[stages][run]") {
   const double cohesion = cohesion_for(1.5);

@@ -3,11 +3,13 @@
 // 2 bad input (message names the place in the file), 3 the run diverged (results so far kept).
 // `dda cut` cuts a model into a scene (exit codes as for run: 2 bad model, 1 unwritable scene).
 // `dda material-point` does the same for one material point on a strain/stress path
-// (materials), with 3 for a path that could not be followed.
+// (materials), with 3 for a path that could not be followed. A command line CLI11 cannot
+// parse is bad input too (2, the bad argument named); --help and --version exit 0.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <string_view>
 
 #include "app/cut_command.hpp"
 #include "app/fos_command.hpp"
@@ -26,6 +28,35 @@ constexpr int kExitOk = 0;
 constexpr int kExitOutputError = 1;
 constexpr int kExitInputError = 2;
 constexpr int kExitDiverged = 3;
+
+constexpr const char* kSubcommands = "run, material-point, fos, cut";
+
+// An output path the user gave as "" would write into the current directory (or nowhere):
+// refused like any bad input, naming the option.
+void require_output_path(const std::string& path, std::string_view command) {
+  if (path.empty()) {
+    throw dda::InputError(std::string(command) +
+                          ": --out is empty; give a directory or file name");
+  }
+}
+
+// What a command line that CLI11 refused gets: one line naming the bad argument, exit 2
+// (CLI11's own codes, 106 to 114, are not the program's). `first` is argv[1] if any.
+int report_parse_error(const CLI::ParseError& e, const CLI::App& app, const char* first) {
+  std::string message;
+  if (first == nullptr) {
+    message = "no command given; use one of " + std::string(kSubcommands) + " (dda --help)";
+  } else if (first[0] != '-' && app.get_subcommands([&](const CLI::App* sub) {
+                                   return sub->get_name() == first;
+                                 }).empty()) {
+    message = "unknown command '" + std::string(first) + "'; use one of " + kSubcommands +
+              " (dda --help)";
+  } else {
+    message = std::string(e.what()) + " (dda --help, or dda COMMAND --help, lists the options)";
+  }
+  std::cerr << "dda: error: " << message << "\n";
+  return kExitInputError;
+}
 
 dda::Scene load_scene(const std::string& path) {
   if (path.empty()) {
@@ -93,6 +124,7 @@ int material_point_command(const std::string& spec_path, const std::string& out_
 int main(int argc, char** argv) {
   CLI::App app{"dda: two-dimensional Discontinuous Deformation Analysis"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("dda ") + DDA_VERSION);
   std::string scene_path;
   std::string out_dir = "dda-out";
   CLI::App* run = app.add_subcommand("run", "Run a scene (the built-in default scene if none is given)");
@@ -145,9 +177,19 @@ int main(int argc, char** argv) {
   cut->add_option("model", model_path, "Model file (JSON, see docs/model-format.md)");
   cut->add_option("--out", scene_out, "Scene file to write (JSON, see docs/scene-format.md)")
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return report_parse_error(e, app, argc > 1 ? argv[1] : nullptr);
+  }
 
   try {
+    if (run->parsed()) require_output_path(out_dir, "run");
+    if (point->parsed()) require_output_path(csv_file, "material-point");
+    if (fos_app->parsed()) require_output_path(fos_dir, "fos");
+    if (cut->parsed()) require_output_path(scene_out, "cut");
     if (run->parsed()) return run_command(scene_path, out_dir);
     if (point->parsed()) return material_point_command(spec_path, csv_file);
     if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos);
