@@ -272,3 +272,36 @@ TEST_CASE("the contact search and the step limit are the blocks', not the scene'
     CHECK(summary["cuts"]["displacement"].get<int>() > 0);
   }
 }
+
+TEST_CASE("a file nested deeper than 64 is refused with its line and column, for every reader",
+          "[input][cli]") {
+  // 200 000 opening brackets used to take gigabytes (every open level kept its whole place
+  // in the document as a string) and end in std::bad_alloc, exit 1.
+  dda::test::TempDir dir("dda-limits-");
+  const fs::path brackets = dir.path / "brackets.json";
+  dda::test::write_file(brackets, std::string(200000, '['));
+  // Nested objects, and brackets inside a string that must not count: the 65th level opens
+  // on line 64 (the first two levels on line 1, one more on each line after).
+  std::string objects = "{\"description\": \"[[[[\", \"x\": [\n";
+  for (int k = 0; k < 70; ++k) objects += "{\"a\":\n";
+  const fs::path nested = dir.path / "nested.json";
+  dda::test::write_file(nested, objects);
+  const std::string exe = dda::test::shell_quote(DDA_EXE);
+  const fs::path out = dir.path / "out";
+  for (const char* command : {"run", "cut", "material-point", "fos"}) {
+    INFO(command);
+    const auto r = dda::test::run_command(exe + " " + std::string(command) + " " +
+                                          dda::test::shell_quote(brackets.string()) + " --out " +
+                                          dda::test::shell_quote(out.string()));
+    INFO(r.output);
+    CHECK(r.exit_code == 2);
+    // The 65th bracket is the 65th character of line 1.
+    CHECK(dda::test::contains(r.output, "brackets.json: line 1, column 65: lists and objects "
+                                        "nested more than 64 deep"));
+  }
+  const auto r = dda::test::run_command(exe + " run " + dda::test::shell_quote(nested.string()) +
+                                        " --out " + dda::test::shell_quote(out.string()));
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(dda::test::contains(r.output, "nested.json: line 64, column 1: lists and objects nested"));
+}

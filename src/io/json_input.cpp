@@ -45,6 +45,12 @@ std::string parse_error_reason(const std::string& what) {
   return bracket == std::string::npos ? what : what.substr(bracket + 2);
 }
 
+// Lists and objects may nest this deep. Scenes, models and specs nest at most 5 deep
+// (blocks[i].vertices[j] holds [x, y]); each open level keeps its place in the document as a
+// string, so a file of 200 000 opening brackets took memory as the square of its depth
+// (gigabytes) before it was refused. 64 leaves room for any future key.
+constexpr std::size_t kMaxNesting = 64;
+
 // Builds the document from nlohmann's SAX events (the same result as json::parse), keeping
 // track of the place being parsed so that duplicate keys and overflowing numbers are reported
 // where they are.
@@ -82,11 +88,13 @@ class StrictDocumentBuilder {
 
   std::string next_value_path() const;
   json* place(json value);
+  [[noreturn]] void fail_too_deep() const;
   bool add(json value) {
     place(std::move(value));
     return true;
   }
   bool open(json container) {
+    if (stack_.size() >= kMaxNesting) fail_too_deep();
     std::string path = next_value_path();
     json* node = place(std::move(container));
     stack_.push_back(Frame{node, std::move(path), {}});
@@ -102,6 +110,33 @@ class StrictDocumentBuilder {
   json root_;
   std::vector<Frame> stack_;
 };
+
+// The SAX events carry no position, so the bracket that opens one level too many is found
+// by scanning the text (outside strings) to it; this runs only on a file being refused.
+void StrictDocumentBuilder::fail_too_deep() const {
+  std::size_t depth = 0, byte = 0;
+  bool in_string = false, escaped = false;
+  for (std::size_t i = 0; i < text_.size(); ++i) {
+    const char c = text_[i];
+    if (in_string) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxNesting) {
+        byte = i + 1;
+        break;
+      }
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  throw InputError(source_ + ": " + describe_position(text_, byte) +
+                   ": lists and objects nested more than " + std::to_string(kMaxNesting) +
+                   " deep; no input of this program nests more than 5");
+}
 
 std::string StrictDocumentBuilder::next_value_path() const {
   if (stack_.empty()) return "";
