@@ -129,17 +129,21 @@ TEST_CASE("coordinates whose double-precision spacing is coarser than the contac
           "refused, map coordinates are not",
           "[input][cli]") {
   dda::test::TempDir dir("dda-limits-");
-  // At 1e15 m doubles are 0.125 m apart: a block there cannot fall by less, and the
-  // allowed penetration (4e-4 x w0 = 2 mm) is far below that.
-  json far = base_scene();
-  for (json& b : far["blocks"]) {
-    for (json& v : b["vertices"]) v[0] = v[0].get<double>() + 1e15;
+  // At 1e11 m doubles are 1.5e-5 m apart: a block there cannot fall by less, and that is
+  // more than 1/1000 of the allowed penetration (4e-4 x w0 = 2 mm). (At 1e15 m, the issue's
+  // case, 0.125 m apart, the coordinate bound of 1e12 m refuses it first.)
+  for (const double offset : {1e11, 1e15}) {
+    json far = base_scene();
+    for (json& b : far["blocks"]) {
+      for (json& v : b["vertices"]) v[0] = v[0].get<double>() + offset;
+    }
+    const Run refused = run_scene(dir, "far", far);
+    INFO(refused.result.output);
+    CHECK(refused.result.exit_code == 2);
+    CHECK(dda::test::contains(refused.result.output, "far.json: blocks[0].vertices[0]: "));
+    CHECK(dda::test::contains(refused.result.output,
+                              offset == 1e11 ? "1.52587890625e-05 m apart" : "at most 1e+12 m"));
   }
-  const Run refused = run_scene(dir, "far", far);
-  INFO(refused.result.output);
-  CHECK(refused.result.exit_code == 2);
-  CHECK(dda::test::contains(refused.result.output, "far.json: blocks[0].vertices[0]: "));
-  CHECK(dda::test::contains(refused.result.output, "0.125 m apart"));
 
   // Map coordinates (1e6 m east, 5e6 m north: spaced 9.3e-10 m apart, 1/2e6 of the allowed
   // penetration) run, and the block falls as the same scene does at the origin (three steps
@@ -304,4 +308,53 @@ TEST_CASE("a file nested deeper than 64 is refused with its line and column, for
   INFO(r.output);
   CHECK(r.exit_code == 2);
   CHECK(dda::test::contains(r.output, "nested.json: line 64, column 1: lists and objects nested"));
+}
+
+TEST_CASE("an 80 000-vertex block is read (the crossing check is a sweep, not all pairs), and "
+          "a crossing in it is named by its edges",
+          "[input][cli]") {
+  // All pairs took 21 s for this block; the sweep takes milliseconds (bench_polygon.cpp).
+  dda::test::TempDir dir("dda-limits-");
+  constexpr int kVertices = 80000;
+  json circle = json::array();
+  for (int k = 0; k < kVertices; ++k) {
+    const double angle = 2.0 * M_PI * k / kVertices;
+    circle.push_back({2.0 + std::cos(angle), 2.0 + std::sin(angle)});
+  }
+  json s = base_scene();
+  s["blocks"][1]["vertices"] = circle;
+  const Run accepted = run_scene(dir, "circle", s);
+  INFO(accepted.result.output);
+  CHECK(accepted.result.exit_code == 0);
+  // Two neighbouring vertices swapped: edges 39999 and 40001 now cross.
+  std::swap(s["blocks"][1]["vertices"][40000], s["blocks"][1]["vertices"][40001]);
+  const Run refused = run_scene(dir, "crossed", s);
+  INFO(refused.result.output);
+  CHECK(refused.result.exit_code == 2);
+  CHECK(dda::test::contains(refused.result.output,
+                            "crossed.json: blocks[1].vertices: polygon crosses itself (edge 39999 "
+                            "(vertices 39999 to 40000) and edge 40001 (vertices 40001 to 40002)"));
+}
+
+TEST_CASE("coordinates of 1e200 or blocks 1e-300 m across are refused with the true reason, "
+          "never as repeated vertices",
+          "[input][cli]") {
+  // Squared distances used to overflow (1e200) or underflow (1e-300), and distinct corners
+  // were reported as "the same point".
+  dda::test::TempDir dir("dda-limits-");
+  json big = base_scene();
+  big["blocks"][1]["vertices"] = {{0, 1e200}, {1e200, 1e200}, {1e200, 2e200}, {0, 2e200}};
+  const Run r1 = run_scene(dir, "big", big);
+  INFO(r1.result.output);
+  CHECK(r1.result.exit_code == 2);
+  CHECK(dda::test::contains(r1.result.output, "big.json: blocks[1].vertices[0]: element 1 1e+200 m "
+                                              "is beyond what this program computes with: at most 1e+12 m"));
+  json tiny = base_scene();
+  tiny["blocks"][1]["vertices"] = {{0, 0}, {1e-300, 0}, {1e-300, 1e-300}, {0, 1e-300}};
+  const Run r2 = run_scene(dir, "tiny", tiny);
+  INFO(r2.result.output);
+  CHECK(r2.result.exit_code == 2);
+  CHECK(dda::test::contains(r2.result.output, "tiny.json: blocks[1].vertices: polygon is only "
+                                              "1.414213562373095e-300 m across"));
+  for (const Run* r : {&r1, &r2}) CHECK_FALSE(dda::test::contains(r->result.output, "same point"));
 }

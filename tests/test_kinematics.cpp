@@ -1,7 +1,9 @@
 // Polygon integrals, T, the mass matrix and frame rotations against hand-derived values
 // and an independent quadrature.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "kinematics/block_matrices.hpp"
 #include "kinematics/frames.hpp"
@@ -65,6 +67,70 @@ TEST_CASE("polygon moments: concave L-shape", "[kinematics]") {
   CHECK_THAT(m.sxx, WithinRel(11.0 / 12.0, kRoundOff));
   CHECK_THAT(m.syy, WithinRel(11.0 / 12.0, kRoundOff));
   CHECK_THAT(m.sxy, WithinRel(-1.0 / 3.0, kRoundOff));
+}
+
+TEST_CASE("the sweep's simplicity verdict is the all-pairs reference's on random and "
+          "degenerate polygons",
+          "[kinematics]") {
+  // Vertices on a 5 x 5 integer grid: coordinates and orientations are exact, so shared
+  // vertices, a vertex on another edge, collinear overlapping edges and zero-length edges all
+  // occur often (about half the polygons are not simple), and the two paths must agree on
+  // every one. Star-shaped polygons on a fine grid add simple ones with many vertices.
+  std::mt19937 rng(12345);
+  std::uniform_int_distribution<int> coordinate(0, 4), count(3, 12);
+  int simple = 0, not_simple = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    Polygon poly(static_cast<std::size_t>(count(rng)));
+    for (Vec2& v : poly) v = Vec2(coordinate(rng), coordinate(rng));
+    const bool reference = is_self_intersecting_reference(poly);
+    INFO("trial " << trial);
+    REQUIRE(is_self_intersecting(poly) == reference);
+    (reference ? not_simple : simple) += 1;
+  }
+  std::uniform_real_distribution<double> radius(0.5, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    Polygon star(200);
+    for (std::size_t k = 0; k < star.size(); ++k) {
+      const double angle = 2.0 * M_PI * static_cast<double>(k) / static_cast<double>(star.size());
+      // Rounded to 1/64: neighbouring spokes may land on the same line or point.
+      star[k] = (64.0 * radius(rng) * Vec2(std::cos(angle), std::sin(angle))).array().round() / 64.0;
+    }
+    if (trial % 2 == 1) std::swap(star[17], star[18 + trial % 50]);  // a crossing, mostly
+    const bool reference = is_self_intersecting_reference(star);
+    INFO("star " << trial);
+    REQUIRE(is_self_intersecting(star) == reference);
+    (reference ? not_simple : simple) += 1;
+  }
+  // Both verdicts were exercised many times.
+  CHECK(simple > 1000);
+  CHECK(not_simple > 1000);
+}
+
+TEST_CASE("first_crossing names the edges, and gives up past its pair budget", "[kinematics]") {
+  const EdgeCrossing bow = first_crossing({{0, 0}, {1, 1}, {1, 0}, {0, 1}}, 1000);
+  CHECK(bow.found);
+  CHECK(bow.edge_a == 0);  // (0,0)-(1,1) crosses (1,0)-(0,1)
+  CHECK(bow.edge_b == 2);
+  // A comb: 40 teeth 9.5 m long on a spine 0.5 m wide. Every tooth's edges lie side by side
+  // in x with every other's (about 160 x 160 / 2 pairs), so a budget of 100 is spent before
+  // the sweep ends; with room enough it finds the comb simple.
+  Polygon comb{{0.0, 0.0}};
+  for (int t = 0; t < 40; ++t) {
+    comb.push_back(Vec2(10.0, 2.0 * t));
+    comb.push_back(Vec2(10.0, 2.0 * t + 1.0));
+    if (t < 39) {
+      comb.push_back(Vec2(0.5, 2.0 * t + 1.0));
+      comb.push_back(Vec2(0.5, 2.0 * t + 2.0));
+    }
+  }
+  comb.push_back(Vec2(0.0, 79.0));
+  REQUIRE_FALSE(is_self_intersecting_reference(comb));
+  const EdgeCrossing limited = first_crossing(comb, 100);
+  CHECK(limited.too_intricate);
+  CHECK_FALSE(limited.found);
+  const EdgeCrossing enough = first_crossing(comb, 1'000'000);
+  CHECK_FALSE(enough.too_intricate);
+  CHECK_FALSE(enough.found);
 }
 
 TEST_CASE("polygon orientation, simplicity and containment", "[kinematics]") {

@@ -31,6 +31,11 @@ inline constexpr double kLargestAcceleration = 1e6;
 inline constexpr double kLargestForce = 1e18;
 // N/m^3: the water's unit weight, the densest matter at the largest gravity.
 inline constexpr double kLargestUnitWeight = kLargestDensity * kLargestAcceleration;
+// m: coordinates, at most 7 times the distance from the Earth to the Sun; and the smallest
+// polygon, 1 nm across. Between the two, squared lengths and the blocks' second moments
+// (size^4 x density) stay inside double precision's normal range.
+inline constexpr double kLargestCoordinate = 1e12;
+inline constexpr double kSmallestPolygon = 1e-9;
 // s: time steps, stage durations and the run's end time. The step loop itself gives up on
 // a step cut below 1e-9 of its schedule; below this the inertia term m/dt^2 would pass
 // 1e18 m and a run could not cover a second in 2^31 steps.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "io/input_limits.hpp"
 #include "kinematics/polygon.hpp"
 
 namespace dda::input {
@@ -12,7 +13,7 @@ namespace {
 
 double bbox_diagonal(const Polygon& poly) {
   const Box box = bounding_box(poly);
-  return (box.max - box.min).norm();
+  return (box.max - box.min).stableNorm();  // no underflow for a block 1e-300 m across
 }
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
@@ -53,17 +54,39 @@ bool all_collinear(const Polygon& poly, double diagonal) {
 
 }  // namespace
 
+// Edge pairs the simplicity sweep may test before it gives up (first_crossing): about a
+// second of work. A block outline of any size needs a few per edge (80 000 vertices on a
+// circle: about 2 each); only a comb of long teeth overlapping in x needs more.
+constexpr long kCrossingPairBudget = 50'000'000;
+
 // Order matters: a self-crossing polygon can have any signed area (a figure eight has zero),
 // so crossing is checked before area and orientation.
 void check_polygon_shape(const Field& f, const Polygon& poly) {
   const double diagonal = bbox_diagonal(poly);
+  // Below this size areas and second moments (diagonal^4) leave double precision's normal
+  // range; the coordinates' own bound (read_polygon) keeps the squares finite above.
+  if (diagonal < kSmallestPolygon) {
+    f.fail("polygon is only " + format_number(diagonal) + " m across; a block or region must be at "
+           "least " + format_number(kSmallestPolygon) + " m across (see docs/scene-format.md, "
+           "\"Limits\")");
+  }
   check_no_repeated_vertex(f, poly, diagonal);
   if (all_collinear(poly, diagonal)) {
     f.fail("polygon has zero area: all its vertices lie on one line");
   }
-  if (is_self_intersecting(poly)) {
-    f.fail("polygon crosses itself (two of its edges cross or touch); list the vertices in "
-           "order around the boundary");
+  const EdgeCrossing crossing = first_crossing(poly, kCrossingPairBudget);
+  if (crossing.too_intricate) {
+    f.fail("polygon of " + std::to_string(poly.size()) + " vertices has more than " +
+           std::to_string(kCrossingPairBudget) + " pairs of edges side by side, too many to check "
+           "that it does not cross itself; split it into simpler blocks");
+  }
+  if (crossing.found) {
+    const auto edge = [&](int k) {
+      return "edge " + std::to_string(k) + " (vertices " + std::to_string(k) + " to " +
+             std::to_string((static_cast<std::size_t>(k) + 1) % poly.size()) + ")";
+    };
+    f.fail("polygon crosses itself (" + edge(crossing.edge_a) + " and " + edge(crossing.edge_b) +
+           " cross or touch); list the vertices in order around the boundary");
   }
   const double area = signed_area(poly);
   if (std::abs(area) <= kRelativeTolerance * diagonal * diagonal) {
@@ -75,7 +98,7 @@ void check_polygon_shape(const Field& f, const Polygon& poly) {
 Polygon read_polygon(const Field& f) {
   Polygon poly;
   for (const Field& vertex : f.elements(3, "a polygon needs at least 3 vertices")) {
-    poly.push_back(vertex.vec2("[x, y]"));
+    poly.push_back(within_limit(vertex, vertex.vec2("[x, y]"), kLargestCoordinate, "m"));
   }
   check_polygon_shape(f, poly);
   return poly;

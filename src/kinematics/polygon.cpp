@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace dda {
 namespace {
@@ -71,21 +73,100 @@ Moments polygon_moments(const Polygon& poly) {
   return m;
 }
 
-bool is_self_intersecting(const Polygon& poly) {
+namespace {
+
+// Edges i and j (i != j) share a vertex.
+bool neighbours(std::size_t i, std::size_t j, std::size_t n) {
+  return (i + 1) % n == j || (j + 1) % n == i;
+}
+
+// The rule both paths apply to a pair of edges i < j: neighbours must not fold back onto each
+// other, other edges must not touch at all.
+bool pair_breaks_simplicity(const Polygon& poly, std::size_t i, std::size_t j) {
+  const std::size_t n = poly.size();
+  const Vec2& a = poly[i];
+  const Vec2& b = poly[(i + 1) % n];
+  const Vec2& c = poly[j];
+  const Vec2& d = poly[(j + 1) % n];
+  if (!neighbours(i, j, n)) return segments_touch(a, b, c, d);
+  // Neighbours: the turn at the shared vertex folds back when the three are collinear and
+  // the two edges leave it on the same side.
+  const bool i_first = (i + 1) % n == j;
+  const Vec2& from = i_first ? a : c;
+  const Vec2& shared = i_first ? b : d;
+  const Vec2& to = i_first ? d : b;
+  return orient(from, shared, to) == 0.0 && (from - shared).dot(to - shared) > 0.0;
+}
+
+}  // namespace
+
+bool is_self_intersecting_reference(const Polygon& poly) {
   const std::size_t n = poly.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2& a = poly[i];
-    const Vec2& b = poly[(i + 1) % n];
-    if (a == b) return true;  // a zero-length edge
-    // Neighbour edge (i, i+1) then (i+1, i+2): they overlap when the turn at b folds back.
-    const Vec2& c = poly[(i + 2) % n];
-    if (n >= 3 && orient(a, b, c) == 0.0 && (a - b).dot(c - b) > 0.0) return true;
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // edges n-1 and 0 are neighbours
-      if (segments_touch(a, b, poly[j], poly[(j + 1) % n])) return true;
+    if (poly[i] == poly[(i + 1) % n]) return true;  // a zero-length edge
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (pair_breaks_simplicity(poly, i, j)) return true;
     }
   }
   return false;
+}
+
+EdgeCrossing first_crossing(const Polygon& poly, long pair_budget) {
+  const std::size_t n = poly.size();
+  EdgeCrossing out;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (poly[i] == poly[(i + 1) % n]) {
+      out.found = true;
+      out.edge_a = out.edge_b = static_cast<int>(i);
+      return out;
+    }
+  }
+  // Edges in order of their left end; the active ones are those whose right end is not left
+  // of the present edge's left end. Two edges whose closed boxes do not overlap cannot touch,
+  // so every pair that can break simplicity is tested once.
+  struct Span {
+    double min_x, max_x, min_y, max_y;
+    std::size_t edge;
+  };
+  std::vector<Span> spans(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = poly[i];
+    const Vec2& b = poly[(i + 1) % n];
+    spans[i] = {std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()),
+                std::max(a.y(), b.y()), i};
+  }
+  std::sort(spans.begin(), spans.end(),
+            [](const Span& p, const Span& q) { return p.min_x < q.min_x; });
+  std::vector<const Span*> active;
+  long tested = 0;
+  for (const Span& e : spans) {
+    std::size_t kept = 0;
+    for (const Span* f : active) {
+      if (f->max_x < e.min_x) continue;  // ended before e begins: drop it
+      active[kept++] = f;
+      if (++tested > pair_budget) {  // every pair side by side in x costs a look
+        out.too_intricate = true;
+        return out;
+      }
+      if (f->max_y < e.min_y || e.max_y < f->min_y) continue;
+      const std::size_t i = std::min(e.edge, f->edge), j = std::max(e.edge, f->edge);
+      if (pair_breaks_simplicity(poly, i, j)) {
+        out.found = true;
+        out.edge_a = static_cast<int>(i);
+        out.edge_b = static_cast<int>(j);
+        return out;
+      }
+    }
+    active.resize(kept);
+    active.push_back(&e);
+  }
+  return out;
+}
+
+bool is_self_intersecting(const Polygon& poly) {
+  return first_crossing(poly, std::numeric_limits<long>::max()).found;
 }
 
 bool contains_point(const Polygon& poly, const Vec2& p) {

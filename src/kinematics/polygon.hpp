@@ -25,8 +25,25 @@ Moments polygon_moments(const Polygon& poly);
 double signed_area(const Polygon& poly);
 
 // True when two edges that are not neighbours touch or cross, or neighbours overlap:
-// the polygon is not simple.
+// the polygon is not simple. A sweep along x (first_crossing); no pair budget.
 bool is_self_intersecting(const Polygon& poly);
+
+// The simple reference path: every pair of edges, O(n^2). Same verdicts as the sweep
+// (tests/test_kinematics.cpp compares them on random and degenerate polygons).
+bool is_self_intersecting_reference(const Polygon& poly);
+
+// The first pair of edges found that makes the polygon not simple (edge k runs from
+// vertex k to vertex k + 1; a == b for a zero-length edge, b == a + 1 for neighbours that
+// fold back), by a sweep along x that tests only edges whose boxes overlap: O(n log n) plus
+// the number of edge pairs whose x-ranges overlap (a few per edge for any block outline).
+// `too_intricate` is set, and the search stopped, when more than `pair_budget` pairs side by
+// side in x would be looked at (a comb of long teeth); then nothing is known.
+struct EdgeCrossing {
+  bool found = false;
+  bool too_intricate = false;
+  int edge_a = -1, edge_b = -1;
+};
+EdgeCrossing first_crossing(const Polygon& poly, long pair_budget);
 
 // Point in polygon (crossing number); points on the boundary count as inside.
 bool contains_point(const Polygon& poly, const Vec2& p);
