@@ -13,6 +13,7 @@
 
 #include "app/cut_command.hpp"
 #include "app/fos_command.hpp"
+#include "app/interrupt.hpp"
 #include "app/progress.hpp"
 #include "io/material_point_output.hpp"
 #include "io/material_point_reader.hpp"
@@ -76,15 +77,26 @@ int run_command(const std::string& scene_path, const std::string& out_dir) {
   dda::OutputWriter writer(out_dir, scene);
   dda::ProgressBar progress(dda::run_length(scene), dda::run_unit(scene));
   const int every = scene.control.output_every;
+  dda::watch_for_interrupts();
   const auto observe = [&](const dda::World& w, const dda::RunStats&) {
     if (w.step % every == 0 || dda::is_finished(w)) writer.record(w);
     progress.update(dda::run_position(scene, w));
-    return true;
+    return dda::interrupt_signal() == 0;  // stop after this step, keeping what was written
   };
-  const dda::RunStats stats = dda::run(world, observe);
+  dda::RunStats stats = dda::run(world, observe);
   progress.finish();
-  if (stats.diverged && world.step % every != 0) writer.record(world);  // keep the last state
+  if (stats.interrupted) {
+    stats.message = "interrupted (signal " + std::to_string(dda::interrupt_signal()) +
+                    ") after step " + std::to_string(world.step);
+  }
+  const bool last_recorded = world.step % every == 0 || dda::is_finished(world);
+  if ((stats.diverged || stats.interrupted) && !last_recorded) writer.record(world);  // keep the last state
   writer.finish(world, stats);
+  if (stats.interrupted) {
+    std::cerr << "dda: " << stats.message << " at t = " << world.time << " s; results up to there are in "
+              << out_dir << " (summary.json: \"interrupted\": true)\n";
+    return dda::interrupted_exit_code();
+  }
   if (stats.diverged) {
     std::cerr << "dda: error: the run diverged at " << stats.message
               << "; results up to there are in " << out_dir << "\n";
@@ -105,10 +117,29 @@ int material_point_command(const std::string& spec_path, const std::string& out_
   }
   const dda::MaterialPointSpec spec = dda::read_material_point_file(spec_path);
   dda::MaterialPointCsv csv(out_file);  // before the run: an unwritable path fails early
-  const dda::MaterialPointRun result =
-      dda::run_material_point(spec.parameters(), spec.initial_stress, spec.path);
-  csv.write(result.rows);
-  const std::size_t increments = result.rows.empty() ? 0 : result.rows.size() - 1;
+  double total = 0.0;
+  for (const dda::PathSegment& segment : spec.path) total += segment.steps;
+  dda::ProgressBar progress(total, "increments");
+  dda::watch_for_interrupts();
+  // Rows are written as they come (none kept); flushed every so many so that a run stopped
+  // any way but by a signal still keeps nearly all of them, and at the end.
+  constexpr int kFlushEvery = 4096;
+  const dda::MaterialPointOutcome result = dda::run_material_point(
+      spec.parameters(), spec.initial_stress, spec.path, [&](const dda::MaterialPointRow& row) {
+        csv.write_row(row);
+        if (row.step % kFlushEvery == 0) csv.flush();
+        progress.update(row.step);
+        return dda::interrupt_signal() == 0;
+      });
+  csv.flush();
+  progress.finish();
+  const int increments = result.increments;
+  if (result.stopped) {
+    std::cerr << "dda: material point interrupted (signal " << dda::interrupt_signal()
+              << ") after increment " << increments << "; the rows up to there are in "
+              << out_file << "\n";
+    return dda::interrupted_exit_code();
+  }
   if (!result.ok) {
     std::cerr << "dda: error: " << spec_path << ": the path stopped at " << result.message
               << "; the " << increments << " increments before it are in " << out_file << "\n";

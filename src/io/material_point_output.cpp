@@ -31,12 +31,19 @@ MaterialPointCsv::MaterialPointCsv(std::filesystem::path path) : path_(std::move
 }
 
 void MaterialPointCsv::write(std::span<const MaterialPointRow> rows) {
-  for (const MaterialPointRow& row : rows) {
-    out_ << row.step;
-    for (int i = 0; i < 3; ++i) out_ << ',' << format_full_precision(row.strain[i]);
-    for (int i = 0; i < 4; ++i) out_ << ',' << format_full_precision(row.stress[i]);
-    out_ << ',' << format_full_precision(row.state.eps_p) << ',' << branch_name(row.branch) << '\n';
-  }
+  for (const MaterialPointRow& row : rows) write_row(row);
+  flush();
+}
+
+void MaterialPointCsv::write_row(const MaterialPointRow& row) {
+  out_ << row.step;
+  for (int i = 0; i < 3; ++i) out_ << ',' << format_full_precision(row.strain[i]);
+  for (int i = 0; i < 4; ++i) out_ << ',' << format_full_precision(row.stress[i]);
+  out_ << ',' << format_full_precision(row.state.eps_p) << ',' << branch_name(row.branch) << '\n';
+  if (!out_) fail("cannot write", path_);
+}
+
+void MaterialPointCsv::flush() {
   out_.flush();
   if (!out_) fail("cannot write", path_);
 }

@@ -21,6 +21,10 @@ class MaterialPointCsv {
   // Appends the rows and flushes. Throws std::runtime_error when the file cannot be written.
   void write(std::span<const MaterialPointRow> rows);
 
+  // Appends one row (buffered: flush() writes it out). Throws when the stream has failed.
+  void write_row(const MaterialPointRow& row);
+  void flush();
+
  private:
   std::filesystem::path path_;
   std::ofstream out_;

@@ -1,10 +1,11 @@
-#include <algorithm>
 #include "io/output.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -274,11 +275,40 @@ json block_json(const Block& b, int index) {
 
 }  // namespace
 
+namespace {
+
+// A reused output directory: the files of the kinds a run writes (docs/output-format.md) are
+// removed first, so that an earlier, longer run's VTK frames or a monitors.csv this scene
+// would not write are not taken for this run's. Nothing else in the directory is touched.
+void remove_earlier_run(const fs::path& dir) {
+  std::error_code ec;
+  for (const char* name : {"summary.json", "history.csv", "monitors.csv", "blocks.pvd",
+                           "contacts.pvd"}) {
+    fs::remove(dir / name, ec);
+    if (ec) fail("cannot remove an earlier run's file (" + ec.message() + ")", dir / name);
+  }
+  if (!fs::is_directory(dir / "vtk", ec)) return;
+  std::vector<fs::path> frames;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir / "vtk", ec)) {
+    const std::string name = entry.path().filename().string();
+    const bool frame = (name.rfind("step_", 0) == 0 || name.rfind("contacts_", 0) == 0) &&
+                       entry.path().extension() == ".vtp";
+    if (frame) frames.push_back(entry.path());
+  }
+  for (const fs::path& frame : frames) {
+    fs::remove(frame, ec);
+    if (ec) fail("cannot remove an earlier run's file (" + ec.message() + ")", frame);
+  }
+}
+
+}  // namespace
+
 OutputWriter::OutputWriter(std::filesystem::path dir, const Scene& scene)
     : dir_(std::move(dir)), scene_(scene) {
   std::error_code ec;
   fs::create_directories(dir_ / "vtk", ec);
   if (ec) fail("cannot create directory (" + ec.message() + ")", dir_ / "vtk");
+  remove_earlier_run(dir_);
   const fs::path history = dir_ / "history.csv";
   history_.open(history, std::ios::trunc);
   if (!history_) fail("cannot open", history);
@@ -437,6 +467,8 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
       {"end_time", world.time},
       {"diverged", stats.diverged},
       {"message", stats.message},
+      // Stopped by SIGINT or SIGTERM before its end (then also "message" says so).
+      {"interrupted", stats.interrupted},
       {"blocks", blocks},
   };
   // Replace rather than throw on invalid UTF-8 (a scene path or message from the system).

@@ -146,10 +146,12 @@ MixedIncrement solve_mixed_increment(const MaterialParameters& params, const Mat
   return inc;
 }
 
-MaterialPointRun run_material_point(const MaterialParameters& params, const Vec4& initial_stress,
-                                    std::span<const PathSegment> path,
-                                    const MaterialPointSettings& settings) {
-  MaterialPointRun run;
+MaterialPointOutcome run_material_point(const MaterialParameters& params,
+                                        const Vec4& initial_stress,
+                                        std::span<const PathSegment> path,
+                                        const MaterialPointSink& sink,
+                                        const MaterialPointSettings& settings) {
+  MaterialPointOutcome run;
   std::array<Control, 3> control = {Control::Strain, Control::Strain, Control::Strain};
   Vec3 target = Vec3::Zero();
 
@@ -164,14 +166,17 @@ MaterialPointRun run_material_point(const MaterialParameters& params, const Vec4
     row.branch = at.result.branch;
     row.active_planes = at.result.active_planes;
     row.residuals = std::move(residuals);
-    run.rows.push_back(std::move(row));
+    run.increments = step;
+    if (!sink(row)) run.stopped = true;
+    return !run.stopped;
   };
-  record(0, {});
+  const bool go_on = record(0, {});
   if (!at.result.status.converged) {
     run.ok = false;
     run.message = "the initial stress: " + at.result.status.reason;
     return run;
   }
+  if (!go_on) return run;
 
   const Driver driver(params, initial_stress, settings);
   int step = 0;
@@ -194,9 +199,25 @@ MaterialPointRun run_material_point(const MaterialParameters& params, const Vec4
             "segment " + std::to_string(seg) + ", increment " + std::to_string(k) + ": " + message;
         return run;
       }
-      record(++step, std::move(residuals));
+      if (!record(++step, std::move(residuals))) return run;
     }
   }
+  return run;
+}
+
+MaterialPointRun run_material_point(const MaterialParameters& params, const Vec4& initial_stress,
+                                    std::span<const PathSegment> path,
+                                    const MaterialPointSettings& settings) {
+  MaterialPointRun run;
+  const MaterialPointOutcome outcome = run_material_point(
+      params, initial_stress, path,
+      [&run](const MaterialPointRow& row) {
+        run.rows.push_back(row);
+        return true;
+      },
+      settings);
+  run.ok = outcome.ok;
+  run.message = outcome.message;
   return run;
 }
 

@@ -31,6 +31,7 @@ RunStats run(World& world, const StepObserver& observe) {
       break;
     }
     keep_going = observe(world, stats);
+    if (!keep_going && !is_finished(world)) stats.interrupted = true;
   }
   stats.wall_time_s = elapsed();
   return stats;

@@ -37,6 +37,9 @@ struct RunStats {
   // The most block pairs the broad phase handed to the narrow phase in a step (pairs within
   // their search distance, fixed pairs included): what the contact search costs.
   long candidate_pairs_max = 0;
+  // The observer stopped the run before its end (dda run: a SIGINT or SIGTERM); the state
+  // reached is complete, only shorter than asked.
+  bool interrupted = false;
   double deepest_penetration = 0.0;   // m, deepest contact penetration after any accepted step
   double largest_normal_force = 0.0;  // N/m, largest contact normal force after any accepted step
   // Times the penalty was raised: always 0 since the penalty stays as the scene sets it

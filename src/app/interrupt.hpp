@@ -1,0 +1,18 @@
+// SIGINT (Ctrl-C) and SIGTERM for the long commands: the first one sets a flag that the
+// command polls, so it stops at the end of its current step or increment and keeps and
+// indexes what it wrote; a second one ends the program at once (the default action).
+#pragma once
+
+namespace dda {
+
+// Installs the handlers (once).
+void watch_for_interrupts();
+
+// The signal received (SIGINT or SIGTERM), or 0.
+int interrupt_signal();
+
+// The exit code of a command stopped by that signal: 128 + its number, as a shell reports
+// a program killed by it (130 for SIGINT, 143 for SIGTERM).
+int interrupted_exit_code();
+
+}  // namespace dda
