@@ -37,7 +37,8 @@ struct RunStats {
   // The most block pairs the broad phase handed to the narrow phase in a step (pairs within
   // their search distance, fixed pairs included): what the contact search costs.
   long candidate_pairs_max = 0;
-  // The observer stopped the run before its end (dda run: a SIGINT or SIGTERM); the state
+  // The observer stopped the run before its end: dda run's does so on SIGINT or SIGTERM
+  // (summary.json's "interrupted"), a fos trial's once its verdict is known. The state
   // reached is complete, only shorter than asked.
   bool interrupted = false;
   double deepest_penetration = 0.0;   // m, deepest contact penetration after any accepted step
