@@ -19,7 +19,7 @@ const std::string& default_scene_text() {
   "control": {
     "time_step": 0.005,
     "end_time": 3.0,
-    "max_displacement_ratio": 0.01,
+    "max_displacement_ratio": 0.05,
     "dynamic_coefficient": 1.0,
     "output_every": 10
   },
