@@ -1,0 +1,173 @@
+// The paper reproduction's key numbers (issue 13, item 1, in part): the full run of
+// `dda_verify_paper` (about 2 s), its CSVs read back and held to closed forms and to the
+// physics of each case. Each tolerance says why it is what it is.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_helpers.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A CSV as rows of named cells.
+using Row = std::map<std::string, std::string>;
+
+std::vector<Row> read_csv(const fs::path& path) {
+  const std::vector<std::string> lines = dda::test::read_lines(path);
+  auto split = [](const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  std::vector<Row> rows;
+  if (lines.empty()) return rows;
+  const std::vector<std::string> header = split(lines[0]);
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    const std::vector<std::string> cells = split(lines[k]);
+    Row row;
+    for (std::size_t c = 0; c < header.size() && c < cells.size(); ++c) row[header[c]] = cells[c];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+double number(const Row& row, const std::string& key) { return std::stod(row.at(key)); }
+
+// The full reproduction, run once for all the cases below.
+const fs::path& full_run() {
+  static const dda::test::TempDir dir("dda-paper-full-");  // removed when the process ends
+  static const bool ran = [] {
+    const auto r = dda::test::run_command(dda::test::shell_quote(DDA_PAPER_EXE) + " --out " +
+                                          dda::test::shell_quote(dir.path.string()));
+    if (r.exit_code != 0) throw std::runtime_error("dda_verify_paper failed:\n" + r.output);
+    return true;
+  }();
+  (void)ran;
+  return dir.path;
+}
+
+bool rotation_exact(const std::string& treatment) {
+  return treatment == "post_adjustment" || treatment == "local_frame" ||
+         treatment == "local_frame_as_printed" || treatment == "finite_rotation";
+}
+
+}  // namespace
+
+TEST_CASE("paper reproduction: a freely spinning block's area follows each treatment's closed "
+          "form",
+          "[paper]") {
+  // No force acts, so every step turns the block by r0 = omega dt exactly (omega = 1 rad/s)
+  // and the treatments differ only in how they place the vertices: Shi's first-order T
+  // stretches the block by 1 + r0^2 per step, the second-order update by 1 + r0^4/4, and the
+  // exact rotations not at all (docs/scene-format.md, rotation treatments). After N steps
+  // the area error is that factor to the N, less 1. Round-off: each step's area carries
+  // ~1e-16 relative, so over at most 1257 steps the area ratio agrees to 1e-12 (measured:
+  // 4e-14 at worst), and the exact treatments stay below 1e-13 (measured: 1.9e-15).
+  int checked = 0;
+  for (const Row& row : read_csv(full_run() / "speed_spin.csv")) {
+    const std::string t = row.at("treatment");
+    const double dt = number(row, "dt"), error = number(row, "area_rel_error");
+    const int n = std::stoi(row.at("steps"));
+    INFO(t << " dt " << dt << " steps " << n << " area error " << error);
+    if (t == "original" || t == "second_order") {
+      const double per_step = t == "original" ? 1.0 + dt * dt : 1.0 + std::pow(dt, 4) / 4.0;
+      const double expected = std::pow(per_step, n) - 1.0;
+      CHECK(std::abs(error - expected) <= 1e-12 * (1.0 + expected));
+      ++checked;
+    } else if (rotation_exact(t)) {
+      CHECK(std::abs(error) < 1e-13);
+      ++checked;
+    }
+  }
+  CHECK(checked == 30);  // six treatments x five time steps
+}
+
+TEST_CASE("paper reproduction: the rigid pendulum's period converges at second order with "
+          "finite_rotation",
+          "[paper]") {
+  // Against CVODE's rigid pendulum (1e-10 tolerances). The step's phase error is of second
+  // order in dt for a treatment that rotates exactly within the step (finite_rotation): the
+  // period error falls by 4 per halving. Measured orders 1.97 and 1.94 between dt = 0.04,
+  // 0.02 and 0.01 s; [1.8, 2.2] would catch a first-order error (order 1, as Shi's T gives:
+  // 0.50, 0.25, 0.11) or a lost one. Below dt = 0.01 s the error flattens (1.2e-5, 4.8e-6),
+  // so the order is taken where the time step dominates.
+  std::map<std::string, std::map<double, double>> period_error;
+  for (const Row& row : read_csv(full_run() / "speed_pendulum.csv")) {
+    period_error[row.at("treatment")][number(row, "dt")] = number(row, "period_rel_error");
+  }
+  const auto& fr = period_error.at("finite_rotation");
+  for (const auto& [coarse, fine] : {std::pair{0.04, 0.02}, std::pair{0.02, 0.01}}) {
+    const double order = std::log2(fr.at(coarse) / fr.at(fine));
+    INFO("dt " << coarse << " -> " << fine << ": order " << order);
+    CHECK(order >= 1.8);
+    CHECK(order <= 2.2);
+  }
+  // At dt = 0.01 s: 3.9e-5 measured; 1e-4 is what second order from 5.9e-4 at 0.04 s allows
+  // (5.9e-4 / 16 = 3.7e-5) with a factor 2.7 for the higher-order terms.
+  CHECK(fr.at(0.01) < 1e-4);
+  // Shi's first-order T: every halving of dt roughly halves the error (orders 0.85 to 1.19
+  // measured over the sweep); at dt = 0.01 s it is still above 10 % (0.108).
+  const auto& original = period_error.at("original");
+  CHECK(original.at(0.01) > 0.1);
+  const double original_order = std::log2(original.at(0.04) / original.at(0.01)) / 2.0;
+  INFO("original: mean order " << original_order);
+  CHECK(original_order > 0.8);
+  CHECK(original_order < 1.3);
+}
+
+TEST_CASE("paper reproduction: only finite_rotation keeps the swinging octagon's energy",
+          "[paper]") {
+  // The paper's octagon pinned at a vertex and released from rest: a conservative pendulum
+  // never swings past its mirror position (pi from the start) and never holds more
+  // mechanical energy than it started with. The finding of this reproduction (its report,
+  // "Energy and swing", and docs/scene-format.md on finite_rotation): the paper's own
+  // local_frame, Ke's post_adjustment and the others gain energy and swing over the top;
+  // finite_rotation does not.
+  std::map<std::string, Row> by_treatment;
+  for (const Row& row : read_csv(full_run() / "swinging_summary.csv")) {
+    by_treatment[row.at("treatment")] = row;
+  }
+  const Row& fr = by_treatment.at("finite_rotation");
+  CHECK(fr.at("status") == "completed");
+  CHECK(fr.at("gains_energy") == "0");
+  CHECK(number(fr, "max_swing") <= M_PI);
+  // The swing reaches its mirror position to 3e-5 rad (measured 3.14156): the scheme's
+  // damping of a pinned swing over 5000 steps is that small.
+  CHECK(number(fr, "max_swing") > M_PI - 1e-4);
+  for (const char* t : {"original", "second_order", "post_adjustment", "local_frame"}) {
+    INFO(t);
+    CHECK(by_treatment.at(t).at("gains_energy") == "1");
+    CHECK(number(by_treatment.at(t), "max_swing") > M_PI);
+  }
+}
+
+TEST_CASE("paper reproduction: the falling octagon keeps its area within its elastic strain "
+          "under every exact rotation",
+          "[paper]") {
+  // Table 1. A rotation-exact treatment changes the rock's area only by elastic strain: at
+  // rest on the run-out under its own weight about rho g h / E = 28 kN/m^3 x 1 m / 2 GPa =
+  // 1.4e-5 (measured 3e-8 to 4.4e-6). Shi's first-order T inflates it by tens of per cent
+  // (measured 31 % to 108 %), the paper's point.
+  int checked = 0;
+  for (const Row& row : read_csv(full_run() / "falling_summary.csv")) {
+    const std::string t = row.at("treatment");
+    INFO(t << " " << row.at("setting"));
+    CHECK(row.at("status") == "completed");
+    if (rotation_exact(t)) {
+      CHECK(number(row, "area_rel_error") < 1.4e-5);
+      ++checked;
+    } else if (t == "original") {
+      CHECK(number(row, "area_rel_error") > 0.2);
+      ++checked;
+    }
+  }
+  CHECK(checked == 15);  // five treatments x three settings
+}
