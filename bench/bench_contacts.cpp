@@ -30,7 +30,7 @@ enum class Warmup {
 
 double kinetic_energy(const dda::World& world) {
   double e = 0.0;
-  for (const dda::Block& b : world.blocks) e += dda::kinetic_energy(b);
+  for (const dda::Block& b : world.blocks) e += dda::kinetic_energy(world, b);
   return e;
 }
 

@@ -105,7 +105,7 @@ ControlSettings read_control(const Field& f, bool staged) {
   f.expect_keys({"time_step", "steps", "end_time", "max_displacement_ratio",
                  "dynamic_coefficient", "rotation_update", "penalty", "output_every",
                  "max_open_close", "max_augmentations", "allowed_penetration",
-                 "energy_tolerance", "linear_solver"});
+                 "energy_tolerance", "linear_solver", "inertia"});
   ControlSettings c;
   c.time_steps = read_time_steps(f.member("time_step"));
   read_run_length(f, c, staged);
@@ -144,6 +144,21 @@ ControlSettings read_control(const Field& f, bool staged) {
       g->fail("unknown linear solver \"" + name + "\" (known: \"reuse\", \"factorise\")");
     }
     c.reuse_factor = name == "reuse";
+  }
+  if (auto g = f.optional_member("inertia")) {
+    const std::string name = g->string();
+    if (name == "pseudo_rigid") {
+      if (!keeps_block_frame(c.rotation_update)) {
+        g->fail("\"pseudo_rigid\" needs a rotation_update that keeps a block frame "
+                "(\"local_frame\", \"local_frame_as_printed\" or \"finite_rotation\"), got \"" +
+                std::string(rotation_update_name(c.rotation_update)) + "\"");
+      }
+      c.inertia = Inertia::PseudoRigid;
+    } else if (name == "shi") {
+      c.inertia = Inertia::Shi;
+    } else if (name != "auto") {
+      g->fail("unknown inertia \"" + name + "\" (known: \"auto\", \"pseudo_rigid\", \"shi\")");
+    }
   }
   return c;
 }

@@ -1,6 +1,7 @@
 #include "solver/assembly.hpp"
 
 #include "kinematics/block_matrices.hpp"
+#include "kinematics/rotating_inertia.hpp"
 
 namespace dda {
 namespace {
@@ -9,12 +10,22 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
                      Eigen::Ref<Vec6> f) {
   const Block& b = world.blocks[static_cast<std::size_t>(index)];
   const LinearT t = step_t(ctx, index);
-  const Mat6 mass = mass_matrix(t, b.moments, b.density);
+  const double density = density_now(world, b);
+  const Mat6 mass = mass_matrix(t, b.moments, density);
   const Vec6 v0 = ctx.dynamic_coefficient * b.velocity;
   k += (2.0 / (ctx.dt * ctx.dt)) * mass;
   // In the ground's frame under base shaking, gravity less the ground's acceleration.
-  f += body_force(t, b.moments, b.density, world.gravity - ctx.base_acceleration) +
+  f += body_force(t, b.moments, density, world.gravity - ctx.base_acceleration) +
        (2.0 / ctx.dt) * (mass * v0);
+  // The quadratic velocity terms of a deformable block's inertia in its rotating frame
+  // (centripetal, Coriolis; kinematics/rotating_inertia.hpp), taken to the right-hand side.
+  // Turned to the global frame at the step's start, where the step also holds the block's
+  // stress (initial_stress_force below): a steady spin then balances with no shear in the
+  // block frame (at the mid-step angle, half a step's turn, r0/2, would show as shear).
+  if (!ctx.spins.empty() && !b.rigid) {
+    f -= rotating_inertia_force(b.material_inertia, b.rotation, b.local_strain,
+                                ctx.spins[static_cast<std::size_t>(index)]);
+  }
   if (b.plastic && !ctx.material_terms.empty()) {
     // Newton: the stress at increment de is taken as s + D_t (de - de_k) (the material
     // linearised at the last solution, solver/material_coupling.hpp).

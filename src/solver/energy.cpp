@@ -63,8 +63,8 @@ EnergyTotals scene_energy(const World& world) {
   EnergyTotals e;
   for (const Block& b : world.blocks) {
     if (b.fixed) continue;
-    const double mass = b.density * b.moments.area;
-    e.kinetic += kinetic_energy(b);
+    const double mass = density_now(world, b) * b.moments.area;
+    e.kinetic += kinetic_energy(world, b);
     e.potential -= mass * world.gravity.dot(b.moments.centroid);
     e.strain_energy += block_strain_energy(world, b);
   }
@@ -87,7 +87,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     const double area = b.moments.area;
     // Base shaking: the d'Alembert force -m a_ground of the ground's frame does work on the
     // block's translation (solver/base_motion.hpp); zero without it.
-    s.load_work -= b.density * area * ctx.base_acceleration.dot(db.head<2>());
+    s.load_work -= density_now(world, b) * area * ctx.base_acceleration.dot(db.head<2>());
     // Shi's step takes the stiffness at the end of the step (backward Euler on the strain):
     // the work of s_end on de falls short of the stored energy's rise by A/2 de^T D de.
     if (b.plastic) {
@@ -100,7 +100,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     // The dynamic coefficient k carries k v0 into the step: (1 - k^2) of the kinetic energy
     // is removed before the step starts.
     const double k = ctx.dynamic_coefficient;
-    s.damping_dissipation += (1.0 - k * k) * kinetic_energy(b);
+    s.damping_dissipation += (1.0 - k * k) * kinetic_energy(world, b);
   }
   for (const Pin& pin : world.pins) {
     const Block& b = world.blocks[static_cast<std::size_t>(pin.block)];
@@ -219,7 +219,7 @@ void start_energy_account(World& world) {
   world.energy.initial_total = e.total();
   double reach = 0.0;  // work of gravity and loads over w0
   for (const Block& b : world.blocks) {
-    if (!b.fixed) reach += b.density * b.moments.area * world.gravity.norm() * world.w0;
+    if (!b.fixed) reach += density_now(world, b) * b.moments.area * world.gravity.norm() * world.w0;
   }
   for (const PointLoad& load : world.loads) {
     if (!world.blocks[static_cast<std::size_t>(load.block)].fixed) reach += load.force.norm() * world.w0;

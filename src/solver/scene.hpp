@@ -21,15 +21,15 @@ namespace dda {
 
 // How the block configuration is moved at the end of a step (paper Sections 2 and 3; the
 // scene names are in kRotationUpdateNames). SinVariable and FiniteRotation change T inside
-// the step and are not implemented yet: the reader rejects them.
+// the step (solver/step.cpp).
 enum class RotationUpdate {
   Original,             // Shi: x += T d, strains added globally (paper Eqs. 2, 13)
   SecondOrder,          // MacLaughlin and Sitar: Eq. 8 with cos r = 1 - r^2/2, sin r = r
   PostAdjustment,       // Ke; Koo and Chern: Eq. 8 with the exact cos r, sin r
-  SinVariable,          // Cheng and Zhang: T' with sin r0 as unknown (Eqs. 9-12); not yet
+  SinVariable,          // Cheng and Zhang: T' with sin r0 as unknown (Eqs. 9-12)
   LocalFrame,           // Jiang and Zheng Sections 3-4, x = xc + R(r)(I + E^)(X - Xc)
   LocalFrameAsPrinted,  // the same with Eq. 19 as printed (global strain on X - Xc)
-  FiniteRotation,       // local frame plus the secant rotation column in T; not yet
+  FiniteRotation,       // local frame plus the secant rotation column in T (the default)
 };
 
 struct RotationUpdateName {
@@ -61,6 +61,19 @@ inline bool keeps_block_frame(RotationUpdate u) {
   return u == RotationUpdate::LocalFrame || u == RotationUpdate::LocalFrameAsPrinted ||
          u == RotationUpdate::FiniteRotation;
 }
+
+// How a deformable block's inertia is taken (control.inertia; docs/rotating-inertia.md).
+enum class Inertia {
+  // Shi's: the mass matrix int rho T^T T over the current polygon at the given density, and
+  // nothing else. A spinning block then feels no centrifugal load, and its mass follows its
+  // area.
+  Shi,
+  // The pseudo-rigid body's (Cohen and Muncaster 1988), exact for a DDA block's affine
+  // motion: mass and material inertia kept (density x initial area / current area), and the
+  // quadratic velocity terms of the block-frame strains (centripetal, Coriolis;
+  // kinematics/rotating_inertia.hpp). Needs a treatment that keeps a block frame.
+  PseudoRigid,
+};
 
 // A block material (issue 5): elastic, or a plastic model of src/materials. The plastic
 // parameters are read only for the plastic models (materials/material.hpp documents them).
@@ -215,6 +228,10 @@ struct ControlSettings {
   // default 0.02 is four times the largest gain of the hard cases (verification/hard-cases)
   // at their coarsest time step and far below the gains of the faults it exists for.
   double energy_tolerance = 0.02;
+  // Block inertia (docs/rotating-inertia.md). nullopt means "auto": PseudoRigid for the
+  // treatments that keep a block frame (local_frame, local_frame_as_printed,
+  // finite_rotation), Shi for the others, which have no block-frame strain to carry it.
+  std::optional<Inertia> inertia;
 };
 
 // A joint material's properties replaced during one stage (StageSpec::joint_materials).

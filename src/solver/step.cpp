@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "contact/narrow_phase.hpp"
+#include "kinematics/frames.hpp"
 #include "kinematics/polygon.hpp"
 #include "solver/assembly.hpp"
 #include "solver/configuration_update.hpp"
@@ -122,6 +123,38 @@ int follow_secant_angles(const World& world, const Eigen::VectorXd& d,
   return moved;
 }
 
+// The rotating-frame inertia's spins (kinematics/rotating_inertia.hpp), with the
+// pseudo-rigid body's inertia (which needs a block frame), in dynamic runs (a static step
+// starts every block from rest: no velocity, no quadratic velocity terms). At the step's
+// start they are taken from the velocities carried in; finite_rotation then follows them to
+// the step's own mean rates (follow_spins), like its secant angles. Rigid blocks have no
+// strain to stretch.
+bool has_rotating_inertia(const World& world, const StepContext& ctx) {
+  return world.pseudo_rigid && ctx.dynamic_coefficient > 0.0;
+}
+
+void start_spins(const World& world, StepContext& ctx) {
+  ctx.spins.assign(world.blocks.size(), Spin{});
+  const double k = ctx.dynamic_coefficient;
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
+    if (b.fixed || b.rigid) continue;
+    ctx.spins[i] = Spin{k * b.velocity[kR0], k * b.local_strain_rate};
+  }
+}
+
+// finite_rotation: the spins at the step's mean rates, r0 / dt and the block-frame strain
+// increment / dt (the increment turned by the mid-step angle, as the update will take it).
+void follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx) {
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
+    if (b.fixed || b.rigid) continue;
+    const double r0 = d[b.first_dof + kR0];
+    const Vec3 local = strain_in_turned_frame(d.segment<3>(b.first_dof + kEx), b.rotation + 0.5 * r0);
+    ctx.spins[i] = Spin{r0 / ctx.dt, local / ctx.dt};
+  }
+}
+
 // sin_variable solves for sin r0 in the rotation slot; the stages after the loop want r0.
 void sine_unknowns_to_angles(const World& world, Eigen::VectorXd& d) {
   for (const Block& b : world.blocks) {
@@ -225,6 +258,8 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   }
   const bool plastic = has_plastic_blocks(world);
   if (plastic) ctx.material_terms = start_linearization(world);
+  const bool spinning = has_rotating_inertia(world, ctx);
+  if (spinning) start_spins(world, ctx);
   // (Each augmented-Lagrangian round used adds one more: the rounds are allowed beyond it.)
   const int iteration_limit = world.control.max_open_close + (plastic ? kExtraNewtonIterations : 0);
 
@@ -266,6 +301,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     if (treatment == RotationUpdate::FiniteRotation) {
       secants_moved = follow_secant_angles(world, r.d, angles);
       if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
+      if (spinning) follow_spins(world, r.d, ctx);
     }
     if (plastic) {
       materials = follow_materials(world, r.d, ctx.material_terms);

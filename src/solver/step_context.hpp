@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "kinematics/block_matrices.hpp"
+#include "kinematics/rotating_inertia.hpp"
 
 namespace dda {
 
@@ -29,6 +30,10 @@ struct StepContext {
   // The plastic blocks' material linearisation (by block index) for the Newton iteration
   // nested in the open-close loop. Empty when the scene has no plastic block.
   std::vector<MaterialLinearization> material_terms;
+  // The rotating-frame inertia (kinematics/rotating_inertia.hpp) of each deformable block
+  // (by block index): the spin its quadratic velocity terms are taken at. Empty: no such
+  // terms (Shi's inertia, or a static step).
+  std::vector<Spin> spins;
 };
 
 // The T that this step uses for block `block` (everything that builds the step equations

@@ -44,7 +44,7 @@ std::vector<Vec2> watched_points(const World& w) {
 double total_kinetic(const World& w) {
   double k = 0.0;
   for (const Block& b : w.blocks) {
-    if (!b.fixed) k += kinetic_energy(b);
+    if (!b.fixed) k += kinetic_energy(w, b);
   }
   return k;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "kinematics/block_matrices.hpp"
+#include "kinematics/rotating_inertia.hpp"
 #include "materials/elastic.hpp"
 #include "solver/energy.hpp"
 
@@ -30,6 +31,10 @@ World make_world(const Scene& scene) {
   world.plane = scene.plane;
   world.control = scene.control;
   world.penalty = resolve_penalty(scene);
+  world.pseudo_rigid = scene.control.inertia.value_or(
+                           keeps_block_frame(scene.control.rotation_update) ? Inertia::PseudoRigid
+                                                                            : Inertia::Shi) ==
+                       Inertia::PseudoRigid;
 
   std::vector<Polygon> polygons;
   for (const BlockSpec& spec : scene.blocks) {
@@ -57,6 +62,8 @@ World make_world(const Scene& scene) {
     b.moments = polygon_moments(b.vertices);
     b.initial_area = b.moments.area;
     b.initial_centroid = b.moments.centroid;
+    b.material_inertia =
+        material_inertia(b.density, b.moments.sxx, b.moments.syy, b.moments.sxy);
     assert(b.moments.area > 0.0);
     if (!b.fixed) {
       b.first_dof = world.dof_count;
@@ -105,8 +112,8 @@ int joint_of_pair(const World& world, int i, int j) {
   return it == world.pair_joint.end() ? 0 : it->second;
 }
 
-double kinetic_energy(const Block& block) {
-  const Mat6 m = mass_matrix(shi_t(), block.moments, block.density);
+double kinetic_energy(const World& world, const Block& block) {
+  const Mat6 m = mass_matrix(shi_t(), block.moments, density_now(world, block));
   return 0.5 * block.velocity.dot(m * block.velocity);
 }
 

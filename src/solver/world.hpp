@@ -35,6 +35,9 @@ struct Block {
   // local-frame treatments hold it in the block frame (it turns with the block).
   Vec3 initial_stress = Vec3::Zero();
   double initial_area = 0.0;
+  // J0 = rho int (X - Xc)(X - Xc)^T dA over the initial polygon (kg m^2 per metre): the
+  // material inertia behind the rotating-frame terms (kinematics/rotating_inertia.hpp).
+  Mat2 material_inertia = Mat2::Zero();
   int first_dof = -1;  // index of u0 in the global system; -1 for fixed blocks
   // The most any of its vertices may move in one step (m): max_displacement_ratio x half the
   // larger side of the block's own bounding box at the start; 0 for a fixed block, which does
@@ -143,6 +146,9 @@ struct World {
   // advanced in the ground's frame.
   std::optional<BaseMotion> base_motion;
   Vec2 gravity = Vec2::Zero();
+  // control.inertia resolved: the pseudo-rigid body's inertia (mass kept, rotating-frame
+  // terms) for the deformable blocks; false: Shi's.
+  bool pseudo_rigid = false;
   PlaneMode plane = PlaneMode::Strain;
   ControlSettings control;
   double penalty = 0.0;  // resolved stiffness of pins and contact normal springs (N/m)
@@ -197,7 +203,14 @@ int joint_of_pair(const World& world, int i, int j);
 // resolved penalty and w0.
 World make_world(const Scene& scene);
 
+// The density the block's mass matrix and weight take over its present polygon (kg/m^3).
+// With the pseudo-rigid body's inertia the mass is kept, so the density falls as the area
+// grows (exact for a homogeneous deformation); with Shi's, it is the material's.
+inline double density_now(const World& world, const Block& b) {
+  return world.pseudo_rigid ? b.density * b.initial_area / b.moments.area : b.density;
+}
+
 // Kinetic energy 1/2 v^T M v of one block (J per metre), from its velocity and mass matrix.
-double kinetic_energy(const Block& block);
+double kinetic_energy(const World& world, const Block& block);
 
 }  // namespace dda

@@ -1,0 +1,61 @@
+#include "kinematics/rotating_inertia.hpp"
+
+#include <cmath>
+
+namespace dda {
+namespace {
+
+// [e_x, e_y, g_xy] (engineering shear) as a symmetric tensor.
+Mat2 strain_tensor(const Vec3& e) {
+  Mat2 t;
+  t << e[0], 0.5 * e[2], 0.5 * e[2], e[1];
+  return t;
+}
+
+Mat2 rotation(double theta) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  Mat2 r;
+  r << c, -s, s, c;
+  return r;
+}
+
+}  // namespace
+
+Mat2 material_inertia(double density, double sxx, double syy, double sxy) {
+  Mat2 j;
+  j << sxx, sxy, sxy, syy;
+  return density * j;
+}
+
+Vec6 rotating_inertia_force(const Mat2& j0, double theta, const Vec3& local_strain,
+                            const Spin& spin) {
+  Mat2 quarter;
+  quarter << 0.0, -1.0, 1.0, 0.0;
+  const Mat2 u = Mat2::Identity() + strain_tensor(local_strain);
+  const Mat2 rate = strain_tensor(spin.strain_rate);
+  const double w = spin.omega;
+  // What Shi's mass matrix leaves out of G (header). The step's strain slots are global:
+  // Newmark differences the block-frame rate turned to the global frame, R E^' R^T, whose
+  // time derivative is R (E^'' + omega (J E^' - E^' J)) R^T. That part of the Coriolis term
+  // is therefore already in the step; the rest of 2 omega J E^' is omega (J E^' + E^' J),
+  // which for a symmetric 2 x 2 tensor is omega tr(E^') J: only a volumetric rate has it.
+  const double volumetric_rate = rate.trace();
+  const Mat2 g_h = -w * w * u + w * volumetric_rate * quarter;
+  const Mat2 gj = g_h * j0;
+  const Mat2 q_local = 0.5 * (gj + gj.transpose());
+  // A force conjugate to the strain turns like a stress: Q : dE^ = (R Q R^T) : dE_global.
+  const Mat2 r = rotation(theta);
+  const Mat2 q = r * q_local * r.transpose();
+  Vec6 h = Vec6::Zero();
+  // The rotation equation's 2 omega tr(E^' J0 U) = omega dI_p/dt, less what the mass
+  // matrix's rotation-strain coupling takes from the turning slots, omega tr(E^' (J0 -
+  // J J0 J^T)): omega tr(E^') tr(J0) (J0 + J J0 J^T = tr(J0) I in two dimensions).
+  h[kR0] = w * volumetric_rate * (u * j0 * u).trace();
+  // Q : dE with dE_xy = dg/2 on both off-diagonal entries: the g slot takes Q_xy once.
+  h[kEx] = q(0, 0);
+  h[kEy] = q(1, 1);
+  h[kGxy] = q(0, 1);
+  return h;
+}
+
+}  // namespace dda
