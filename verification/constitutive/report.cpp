@@ -53,6 +53,32 @@ double one_error(const MapSpec& spec, const Vec3& strain, int substeps) {
   return stress_norm(one.stress - ref.stress) / stress_norm(ref.stress);
 }
 
+// The cohesion table as "eps_p:cohesion;eps_p:cohesion;..." at full precision (no commas, so
+// it stays one CSV field), or "none": check_projection.py rebuilds the softening from it.
+std::string hardening_table(const MaterialParameters& p) {
+  if (p.hardening.empty()) return "none";
+  std::string t;
+  for (const HardeningPoint& h : p.hardening) {
+    if (!t.empty()) t += ';';
+    t += full(h.eps_p);
+    t += ':';
+    t += full(h.cohesion);
+  }
+  return t;
+}
+
+const char* match_name(DruckerPragerMatch m) {
+  switch (m) {
+    case DruckerPragerMatch::Outer:
+      return "outer";
+    case DruckerPragerMatch::Inner:
+      return "inner";
+    case DruckerPragerMatch::PlaneStrain:
+      break;
+  }
+  return "plane_strain";
+}
+
 constexpr double kExact = 1e-12;  // "exact": a few thousand ulps of the stress
 
 constexpr const char* kExplanation = R"(
@@ -163,7 +189,7 @@ void write_summary_csv(const std::filesystem::path& dir, const std::vector<MapRe
                                "name,title,start,flow,x_label,y_label,extent,n,substeps,"
                                "yield_strain,max_error,max_x,max_y,ns_per_call,"
                                "ns_per_reference_call,model,young,poisson,cohesion,"
-                               "friction_angle,dilation_angle,tensile_strength,hardening,"
+                               "friction_angle,dilation_angle,tensile_strength,hardening,match,"
                                "start_sxx,start_syy,start_szz,start_sxy,dx_exx,dx_eyy,dx_gxy,"
                                "dy_exx,dy_eyy,dy_gxy");
   for (std::size_t i = 0; i < maps.size(); ++i) {
@@ -180,7 +206,7 @@ void write_summary_csv(const std::filesystem::path& dir, const std::vector<MapRe
         << ',' << full(p.young) << ',' << full(p.poisson) << ',' << full(p.cohesion) << ','
         << full(p.friction_angle) << ',' << full(p.dilation_angle) << ','
         << (p.tensile_strength ? full(*p.tensile_strength) : std::string()) << ','
-        << (p.hardening.empty() ? "none" : "table");
+        << hardening_table(p) << ',' << match_name(p.match);
     for (int k = 0; k < 4; ++k) out << ',' << full(r.spec.start_stress[k]);
     for (int k = 0; k < 3; ++k) out << ',' << full(r.spec.dir_x[k]);
     for (int k = 0; k < 3; ++k) out << ',' << full(r.spec.dir_y[k]);
