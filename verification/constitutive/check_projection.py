@@ -341,7 +341,8 @@ def check_map(m, dirname, lines):
     p_ref = np.array([stress_tensor(*(float(r[k]) for k in ("ref_sxx", "ref_syy", "ref_szz",
                                                             "ref_sxy"))) for r in chosen])
     d_one, d_ref = tensor_norm(p_one - one) / c, tensor_norm(p_ref - ref) / c
-    de_one, de_ref = np.abs(col("eps_p") - one_e) / e_y, np.abs(col("reference_eps_p") - ref_e) / e_y
+    de_one = np.abs(col("eps_p") - one_e) / e_y
+    de_ref = np.abs(col("reference_eps_p") - ref_e) / e_y
     err = tensor_norm(one - ref) / tensor_norm(ref)
     bad = 0
     for i, r in enumerate(chosen):
@@ -370,7 +371,8 @@ def main():
              "from the equations in numpy (check_projection.py: Mohr-Coulomb by every active "
              "set of its six planes and the cut-off in the trial's principal axes, the cohesion "
              "table solved segment by segment; Drucker-Prager in closed form), at the worst "
-             "point of each map and, on every branch, its worst point and the points at a quarter, half and three quarters of the grid order. Stress "
+             "point of each map and, on every branch, its worst point and the points at a "
+             "quarter, half and three quarters of the grid order. Stress "
              f"differences are ||s_program - s_check|| / c (limit {STRESS_TOLERANCE:g}), "
              f"eps_p differences |eps_p_program - eps_p_check| / e_y (limit "
              f"{EPS_P_TOLERANCE:g}), the larger of the one call's and the reference's. Branch "

@@ -46,13 +46,6 @@ std::string grid_value(double v) {
   return buf;
 }
 
-double one_error(const MapSpec& spec, const Vec3& strain, int substeps) {
-  const MaterialResult one = integrate(spec.params, MaterialState{}, strain, spec.start_stress);
-  const Reference ref = sub_incremented(spec, strain, substeps);
-  if (!one.status.converged || !ref.ok) return std::nan("");
-  return stress_norm(one.stress - ref.stress) / stress_norm(ref.stress);
-}
-
 // The cohesion table as "eps_p:cohesion;eps_p:cohesion;..." at full precision (no commas, so
 // it stays one CSV field), or "none": check_projection.py rebuilds the softening from it.
 std::string hardening_table(const MaterialParameters& p) {
@@ -156,7 +149,8 @@ MapSummary summarise(const MapResult& r) {
   s.max_branch = worst->one.branch;
   s.max_ref_branch = worst->reference_branch;
   for (int k = 0; k <= 6; ++k)
-    s.scaled_errors.push_back(one_error(r.spec, worst->strain / std::ldexp(1.0, k), r.substeps));
+    s.scaled_errors.push_back(
+        one_call_error(r.spec, worst->strain / std::ldexp(1.0, k), r.substeps));
   const Reference fine = sub_incremented(r.spec, worst->strain, 4 * r.substeps);
   s.reference_check = fine.ok ? stress_norm(worst->reference - fine.stress) / stress_norm(fine.stress)
                               : std::nan("");
