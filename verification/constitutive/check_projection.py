@@ -117,6 +117,7 @@ class Cohesion:
             self.points = [tuple(float(v) for v in p.split(":")) for p in text.split(";")]
         # Segments (lo, hi, c at lo, slope) covering the whole line.
         e, c = zip(*self.points)
+        self.table = (np.array(e), np.array(c))
         if len(e) == 1:
             self.segments = [(-np.inf, np.inf, c[0], 0.0)]
             return
@@ -126,7 +127,7 @@ class Cohesion:
         self.segments.append((e[-1], np.inf, c[-1], 0.0))
 
     def value(self, eps_p):
-        e, c = zip(*self.points)
+        e, c = self.table
         return np.interp(eps_p, e, c)  # constant beyond the ends, as the table says
 
 
@@ -152,10 +153,12 @@ class MohrCoulomb:
                 r0.append(float(m["tensile_strength"])), weight.append(0.0)
         self.normals, self.flows = np.array(normals), np.array(flows)
         self.rc, self.r0, self.weight = np.array(rc), np.array(r0), np.array(weight)
+        self.is_tension = np.arange(len(normals)) >= 6
         self.groups = [self._group(k) for k in (1, 2, 3)]
 
     def _group(self, k):
-        """The regular sets of k planes, stacked: their indices and (A D B^T)^-1."""
+        """The regular sets of k planes, stacked (S sets): what their returns need that does
+        not depend on the trial."""
         sets, inverses = [], []
         for active in itertools.combinations(range(len(self.normals)), k):
             a, b = self.normals[list(active)], self.flows[list(active)]
@@ -164,31 +167,37 @@ class MohrCoulomb:
                 continue  # parallel normals or flows: no unique multipliers
             sets.append(active)
             inverses.append(np.linalg.inv(mat))
-        return np.array(sets), np.array(inverses)
+        idx, inv = np.array(sets), np.array(inverses)
+        g = {"size": k, "inv": inv, "a": self.normals[idx], "r0": self.r0[idx],
+             "w": self.weight[idx], "tension": self.is_tension[idx].any(axis=1),
+             # D B^T: (S, 3, k)
+             "d_bt": np.einsum("ij,skj->sik", self.el.principal, self.flows[idx])}
+        # dgamma(c) = g0 - g1 c, from A (t - D B^T dgamma) = r0 + rc c.
+        g["g1"] = np.einsum("skl,sl->sk", inv, self.rc[idx])
+        g["wg1"] = np.einsum("sk,sk->s", g["w"], g["g1"])
+        return g
 
     def yields(self, s, c):
         """Every plane's value at principal stresses s (N, 3) with cohesions c (N,)."""
         return s @ self.normals.T - np.outer(c, self.rc) - self.r0
 
-    def _solutions(self, t, eps0, idx, inv):
-        """The end stress, eps_p and KKT flag of each set of one group and each segment of the
-        cohesion table: arrays (N, sets, segments, ...)."""
-        a, b = self.normals[idx], self.flows[idx]          # (S, k, 3)
-        rc, r0, w = self.rc[idx], self.r0[idx], self.weight[idx]  # (S, k)
-        d_bt = np.einsum("ij,skj->sik", self.el.principal, b)     # D B^T: (S, 3, k)
-        # dgamma(c) = g0 - g1 c, from A (t - D B^T dgamma) = r0 + rc c.
-        g0 = np.einsum("skl,nsl->nsk", inv, np.einsum("skj,nj->nsk", a, t) - r0)
-        g1 = np.einsum("skl,sl->sk", inv, rc)
+    def _solutions(self, t, eps0, grp):
+        """The end stress, eps_p and KKT flag of each set of one group, for each segment of the
+        cohesion table: a list over the segments of arrays (N, S, ...)."""
+        g1, wg1, d_bt = grp["g1"], grp["wg1"], grp["d_bt"]
+        g0 = np.einsum("skl,nsl->nsk", grp["inv"],
+                       np.einsum("skj,nj->nsk", grp["a"], t) - grp["r0"])
         # eps_p = eps0 + w.dgamma(c(eps_p)); on a segment c = c_lo + H (eps_p - lo), linear.
-        base = eps0[:, None] + np.einsum("sk,nsk->ns", w, g0)
-        wg1 = np.einsum("sk,sk->s", w, g1)
+        base = eps0[:, None] + np.einsum("sk,nsk->ns", grp["w"], g0)
         out = []
         for lo, hi, c_lo, slope in self.cohesion.segments:
-            with np.errstate(divide="ignore", invalid="ignore"):
-                e = (base - wg1 * (c_lo - slope * np.where(np.isfinite(lo), lo, 0.0))) / (
-                    1 + wg1 * slope)
             if slope == 0.0:
-                e = base - wg1 * c_lo
+                e = base - wg1 * c_lo  # the cohesion is c_lo on it: eps_p follows directly
+            else:
+                # eps_p = base - wg1 (c_lo + H (eps_p - lo)); 1 + wg1 H = 0 only if the
+                # softening cancels the elastic stiffness (no unique return: no root here).
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    e = (base - wg1 * (c_lo - slope * lo)) / (1 + wg1 * slope)
             c = self.cohesion.value(e)
             dgamma = g0 - g1[None] * c[..., None]
             s = t[:, None, :] - np.einsum("sik,nsk->nsi", d_bt, dgamma)
@@ -212,12 +221,15 @@ class MohrCoulomb:
         size = np.zeros(n, dtype=int)
         tension = np.zeros(n, dtype=bool)
         distinct = np.where(inside, 1, 0)
-        found = [[] for _ in range(n)]
-        for k, (idx, inv) in zip((1, 2, 3), self.groups):
-            for s_k, e_k, ok in self._solutions(t, eps0, idx, inv):
-                for p, q in zip(*np.nonzero(ok & ~inside[:, None])):
-                    found[p].append((s_k[p, q], e_k[p, q], k, (self.r0[idx[q]] > 0).any()))
-        for p in np.nonzero(~inside)[0]:
+        outside = np.nonzero(~inside)[0]
+        found = {p: [] for p in outside}
+        if len(outside):
+            for grp in self.groups:
+                for s_k, e_k, ok in self._solutions(t[outside], eps0[outside], grp):
+                    for p, q in zip(*np.nonzero(ok)):
+                        found[outside[p]].append((s_k[p, q], e_k[p, q], grp["size"],
+                                                  grp["tension"][q]))
+        for p in outside:
             sols = found[p]
             if not sols:
                 continue
@@ -320,7 +332,8 @@ def picks(rows):
 
 def check_map(m, dirname, lines):
     """Checks one map's chosen points; appends table rows; returns (points, disagreements,
-    largest stress difference / c, largest eps_p difference / e_y)."""
+    largest stress difference / c, largest eps_p difference / e_y, one-call branches,
+    reference branches)."""
     el = Elasticity(float(m["young"]), float(m["poisson"]))
     model = (MohrCoulomb if m["model"] == "mohr_coulomb" else DruckerPrager)(m, el)
     c, e_y = float(m["cohesion"]), float(m["yield_strain"])
@@ -331,7 +344,7 @@ def check_map(m, dirname, lines):
               r["reference_branch"] != "elastic"]
     if not chosen:
         lines.append(f"| `{m['name']}` | no plastic point | | | | | | | **not checked** |")
-        return 0, 1, 0.0, 0.0
+        return 0, 1, 0.0, 0.0, set(), set()
     col = lambda key: np.array([float(r[key]) for r in chosen])
     strains = strain_tensors(col("exx"), col("eyy"), col("gxy"))
     (one, one_e, one_b, one_d), (ref, ref_e, ref_b, ref_d) = one_and_reference(
@@ -357,8 +370,8 @@ def check_map(m, dirname, lines):
             f"{one_b[i]} | {r['reference_branch']} / {ref_b[i]} | {float(r['error']):.4g} | "
             f"{err[i]:.4g} | {d_one[i]:.1e} | {d_ref[i]:.1e} | "
             f"{max(de_one[i], de_ref[i]):.1e}{flag} |")
-    return (len(chosen), bad, max(d_one.max(), d_ref.max()),
-            max(de_one.max(), de_ref.max()))
+    return (len(chosen), bad, max(d_one.max(), d_ref.max()), max(de_one.max(), de_ref.max()),
+            {r["branch"] for r in chosen}, {r["reference_branch"] for r in chosen})
 
 
 def main():
@@ -386,10 +399,16 @@ def main():
     maps = read(args.dir, "maps.csv")
     bad = points = 0
     worst_s = worst_e = 0.0
+    summary = ["", "Per map:", "", "| map | points | one-call branches | reference branches | "
+               "largest stress difference / c | largest eps_p difference / e_y |",
+               "|---|---:|---|---|---:|---:|"]
     for m in maps:
-        n, b, ds, de = check_map(m, args.dir, lines)
+        n, b, ds, de, one_b, ref_b = check_map(m, args.dir, lines)
         points, bad = points + n, bad + b
         worst_s, worst_e = max(worst_s, ds), max(worst_e, de)
+        summary.append(f"| `{m['name']}` | {n} | {', '.join(sorted(one_b))} | "
+                       f"{', '.join(sorted(ref_b))} | {ds:.1e} | {de:.1e} |")
+    lines += summary
     lines += ["", f"{points} points over {len(maps)} maps; largest differences {worst_s:.1e} c "
               f"(stress), {worst_e:.1e} e_y (eps_p); {time.time() - start:.1f} s.", "",
               "All points agree." if bad == 0 else f"{bad} point(s) disagree.", ""]

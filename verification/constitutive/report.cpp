@@ -111,10 +111,11 @@ constexpr const char* kExplanation = R"(
   that crosses the change makes a first-order error of its own, so s* is good to about 1e-4
   there (the last column below: 1000 against 4000 sub-increments); smaller differences in
   those zones are not resolved. Where the one call is exact, so is every sub-increment.
-- For the associated Mohr-Coulomb maps without shear, `check_projection.py` (run by
-  `run.sh`) recomputes the one call and the reference at the worst point of each map with an
-  independent closest-point projection (numpy, every active set of the six planes and the
-  cut-off tried): see `projection_check.md`.
+- For every map, `check_projection.py` (run by `run.sh`) recomputes the one call, the
+  reference and eps_p at the worst point and at four points of every branch from the
+  equations, without the library (numpy: Mohr-Coulomb by every active set of its six planes
+  and the cut-off in the trial's principal axes, the cohesion table solved segment by
+  segment; Drucker-Prager in closed form): see `projection_check.md`.
 )";
 
 }  // namespace
