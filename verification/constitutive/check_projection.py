@@ -273,6 +273,9 @@ class DruckerPrager:
         self.eta_bar, _ = plane_strain_match(float(m["dilation_angle"]))
 
     def integrate(self, trial, eps0):
+        """The cone return scales the trial's deviator and shifts its mean stress along the
+        potential's gradient; when it would pass the axis (sqrt(J2) - G dgamma < 0) the stress
+        is the apex, reached by a plastic volume change alone."""
         g, k = self.el.g, self.el.k
         p = np.trace(trial, axis1=1, axis2=2) / 3
         dev = trial - p[:, None, None] * np.eye(3)
@@ -284,7 +287,8 @@ class DruckerPrager:
         apex = plastic & (q - g * dgamma < 0)
         with np.errstate(divide="ignore", invalid="ignore"):
             factor = np.where(q > 0, 1 - g * dgamma / q, 0.0)
-        s = factor[:, None, None] * dev + (p - k * self.eta_bar * dgamma)[:, None, None] * np.eye(3)
+        mean = p - k * self.eta_bar * dgamma
+        s = factor[:, None, None] * dev + mean[:, None, None] * np.eye(3)
         e = eps0 + self.xi * dgamma
         p_apex = self.xi * self.c / self.eta
         s[apex] = p_apex * np.eye(3)
