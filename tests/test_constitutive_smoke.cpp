@@ -1,9 +1,12 @@
 // The iso-error maps' smoke run (verification/constitutive, issue 5):
 // `dda_verify_constitutive --smoke` exits 0, prints the report and writes report.md, maps.csv
 // and one CSV per map with every grid point, no failed return, and the start on the surface
-// (error 0 at the zero increment); bad arguments exit 2. The accuracy of the returns is what
-// the maps report, not something this test bounds; it guards the one-command run.
+// (error 0 at the zero increment and at every elastic point); bad arguments exit 2. It guards
+// the one-command run; the maps' numbers themselves are held by
+// tests/test_constitutive_numbers.cpp, and check_projection.py (ctest constitutive_smoke_plot)
+// recomputes the smoke run's plastic points independently.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -71,9 +74,12 @@ TEST_CASE("iso-error maps: the smoke run writes the report and every map", "[con
       REQUIRE(f.size() == 19);
       CHECK(f[18] == "ok");
       const double error = std::stod(f[13]);
+      CHECK(std::isfinite(error));
       CHECK(error >= 0.0);
-      CHECK(error < 10.0);
+      // The zero increment, and any elastic trial (the straight path stayed inside the convex
+      // domain, so the reference's last sub-increment is the one call's own computation).
       if (f[0] == "0" && f[1] == "0") CHECK(error == 0.0);
+      if (f[14] == "elastic") CHECK(error == 0.0);
       plastic += f[14] != "elastic";
     }
     CHECK(plastic > 0);  // each map reaches the surface somewhere

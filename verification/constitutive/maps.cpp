@@ -182,6 +182,20 @@ Reference sub_incremented(const MapSpec& spec, const Vec3& strain, int substeps)
   return ref;
 }
 
+Vec3 grid_strain(const MapSpec& spec, double x, double y) {
+  return spec.yield_strain * (x * spec.dir_x + y * spec.dir_y);
+}
+
+double map_error(const MaterialResult& one, const Reference& reference) {
+  if (!one.status.converged || !reference.ok) return std::numeric_limits<double>::quiet_NaN();
+  return stress_norm(one.stress - reference.stress) / stress_norm(reference.stress);
+}
+
+double one_call_error(const MapSpec& spec, const Vec3& strain, int substeps) {
+  const MaterialResult one = integrate(spec.params, MaterialState{}, strain, spec.start_stress);
+  return map_error(one, sub_incremented(spec, strain, substeps));
+}
+
 MapResult compute_map(const MapSpec& spec, int n, int substeps, double min_timing_s) {
   using clock = std::chrono::steady_clock;
   MapResult out;
@@ -196,7 +210,7 @@ MapResult compute_map(const MapSpec& spec, int n, int substeps, double min_timin
       // Exact zero in the middle (n odd), symmetric about it.
       pt.x = (i - (n - 1) / 2) * h;
       pt.y = (j - (n - 1) / 2) * h;
-      pt.strain = spec.yield_strain * (pt.x * spec.dir_x + pt.y * spec.dir_y);
+      pt.strain = grid_strain(spec, pt.x, pt.y);
       out.points.push_back(pt);
     }
   }
@@ -226,19 +240,13 @@ MapResult compute_map(const MapSpec& spec, int n, int substeps, double min_timin
     pt.reference_eps_p = ref.eps_p;
     pt.reference_branch = ref.branch;
     pt.reference_ok = ref.ok;
+    pt.error = map_error(pt.one, ref);
     sink += ref.stress[kXX];
   }
   const double ref_s = std::chrono::duration<double>(clock::now() - t1).count();
   out.ns_per_reference_call =
       1e9 * ref_s / (static_cast<double>(out.points.size()) * static_cast<double>(substeps));
 
-  for (Point& pt : out.points) {
-    if (!pt.one.status.converged || !pt.reference_ok) {
-      pt.error = std::numeric_limits<double>::quiet_NaN();
-    } else {
-      pt.error = stress_norm(pt.one.stress - pt.reference) / stress_norm(pt.reference);
-    }
-  }
   // Keeps the timed loops from being optimised away (the sum is never NaN for finite stresses).
   if (std::isnan(sink)) out.ns_per_call = std::numeric_limits<double>::quiet_NaN();
   return out;

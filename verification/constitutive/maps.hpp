@@ -68,6 +68,15 @@ struct Reference {
 };
 Reference sub_incremented(const MapSpec& spec, const Vec3& strain, int substeps);
 
+// The strain increment of grid point (x, y): yield_strain (x dir_x + y dir_y).
+Vec3 grid_strain(const MapSpec& spec, double x, double y);
+
+// ||s - s*|| / ||s*|| of a one-call stress against the reference; NaN when either failed.
+double map_error(const MaterialResult& one, const Reference& reference);
+
+// One call from the start against `substeps` sub-increments, at total strain `strain`.
+double one_call_error(const MapSpec& spec, const Vec3& strain, int substeps);
+
 // Every grid point of a map: n per side over [-extent, extent] (n odd, so 0 is on it).
 MapResult compute_map(const MapSpec& spec, int n, int substeps, double min_timing_s);
 

@@ -46,11 +46,30 @@ std::string grid_value(double v) {
   return buf;
 }
 
-double one_error(const MapSpec& spec, const Vec3& strain, int substeps) {
-  const MaterialResult one = integrate(spec.params, MaterialState{}, strain, spec.start_stress);
-  const Reference ref = sub_incremented(spec, strain, substeps);
-  if (!one.status.converged || !ref.ok) return std::nan("");
-  return stress_norm(one.stress - ref.stress) / stress_norm(ref.stress);
+// The cohesion table as "eps_p:cohesion;eps_p:cohesion;..." at full precision (no commas, so
+// it stays one CSV field), or "none": check_projection.py rebuilds the softening from it.
+std::string hardening_table(const MaterialParameters& p) {
+  if (p.hardening.empty()) return "none";
+  std::string t;
+  for (const HardeningPoint& h : p.hardening) {
+    if (!t.empty()) t += ';';
+    t += full(h.eps_p);
+    t += ':';
+    t += full(h.cohesion);
+  }
+  return t;
+}
+
+const char* match_name(DruckerPragerMatch m) {
+  switch (m) {
+    case DruckerPragerMatch::Outer:
+      return "outer";
+    case DruckerPragerMatch::Inner:
+      return "inner";
+    case DruckerPragerMatch::PlaneStrain:
+      break;
+  }
+  return "plane_strain";
 }
 
 constexpr double kExact = 1e-12;  // "exact": a few thousand ulps of the stress
@@ -92,10 +111,11 @@ constexpr const char* kExplanation = R"(
   that crosses the change makes a first-order error of its own, so s* is good to about 1e-4
   there (the last column below: 1000 against 4000 sub-increments); smaller differences in
   those zones are not resolved. Where the one call is exact, so is every sub-increment.
-- For the associated Mohr-Coulomb maps without shear, `check_projection.py` (run by
-  `run.sh`) recomputes the one call and the reference at the worst point of each map with an
-  independent closest-point projection (numpy, every active set of the six planes and the
-  cut-off tried): see `projection_check.md`.
+- For every map, `check_projection.py` (run by `run.sh`) recomputes the one call, the
+  reference and eps_p at the worst point and at four points of every branch from the
+  equations, without the library (numpy: Mohr-Coulomb by every active set of its six planes
+  and the cut-off in the trial's principal axes, the cohesion table solved segment by
+  segment; Drucker-Prager in closed form): see `projection_check.md`.
 )";
 
 }  // namespace
@@ -130,7 +150,8 @@ MapSummary summarise(const MapResult& r) {
   s.max_branch = worst->one.branch;
   s.max_ref_branch = worst->reference_branch;
   for (int k = 0; k <= 6; ++k)
-    s.scaled_errors.push_back(one_error(r.spec, worst->strain / std::ldexp(1.0, k), r.substeps));
+    s.scaled_errors.push_back(
+        one_call_error(r.spec, worst->strain / std::ldexp(1.0, k), r.substeps));
   const Reference fine = sub_incremented(r.spec, worst->strain, 4 * r.substeps);
   s.reference_check = fine.ok ? stress_norm(worst->reference - fine.stress) / stress_norm(fine.stress)
                               : std::nan("");
@@ -163,7 +184,7 @@ void write_summary_csv(const std::filesystem::path& dir, const std::vector<MapRe
                                "name,title,start,flow,x_label,y_label,extent,n,substeps,"
                                "yield_strain,max_error,max_x,max_y,ns_per_call,"
                                "ns_per_reference_call,model,young,poisson,cohesion,"
-                               "friction_angle,dilation_angle,tensile_strength,hardening,"
+                               "friction_angle,dilation_angle,tensile_strength,hardening,match,"
                                "start_sxx,start_syy,start_szz,start_sxy,dx_exx,dx_eyy,dx_gxy,"
                                "dy_exx,dy_eyy,dy_gxy");
   for (std::size_t i = 0; i < maps.size(); ++i) {
@@ -180,7 +201,7 @@ void write_summary_csv(const std::filesystem::path& dir, const std::vector<MapRe
         << ',' << full(p.young) << ',' << full(p.poisson) << ',' << full(p.cohesion) << ','
         << full(p.friction_angle) << ',' << full(p.dilation_angle) << ','
         << (p.tensile_strength ? full(*p.tensile_strength) : std::string()) << ','
-        << (p.hardening.empty() ? "none" : "table");
+        << hardening_table(p) << ',' << match_name(p.match);
     for (int k = 0; k < 4; ++k) out << ',' << full(r.spec.start_stress[k]);
     for (int k = 0; k < 3; ++k) out << ',' << full(r.spec.dir_x[k]);
     for (int k = 0; k < 3; ++k) out << ',' << full(r.spec.dir_y[k]);

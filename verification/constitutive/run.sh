@@ -7,7 +7,7 @@
 #
 # It builds nothing: it runs $DDA_BUILD_DIR/dda_verify_constitutive (default: build/release of
 # this repository; build it first with `cmake --preset release && cmake --build --preset
-# release`), then draws the PNGs and runs the independent projection check with Debian's
+# release`), then draws the PNGs and runs the independent check of every map with Debian's
 # /usr/bin/python3 (numpy, matplotlib; the python3 on PATH may be another interpreter without
 # them).
 set -euo pipefail
