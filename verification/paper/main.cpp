@@ -55,6 +55,9 @@ int main(int argc, char** argv) {
     std::cerr << "Speed against error...\n";
     all.speed = run_speed(opt);
     write_speed_csv(opt, all.speed);
+    std::cerr << "Stress under rotation and the energy gain...\n";
+    all.rotation = run_rotation_study(opt);
+    write_rotation_csv(opt, all.rotation);
     all.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::string report = full_report(opt, all);
     std::ofstream out(opt.out / "report.md");

@@ -170,4 +170,17 @@ Scene pendulum_scene(double dt, int steps, RotationUpdate update) {
   return s;
 }
 
+// ---- stress under rotation ----
+
+Scene spinning_rectangle_scene(double dt, int steps, double omega, RotationUpdate update) {
+  Scene s = paper_base(update);
+  s.gravity = Vec2::Zero();
+  s.blocks.push_back(free_block({{-1.0, -0.5}, {1.0, -0.5}, {1.0, 0.5}, {-1.0, 0.5}},
+                                Vec3(0.0, 0.0, omega)));
+  s.control.time_steps = {dt};
+  s.control.steps = steps;
+  s.control.max_displacement_ratio = 1.0;  // a corner moves omega x 1.1 m x dt: never cut
+  return s;
+}
+
 }  // namespace dda::paper

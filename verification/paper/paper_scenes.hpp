@@ -77,4 +77,9 @@ Scene spinning_block_scene(double dt, int steps, double omega, RotationUpdate up
 inline constexpr double kPendulumArm = 0.5;
 Scene pendulum_scene(double dt, int steps, RotationUpdate update);
 
+// ---- stress under rotation ----
+// A 2 m x 1 m rectangle (long side along x) of the paper's rock, centred at the origin,
+// spinning at `omega` (rad/s), no gravity, maximum displacement ratio 1 (no step is cut).
+Scene spinning_rectangle_scene(double dt, int steps, double omega, RotationUpdate update);
+
 }  // namespace dda::paper

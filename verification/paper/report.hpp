@@ -7,6 +7,7 @@
 
 #include "falling_octagon.hpp"
 #include "options.hpp"
+#include "rotation_stress.hpp"
 #include "speed_error.hpp"
 #include "swinging_octagon.hpp"
 
@@ -16,6 +17,7 @@ struct AllResults {
   std::vector<FallingRun> falling;
   std::vector<SwingRun> swinging;
   SpeedResults speed;
+  RotationStudy rotation;
   double wall_s = 0.0;  // the whole program
 };
 
