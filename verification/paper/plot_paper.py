@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Draws the PNGs of the paper reproduction from the CSVs that dda_verify_paper wrote into DIR:
-falling_scene.png, falling_area_error.png, swinging_energy.png, speed_error.png.
+falling_scene.png, falling_area_error.png, swinging_energy.png, speed_error.png,
+rotation_stress.png.
 Usage: /usr/bin/python3 verification/paper/plot_paper.py DIR
 (Debian's python3 with numpy and matplotlib; the Agg backend, no display needed.)"""
 import argparse
@@ -208,6 +209,49 @@ def plot_speed(d):
     plt.close(fig)
 
 
+def plot_rotation(d):
+    """rotation_stress.png: left, the swinging octagon's stress along its long axis over one
+    period against the quasi-static closed form; right, the energy gain against dt."""
+    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.6))
+    swing = read(d, "rotation_swing.csv")
+    styles = {("finite_rotation", "pseudo_rigid"): "-", ("local_frame", "pseudo_rigid"): "--",
+              ("finite_rotation", "shi"): ":", ("post_adjustment", "shi"): "-."}
+    drawn_reference = False
+    for (t, inertia), style in styles.items():
+        rows = [r for r in swing if r["treatment"] == t and r["inertia"] == inertia]
+        if not rows:
+            continue
+        time = [float(r["time"]) for r in rows]
+        if not drawn_reference:
+            left.plot(time, [float(r["expected_sxx"]) / 1e3 for r in rows], color="black",
+                      lw=2.5, alpha=0.35, label="closed form on CVODE's pendulum")
+            drawn_reference = True
+        left.plot(time, [float(r["sxx"]) / 1e3 for r in rows], style,
+                  color=colours(TREATMENTS)[t], label=f"{t} ({inertia} inertia)")
+    left.set_xlabel("time (s)")
+    left.set_ylabel("stress along the block's x axis (kPa)")
+    left.set_title("swinging octagon, dt 0.02 s, one period")
+    left.legend(fontsize=8)
+    gain = [r for r in read(d, "rotation_gain.csv") if r["study"] == "dt"]
+    for t in ordered_treatments(gain):
+        rows = [r for r in gain if r["treatment"] == t and float(r["gain_over_mgl"]) > 0]
+        if not rows:
+            continue
+        right.loglog([float(r["dt"]) for r in rows], [float(r["gain_over_mgl"]) for r in rows],
+                     "o-", color=colours(TREATMENTS)[t], label=t)
+    dts = sorted({float(r["dt"]) for r in gain})
+    if dts:
+        ref = [0.5 * x / dts[-1] for x in dts]
+        right.loglog(dts, ref, "k:", label="slope 1")
+    right.set_xlabel("dt (s)")
+    right.set_ylabel("energy gain / (m g l)")
+    right.set_title("energy gain of the swinging octagon (finite_rotation: none)")
+    right.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "rotation_stress.png"), dpi=110)
+    plt.close(fig)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("dir", help="the --out directory of dda_verify_paper")
@@ -216,8 +260,9 @@ def main():
     plot_falling_area(args.dir)
     plot_swinging_energy(args.dir)
     plot_speed(args.dir)
+    plot_rotation(args.dir)
     for name in ("falling_scene.png", "falling_area_error.png", "swinging_energy.png",
-                 "speed_error.png"):
+                 "speed_error.png", "rotation_stress.png"):
         print(os.path.join(args.dir, name))
 
 

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "conclusion.hpp"
 #include "csv.hpp"
 
 namespace dda::paper {
@@ -67,6 +68,7 @@ std::string full_report(const Options& opt, const AllResults& r) {
         "rotation_swing_summary.csv, rotation_gain.csv, rotation_pendulum.csv; PNGs: falling_scene.png, "
         "falling_area_error.png, swinging_energy.png, speed_error.png.\n\n";
   md << availability(opt, r);
+  md << conclusion_report(opt, r);
   md << falling_report(opt, r.falling);
   md << swinging_report(opt, r.swinging);
   md << speed_report(opt, r.speed);
