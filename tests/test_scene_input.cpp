@@ -999,3 +999,33 @@ TEST_CASE("a diverging run stops with a message, exit code 3, and keeps what it 
   CHECK(std::count(history.begin(), history.end(), '\n') == 1 + 2);  // header + step 0 rows
   CHECK(fs::exists(out / "blocks.pvd"));
 }
+
+TEST_CASE("control.inertia is read by its name and refused where it cannot apply",
+          "[scene][input]") {
+  // kValidScene uses "original", which has no block frame: "pseudo_rigid" is refused there
+  // with the reason, "shi" and "auto" are accepted; with finite_rotation all three are.
+  const auto with = [](const std::string& update, const std::string& inertia) {
+    return edit(kValidScene, "\"rotation_update\": \"original\"",
+                "\"rotation_update\": \"" + update + "\", \"inertia\": \"" + inertia + "\"");
+  };
+  CHECK(dda::parse_scene_text(with("original", "shi"), "v.json").control.inertia ==
+        dda::Inertia::Shi);
+  CHECK_FALSE(dda::parse_scene_text(with("original", "auto"), "v.json").control.inertia);
+  CHECK(dda::parse_scene_text(with("finite_rotation", "pseudo_rigid"), "v.json").control.inertia ==
+        dda::Inertia::PseudoRigid);
+  try {
+    dda::parse_scene_text(with("original", "pseudo_rigid"), "v.json");
+    FAIL("pseudo_rigid with original was accepted");
+  } catch (const dda::InputError& e) {
+    const std::string what = e.what();
+    INFO(what);
+    CHECK(what.find("control.inertia") != std::string::npos);
+    CHECK(what.find("block frame") != std::string::npos);
+  }
+  try {
+    dda::parse_scene_text(with("finite_rotation", "newton"), "v.json");
+    FAIL("an unknown inertia was accepted");
+  } catch (const dda::InputError& e) {
+    CHECK(std::string(e.what()).find("unknown inertia \"newton\"") != std::string::npos);
+  }
+}
