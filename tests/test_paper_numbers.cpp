@@ -234,17 +234,18 @@ TEST_CASE("paper reproduction: the swinging octagon's stress follows the quasi-s
   // rotation_swing_summary.csv, over one period at dt 0.02 s. The closed form (CVODE's
   // rigid pendulum, pin force, centrifugal and Euler loads) is exact for a slow swing to
   // first order in (swing rate / strain mode)^2 = (1.7 / 350)^2; what separates DDA from it
-  // is the step: its frame lags and the release's jitter, which the two-step mean halves
-  // but does not remove (measured: finite_rotation rms 1.04e-2, max 5.1e-2 of the largest
-  // stress). Bounds at twice those. Shi's inertia misses the centrifugal load: at least
-  // 15 % somewhere (measured 18-19 %), and the other first-order treatments do no better.
+  // is the step: its frame lags by a fraction of a step's turn (measured: finite_rotation
+  // rms 1.04e-2, and at most 1.33e-2 of the largest stress after the release's first 0.1 s,
+  // when the unstressed block meets the closed form's sudden load). Bounds at twice those.
+  // Shi's inertia misses the centrifugal load: at least 15 % somewhere (measured 18-19 %),
+  // and the other first-order treatments do no better.
   std::map<std::string, Row> by_run;
   for (const Row& row : read_csv(full_run() / "rotation_swing_summary.csv")) {
     by_run[row.at("treatment") + " " + row.at("inertia")] = row;
   }
   const Row& fr = by_run.at("finite_rotation pseudo_rigid");
   CHECK(number(fr, "rms_rel_error") < 2e-2);
-  CHECK(number(fr, "max_rel_error") < 0.1);
+  CHECK(number(fr, "max_rel_error") < 3e-2);
   // The largest stress, 336 kPa, is the closed form's: m g at the pin over the block's
   // area and more (a check that the reference itself did not change).
   CHECK(number(fr, "largest_Pa") == Approx(336e3).epsilon(0.01));

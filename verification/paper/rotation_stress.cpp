@@ -26,6 +26,9 @@ constexpr int kSpinSteps = 1000, kSpinSmokeSteps = 200;
 // The gain study: T = 20 s (about three swings) at every dt; the smoke run 2 s.
 constexpr double kGainTime = 20.0, kGainSmokeTime = 2.0;
 
+// The swinging octagon's stress: the release's jump is left out of the maximum (5 steps).
+constexpr double kRelease = 0.1;
+
 Vec3 local_stress(const Block& b) { return stress_in_turned_frame(b.stress, b.rotation); }
 
 // |s| of a stress [sxx, syy, sxy] as a tensor (the shear counted twice).
@@ -142,12 +145,15 @@ SwingStress swing_stress(const Variant& v, double period) {
     const Vec3 mean = 0.5 * (stress[k] + stress[k + 1]);
     const Vec3 target = 0.5 * (expected[k] + expected[k + 1]);
     const double e = tensor_norm(mean - target) / r.largest;
-    r.max_error = std::max(r.max_error, e);
+    // The block starts unstressed while the closed form jumps to the release's load (the
+    // pin's shear, 22.5 kPa): the first steps are the step's response to that jump, not
+    // its tracking error, so the maximum is taken after kRelease.
+    if (times[k] > kRelease) r.max_error = std::max(r.max_error, e);
     sum += e * e;
     ++n;
     r.time.push_back(0.5 * (times[k] + times[k + 1]));
-    r.stress_xx.push_back(mean[0]);
-    r.expected_xx.push_back(target[0]);
+    r.stress.push_back(mean);
+    r.expected.push_back(target);
   }
   r.rms_error = n > 0 ? std::sqrt(sum / n) : 0.0;
   return r;
@@ -266,14 +272,17 @@ void write_rotation_csv(const Options& opt, const RotationStudy& s) {
          << ',' << full(r.error) << '\n';
   }
   std::ofstream swing = open_csv(opt.out, "rotation_swing.csv",
-                                 "treatment,inertia,time,sxx,expected_sxx");
+                                 "treatment,inertia,time,sxx,syy,sxy,expected_sxx,expected_syy,"
+                                 "expected_sxy");
   std::ofstream swing_sum = open_csv(opt.out, "rotation_swing_summary.csv",
                                      "treatment,inertia,status,largest_Pa,max_rel_error,"
                                      "rms_rel_error");
   for (const SwingStress& r : s.swing) {
     for (std::size_t k = 0; k < r.time.size(); ++k) {
-      swing << r.treatment << ',' << r.inertia << ',' << full(r.time[k]) << ','
-            << full(r.stress_xx[k]) << ',' << full(r.expected_xx[k]) << '\n';
+      swing << r.treatment << ',' << r.inertia << ',' << full(r.time[k]);
+      for (int c = 0; c < 3; ++c) swing << ',' << full(r.stress[k][c]);
+      for (int c = 0; c < 3; ++c) swing << ',' << full(r.expected[k][c]);
+      swing << '\n';
     }
     swing_sum << r.treatment << ',' << r.inertia << ',' << status_word(r.result.status) << ','
               << full(r.largest) << ',' << full(r.max_error) << ',' << full(r.rms_error) << '\n';
@@ -354,8 +363,9 @@ std::string rotation_report(const Options& opt, const RotationStudy& s) {
         "(docs/rotating-inertia.md). The octagon's strain mode (about 350 rad/s) sits at "
         "Omega = 7, where Shi's scheme leaves a weakly damped step-to-step jitter, so each "
         "step is compared as the mean of it and the next. Error: |sigma - sigma*| / max "
-        "|sigma*|.\n\n"
-     << "| treatment | inertia | run | max \\|sigma*\\| (kPa) | max error | rms error |\n"
+        "|sigma*|; its maximum is taken after the release (0.1 s), since the block starts "
+        "unstressed while the closed form jumps to the pin's load at once.\n\n"
+     << "| treatment | inertia | run | max \\|sigma*\\| (kPa) | max error after 0.1 s | rms error |\n"
      << "|---|---|---|---:|---:|---:|\n";
   for (const SwingStress& r : s.swing) {
     md << "| " << r.treatment << " | " << r.inertia << " | " << status_word(r.result.status)
