@@ -62,6 +62,11 @@ struct ContactState {
   // an iteration deeper than allowed, kept while the contact stays closed (so a resting
   // load stays carried), zero once it opens.
   double rest_shift = 0.0;
+  // The energy of the shear spring at the end of the last accepted step (J per metre),
+  // F^2 / 2 ks whether locked or sliding: the energy account treats a sliding contact as its
+  // spring in series with the slider, so that the friction it carries when it relocks
+  // (anchored S / ks behind the vertex) is energy it already held (solver/energy.cpp).
+  double spring_energy = 0.0;
 };
 
 // Results of the latest open-close iteration (mode_changes: counted over the loop), written

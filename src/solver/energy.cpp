@@ -50,7 +50,9 @@ double contact_energy(const World& world, const std::vector<Contact>& contacts, 
     // its own, multiplier_work.)
     const double g = c.iterate.new_gap, f = c.iterate.shear_force;
     if (c.state.mode != ContactMode::Open || g < 0.0) e += 0.5 * penalty * g * g;
-    if (c.state.mode == ContactMode::Lock) e += f * f / (2.0 * ks);
+    // The shear spring, locked or sliding (in series with the slider: ContactState::
+    // spring_energy).
+    if (c.state.mode != ContactMode::Open) e += f * f / (2.0 * ks);
   }
   for (const Pin& pin : world.pins) {
     if (world.blocks[static_cast<std::size_t>(pin.block)].fixed) continue;
@@ -147,10 +149,18 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
       s.damping_dissipation += 0.5 * ks * (s_end - s_start) * (s_end - s_start);
       brought += 0.5 * ks * s_start * s_start;
     } else {
-      const double work = c.iterate.shear_force * c.iterate.slip;
-      s.friction_dissipation += std::max(0.0, -work);
-      s.friction_gain += std::max(0.0, work);
-      brought += std::max(0.0, work);
+      // A sliding contact is its shear spring in series with the slider: of the friction's
+      // work on the step's tangential motion, the part that changed the spring's energy
+      // (F^2 / 2 ks now against what the contact held at the step's start, as a lock or a
+      // slide) is stored, the rest dissipated. Without the spring a relock, which anchors
+      // the spring where it keeps the friction the contact carried, would bring S^2 / 2 ks
+      // from nowhere, and a release would lose it (docs/contacts.md, "Relocking").
+      const double f = c.iterate.shear_force;
+      const double stored = f * f / (2.0 * ks) - c.state.spring_energy;
+      const double dissipated = -f * c.iterate.slip - stored;
+      s.friction_dissipation += std::max(0.0, dissipated);
+      s.friction_gain += std::max(0.0, -dissipated);
+      brought += std::max(0.0, -dissipated);
     }
     suspect(c, brought);
   }
@@ -225,6 +235,14 @@ void start_energy_account(World& world) {
     if (!world.blocks[static_cast<std::size_t>(load.block)].fixed) reach += load.force.norm() * world.w0;
   }
   world.energy.scale = std::max(e.kinetic + e.strain_energy + e.contact_energy, reach);
+}
+
+void record_spring_energies(std::vector<Contact>& contacts, double penalty) {
+  const double ks = kShearSpringRatio * penalty;
+  for (Contact& c : contacts) {
+    const double f = c.iterate.shear_force;
+    c.state.spring_energy = c.state.mode == ContactMode::Open ? 0.0 : f * f / (2.0 * ks);
+  }
 }
 
 }  // namespace dda

@@ -72,4 +72,8 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
 // Starts the account on the world's present state (before the first step).
 void start_energy_account(World& world);
 
+// After an accepted step: each contact keeps its shear spring's energy for the next step's
+// account (ContactState::spring_energy).
+void record_spring_energies(std::vector<Contact>& contacts, double penalty);
+
 }  // namespace dda
