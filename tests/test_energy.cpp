@@ -119,9 +119,13 @@ TEST_CASE("energy account: a block dropped on a floor creates no energy", "[ener
   const RunStats stats = run_quietly(w);
   INFO(stats.message << " dt " << dt << ", remainder max " << w.energy.remainder_max);
   REQUIRE_FALSE(stats.diverged);
-  // The gain never exceeds 0.1 % of the drop's energy, the size of the re-detection jumps the
-  // account still shows (docs/energy-balance.md), and the block comes to rest on the floor.
-  CHECK(w.energy.remainder_max < 1e-3 * drop);
+  // The gain never exceeds round-off, and the block comes to rest on the floor. Round-off:
+  // the account's terms are up to ~10 times the drop's energy (the potential energy from
+  // y = 0 is 3.5 times it, the damping's sum about one), and at most 3000 steps each add a
+  // few units of 1.1e-16 of them: ~1e-11 of the drop's energy if they all added up; 1e-9
+  // (measured 3.4e-12 of it at dt 2 ms, 6.9e-13 at 0.2 ms). (1e-3 of it until 2026-11-25,
+  // for the re-detection jumps docs/energy-balance.md describes; this drop shows none.)
+  CHECK(w.energy.remainder_max < 1e-9 * drop);
   CHECK(scene_energy(w).kinetic < 1e-3 * drop);
   CHECK(w.energy.damping_dissipation > 0.5 * drop);
 }
