@@ -263,14 +263,25 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("dir", help="the --out directory of dda_verify_paper")
     args = ap.parse_args()
-    plot_falling_scene(args.dir)
-    plot_falling_area(args.dir)
-    plot_swinging_energy(args.dir)
-    plot_speed(args.dir)
-    plot_closed_form_speed(args.dir)
-    for name in ("falling_scene.png", "falling_area_error.png", "swinging_energy.png",
-                 "speed_error.png", "speed_incline.png", "speed_plastic.png"):
-        print(os.path.join(args.dir, name))
+    # What each figure needs; a --closed-form-only run has only the last two.
+    figures = [(plot_falling_scene, ["falling_scene.csv", "falling_path.csv", "falling_area.csv",
+                                     "falling_summary.csv"], ["falling_scene.png"]),
+               (plot_falling_area, ["falling_area.csv", "falling_summary.csv"],
+                ["falling_area_error.png"]),
+               (plot_swinging_energy, ["swinging_energy.csv", "swinging_summary.csv"],
+                ["swinging_energy.png"]),
+               (plot_speed, ["speed_spin.csv", "speed_pendulum.csv"], ["speed_error.png"]),
+               (plot_closed_form_speed, ["speed_incline.csv", "speed_plastic.csv"],
+                ["speed_incline.png", "speed_plastic.png"])]
+    drawn = 0
+    for plot, needs, pngs in figures:
+        if all(os.path.exists(os.path.join(args.dir, n)) for n in needs):
+            plot(args.dir)
+            for name in pngs:
+                print(os.path.join(args.dir, name))
+            drawn += 1
+    if drawn == 0:
+        raise SystemExit(f"{args.dir}: no CSV of dda_verify_paper found")
 
 
 if __name__ == "__main__":
