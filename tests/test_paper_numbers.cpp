@@ -54,6 +54,21 @@ const fs::path& full_run() {
   return dir.path;
 }
 
+// Only the sliding block's and the plastic specimen's sweeps (--closed-form-only: about
+// 0.5 s, against the full run's 2 to 3 s; the same numbers as the full run's CSVs).
+const fs::path& closed_form_run() {
+  static const dda::test::TempDir dir("dda-paper-closed-form-");
+  static const bool ran = [] {
+    const auto r = dda::test::run_command(dda::test::shell_quote(DDA_PAPER_EXE) +
+                                          " --closed-form-only --out " +
+                                          dda::test::shell_quote(dir.path.string()));
+    if (r.exit_code != 0) throw std::runtime_error("dda_verify_paper failed:\n" + r.output);
+    return true;
+  }();
+  (void)ran;
+  return dir.path;
+}
+
 bool rotation_exact(const std::string& treatment) {
   return treatment == "post_adjustment" || treatment == "local_frame" ||
          treatment == "local_frame_as_printed" || treatment == "finite_rotation";
@@ -321,5 +336,107 @@ TEST_CASE("paper reproduction: the octagon's period and swing against CVODE's ri
       CHECK(std::abs(number(row, "period_rel_error")) > 3e-3);
       CHECK(number(row, "first_swing") > M_PI);
     }
+  }
+}
+
+TEST_CASE("paper reproduction: a block sliding down an incline and a Mohr-Coulomb specimen "
+          "against their closed forms over dt",
+          "[paper]") {
+  // Issue 13, item 9: the work-precision sweeps of speed_incline.csv and speed_plastic.csv.
+  SECTION("the sliding block: d = g (sin a - cos a tan phi) t^2 / 2") {
+    const std::vector<Row> rows = read_csv(closed_form_run() / "speed_incline.csv");
+    REQUIRE(rows.size() == 8);
+    const double g = 9.81, a = M_PI / 6.0, tan_phi = std::tan(20.0 * M_PI / 180.0);
+    const double acc = g * (std::sin(a) - std::cos(a) * tan_phi);
+    std::map<double, Row> by_dt;
+    for (const Row& row : rows) {
+      const double dt = number(row, "dt");
+      by_dt[dt] = row;
+      INFO("dt " << dt << ": error " << row.at("rel_error") << ", lag / dt "
+                 << row.at("lag_over_dt") << ", acceleration error " << row.at("acc_rel_error")
+                 << ", Omega " << row.at("omega_dt"));
+      CHECK(row.at("status") == "completed");
+      CHECK(row.at("cut_steps") == "0");  // every run took the dt it was given
+      CHECK_THAT(number(row, "acc_ref"), Catch::Matchers::WithinRel(acc, 1e-12));
+      // Once sliding, Shi's step is exact for a constant force: the acceleration from the
+      // travel between 1 s and 2 s is the closed form's up to the positions' elastic
+      // compliance, m g sin a / E = 1427 x 9.81 x 0.5 / 2e9 = 3.5e-6 m, which moves
+      // (sqrt d2 - sqrt d1)^2 by at most 5.8e-6 relative (d1 = 0.91 m, d2 = 3.63 m):
+      // 1e-5 (measured 2.5e-8 to 8.3e-7).
+      CHECK(number(row, "acc_rel_error") <= 1e-5);
+    }
+    // Omega = dt sqrt(2 p / m) >> 1 (dt >= 5 ms, Omega >= 59): the unloaded contact springs
+    // take the whole first step to load and it is lost: tau = dt less a part that shrinks
+    // as Omega grows (measured 0.949, 0.987, 0.997 dt at Omega 59, 118, 237), never more than
+    // the step. The error 2 tau / t is then first order: measured 1.007 from 0.02 to 0.01 s.
+    for (const double dt : {0.02, 0.01, 0.005}) {
+      const Row& row = by_dt.at(dt);
+      INFO("dt " << dt << ": lag / dt " << row.at("lag_over_dt"));
+      CHECK(number(row, "omega_dt") > 50.0);
+      CHECK(number(row, "lag_over_dt") >= 0.9);
+      CHECK(number(row, "lag_over_dt") <= 1.0);
+      CHECK(number(row, "rel_error") <= 2.0 * dt / 1.0);
+    }
+    const double order = number(by_dt.at(0.01), "order");
+    INFO("order from 0.02 to 0.01 s: " << order);
+    CHECK(order >= 0.95);
+    CHECK(order <= 1.1);
+    // At the finest dt (Omega ~ 1) the step resolves the springs' oscillation, which Shi's
+    // scheme damps by about Omega / 4 a cycle, i.e. over 4 / (omega^2 dt) s; while it lasts
+    // friction (tan phi times the oscillating normal force) can miss or add at most
+    // g cos a tan phi over that time, so |tau| <= g cos a tan phi 4 / (omega^2 dt) / acc
+    // (4.9e-4 s at dt = 1e-4 s; measured 2.5e-4 s, the block ahead). This is the penalty
+    // model's own start, which a smaller dt does not remove: the error's floor (5.1e-4).
+    const Row& finest = by_dt.at(1e-4);
+    const double omega_sq =
+        2.0 * number(finest, "penalty") / number(finest, "mass");
+    const double bound = g * std::cos(a) * tan_phi * 4.0 / (omega_sq * 1e-4) / acc;
+    INFO("finest: lag " << finest.at("lag") << " s, bound " << bound << " s, error "
+                        << finest.at("rel_error"));
+    CHECK(std::abs(number(finest, "lag")) <= bound);
+    CHECK(number(finest, "rel_error") <= 2.0 * bound / 1.0 + 1e-6);
+  }
+  SECTION("the plastic specimen: s1 = N s3 + 2 c sqrt(N)") {
+    const std::vector<Row> rows = read_csv(closed_form_run() / "speed_plastic.csv");
+    REQUIRE(rows.size() == 5);
+    const double s = std::sin(M_PI / 6.0), n = (1.0 + s) / (1.0 - s);
+    const double strength = n * 1e6 + 2e6 * std::sqrt(n);
+    std::map<double, Row> by_dt;
+    for (const Row& row : rows) {
+      const double dt = number(row, "dt");
+      by_dt[dt] = row;
+      const double h = number(row, "height");
+      INFO("dt " << dt << ": error on the present height " << row.at("error_signed")
+                 << ", lag term " << row.at("lag_term") << ", nominal " << row.at("error_nominal"));
+      CHECK(row.at("status") == "completed");
+      CHECK_THAT(number(row, "strength"), Catch::Matchers::WithinRel(strength, 1e-12));
+      // The return is exact on the yield surface (round-off of 6.5e6 Pa: measured 1.4e-16).
+      CHECK(number(row, "yield_residual") <= 1e-12);
+      // The lag term is one step's shortening, N P (v dt) / h^2, v = 1e-3 m/s.
+      CHECK_THAT(number(row, "lag_term"),
+                 Catch::Matchers::WithinRel(n * 1e6 * 1e-3 * dt / (h * h) / strength, 1e-12));
+      // Against the nominal s3 = P the shortening itself counts, N P (1 / h - 1) <=
+      // N P 2e-3 / (1 - 2e-3) for the whole push: 9.3e-4 of the strength (measured 8.4e-4 to
+      // 8.6e-4 at every dt); 1e-3.
+      CHECK(number(row, "error_nominal") <= 1e-3);
+    }
+    // Two terms make the error on the present height: minus the lag term (first order) and
+    // static analysis' 2 M / dt^2 resisting each step's movement with 2 M v / dt (the
+    // remainder, of order 1 / dt). Remainder x dt is the same at every dt: measured 4.68e-9
+    // to 4.77e-9 s from 0.02 s down, within 5 % of the finest's. (At 0.04 s, 5.05e-9: there
+    // the remainder is 0.7 % of the lag term, so a shortening a step 5e-4 short of v dt, the
+    // share the platen and the springs take as s1 creeps up, shows as 8 %; not checked.)
+    const double c = number(by_dt.at(0.0025), "inertia_term") * 0.0025;
+    for (const double dt : {0.02, 0.01, 0.005, 0.0025}) {
+      INFO("dt " << dt << ": remainder x dt " << number(by_dt.at(dt), "inertia_term") * dt);
+      CHECK_THAT(number(by_dt.at(dt), "inertia_term") * dt, Catch::Matchers::WithinRel(c, 0.05));
+    }
+    // Where the lag dominates the order is 1 (measured 1.03 from 0.04 to 0.02 s): with the
+    // remainder c / dt of the other sign, e(dt) = A dt - c / dt, the order from 0.04 to 0.02
+    // is 1.03 for these numbers; [0.95, 1.1] allows for it and catches a lost order.
+    const double order = number(by_dt.at(0.02), "order");
+    INFO("order from 0.04 to 0.02 s: " << order);
+    CHECK(order >= 0.95);
+    CHECK(order <= 1.1);
   }
 }

@@ -38,14 +38,15 @@ TEST_CASE("paper reproduction: the smoke run writes the report and every CSV", "
   const std::string report = read_file(out / "report.md");
   for (const char* section : {"## Treatments", "## Table 1: the falling octagon",
                               "## Tables 2 and 3: the swinging octagon", "### Energy and swing",
-                              "## Speed against error"}) {
+                              "## Speed against error", "### A block sliding down an incline",
+                              "### A Mohr-Coulomb specimen compressed through its contacts"}) {
     CHECK(contains(report, section));
   }
   // Every CSV has its header and at least one row.
   for (const char* name : {"falling_scene.csv", "falling_area.csv", "falling_path.csv",
                            "falling_summary.csv", "swinging_diagonals.csv", "swinging_strains.csv",
                            "swinging_energy.csv", "swinging_summary.csv", "speed_spin.csv",
-                           "speed_pendulum.csv"}) {
+                           "speed_pendulum.csv", "speed_incline.csv", "speed_plastic.csv"}) {
     INFO(name);
     CHECK(read_lines(out / name).size() >= 2);
   }

@@ -128,6 +128,13 @@ double moved_down_slope(const World& w, const Vec2& start) {
 //   if it broke as late as 0.074 s.
 constexpr double kHeld = 1e-5;
 constexpr double kSlid = 1e-3;
+// - still: a block consolidated by a static gravity ramp (50 steps) and then run dynamically
+//   from rest. The static stage's last step leaves at most its own increment unbalanced
+//   (static analysis carries a share 2 M/dt^2 / (2 M/dt^2 + k) < 1 of it over), about the
+//   settlement over the ramp's 50 steps, 3e-6 / 50 = 6e-8 m, and a suddenly released
+//   imbalance moves the block at most twice its static deflection: 1.2e-7 m. Measured
+//   9e-10 m (kHeld, used for this until 2026-11-25, was 11000 times that).
+constexpr double kStill = 2.0 * 3e-6 / 50.0;
 
 // ---- reader ----
 
@@ -420,7 +427,7 @@ TEST_CASE("stages: gravity at once breaks a cohesive block's bond, but consolida
     CHECK(world.gravity == s.gravity);  // the ramp ended at factor 1, exactly
     CHECK(std::abs(moved_down_slope(world, start)) < kHeld);
     // The dynamic stage started at rest and stayed there.
-    CHECK(std::abs((world.blocks[1].moments.centroid - consolidated).dot(kDownSlope)) < kHeld);
+    CHECK(std::abs((world.blocks[1].moments.centroid - consolidated).dot(kDownSlope)) < kStill);
   }
 }
 
@@ -467,7 +474,7 @@ TEST_CASE("stages: bond_closed_contacts bonds the contacts a static stage has cl
   SECTION("bonded at the start of stage 2: the block holds") {
     const auto [moved, bonds] = run_stages(true);
     CHECK(bonds == std::vector<int>{0, 2});  // the block's two bottom corners
-    CHECK(std::abs(moved) < kHeld);
+    CHECK(std::abs(moved) < kStill);  // moved: in stage 2 only
   }
   SECTION("not bonded: friction alone lets it slide") {
     const auto [moved, bonds] = run_stages(false);

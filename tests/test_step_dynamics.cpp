@@ -118,7 +118,9 @@ TEST_CASE("static mode: an initial stress relaxes to the strain -D^-1 s0", "[ste
     // after 200 steps only round-off (~1e-16 of the strain per step, accumulated) is left.
     const Vec3& strain = treatment == RotationUpdate::Original ? b.strain : b.local_strain;
     CHECK((strain - expected).norm() <= 1e-12 * expected.norm());
-    CHECK(b.stress.norm() <= 1e-9 * s0.norm());
+    // The stress is s0 + D strain = D (strain - expected): at most |D| |D^-1| (4 at nu 0.25)
+    // times the strain's 1e-12 of s0 (measured 2e-16 of it; 1e-9 until 2026-11-25).
+    CHECK(b.stress.norm() <= 1e-11 * s0.norm());
   }
 }
 

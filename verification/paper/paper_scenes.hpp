@@ -81,5 +81,26 @@ Scene pendulum_scene(double dt, int steps, RotationUpdate update);
 // A 2 m x 1 m rectangle (long side along x) of the paper's rock, centred at the origin,
 // spinning at `omega` (rad/s), no gravity, maximum displacement ratio 1 (no step is cut).
 Scene spinning_rectangle_scene(double dt, int steps, double omega, RotationUpdate update);
+// A block sliding down an incline (a contact case with a closed form): a fixed triangular
+// slope whose top face is the line through the origin at kInclineSlope degrees, and a free
+// kInclineBlock[0] x kInclineBlock[1] block standing on it, centred at the origin; joint
+// friction kInclineFriction degrees, paper material, Shi's auto penalty; ends at end_time.
+// The block is the LAST block.
+inline constexpr double kInclineSlope = 30.0;     // degrees
+inline constexpr double kInclineFriction = 20.0;  // degrees
+inline constexpr double kInclineBlock[2] = {1.0, 0.5};  // m, along and normal to the slope
+Scene incline_scene(double dt, double end_time);
+
+// Plane-strain compression of a Mohr-Coulomb specimen through its contacts (a plastic case
+// with a closed form): a fixed base, a unit-square specimen (block 1) and a stiff elastic
+// platen (block 2) on it, no gravity, frictionless joints, the specimen confined by two
+// opposite point loads kPlatenConfining (N per metre) at mid-height of its sides and
+// compressed by a pin at the platen's top whose anchor the caller moves down (displacement
+// control). Static analysis (dynamic_coefficient 0), light blocks (20 kg/m^3), E = 1e10 Pa,
+// nu = 0.25; the specimen's cohesion kPlatenCohesion, friction and dilation kPlatenFriction.
+inline constexpr double kPlatenCohesion = 1e6;    // Pa
+inline constexpr double kPlatenFriction = 30.0;   // degrees
+inline constexpr double kPlatenConfining = 1e6;   // N per metre on a 1 m side: s3 = 1 MPa
+Scene platen_scene(double dt, int steps);
 
 }  // namespace dda::paper

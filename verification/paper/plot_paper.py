@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Draws the PNGs of the paper reproduction from the CSVs that dda_verify_paper wrote into DIR:
 falling_scene.png, falling_area_error.png, swinging_energy.png, speed_error.png,
-rotation_stress.png.
+rotation_stress.png, speed_incline.png, speed_plastic.png.
 Usage: /usr/bin/python3 verification/paper/plot_paper.py DIR
 (Debian's python3 with numpy and matplotlib; the Agg backend, no display needed.)"""
 import argparse
@@ -252,18 +252,81 @@ def plot_rotation(d):
     plt.close(fig)
 
 
+def plot_work_precision(d, csv_name, png_name, curves, title, slope_key):
+    """Two panels: each error against the wall time of its run, and against dt with a
+    first-order guide through the curve named slope_key. `curves`: (column, label, marker)."""
+    rows = [r for r in read(d, csv_name) if r["status"] == "completed"]
+    rows.sort(key=lambda r: -float(r["dt"]))
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+    for key, label, marker in curves:
+        wall = [float(r["wall_s"]) for r in rows]
+        dts = [float(r["dt"]) for r in rows]
+        err = [max(abs(float(r[key])), LOG_FLOOR) for r in rows]
+        axes[0].plot(wall, err, marker=marker, ms=4, lw=1.0, label=label)
+        axes[1].plot(dts, err, marker=marker, ms=4, lw=1.0, label=label)
+        if key == slope_key:
+            for r, x, y in zip(rows, wall, err):
+                axes[0].annotate(f"dt {float(r['dt']):g}", (x, y), fontsize=6, xytext=(3, 3),
+                                 textcoords="offset points")
+            if dts:
+                ref = np.array([max(dts), min(dts)])
+                axes[1].plot(ref, err[0] * ref / dts[0], color="grey", ls=":", lw=0.8,
+                             label="first order (through the largest dt)")
+    axes[0].set_xlabel("wall time of the run (s)")
+    axes[1].set_xlabel("dt (s)")
+    for ax in axes:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.grid(True, which="major", alpha=0.3)
+        ax.set_ylabel("relative error (zero drawn at 1e-17)")
+    axes[1].legend(fontsize=7)
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, png_name), dpi=110)
+    plt.close(fig)
+
+
+def plot_closed_form_speed(d):
+    plot_work_precision(
+        d, "speed_incline.csv", "speed_incline.png",
+        [("rel_error", "distance at 1 s vs g (sin a - cos a tan phi) t^2/2", "o"),
+         ("acc_rel_error", "sliding acceleration (travel from 1 s to 2 s)", "s")],
+        "Block sliding down a 30 degree incline, friction 20 degrees: error against cost over dt",
+        "rel_error")
+    plot_work_precision(
+        d, "speed_plastic.csv", "speed_plastic.png",
+        [("error_present", "s1 vs N P / h + 2 c sqrt(N) (present height)", "o"),
+         ("error_nominal", "s1 vs N s3 + 2 c sqrt(N) (nominal s3)", "s"),
+         ("lag_term", "one step's shortening N P v dt / (h^2 s1)", "x")],
+        "Mohr-Coulomb specimen pushed through a platen (static analysis): error against cost "
+        "over dt", "error_present")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("dir", help="the --out directory of dda_verify_paper")
     args = ap.parse_args()
-    plot_falling_scene(args.dir)
-    plot_falling_area(args.dir)
-    plot_swinging_energy(args.dir)
-    plot_speed(args.dir)
-    plot_rotation(args.dir)
-    for name in ("falling_scene.png", "falling_area_error.png", "swinging_energy.png",
-                 "speed_error.png", "rotation_stress.png"):
-        print(os.path.join(args.dir, name))
+    # What each figure needs; a --closed-form-only run has only the last two.
+    figures = [(plot_falling_scene, ["falling_scene.csv", "falling_path.csv", "falling_area.csv",
+                                     "falling_summary.csv"], ["falling_scene.png"]),
+               (plot_falling_area, ["falling_area.csv", "falling_summary.csv"],
+                ["falling_area_error.png"]),
+               (plot_swinging_energy, ["swinging_energy.csv", "swinging_summary.csv"],
+                ["swinging_energy.png"]),
+               (plot_speed, ["speed_spin.csv", "speed_pendulum.csv"], ["speed_error.png"]),
+               (plot_closed_form_speed, ["speed_incline.csv", "speed_plastic.csv"],
+                ["speed_incline.png", "speed_plastic.png"]),
+               (plot_rotation, ["rotation_swing.csv", "rotation_gain.csv"],
+                ["rotation_stress.png"])]
+    drawn = 0
+    for plot, needs, pngs in figures:
+        if all(os.path.exists(os.path.join(args.dir, n)) for n in needs):
+            plot(args.dir)
+            for name in pngs:
+                print(os.path.join(args.dir, name))
+            drawn += 1
+    if drawn == 0:
+        raise SystemExit(f"{args.dir}: no CSV of dda_verify_paper found")
 
 
 if __name__ == "__main__":

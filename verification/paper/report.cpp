@@ -64,9 +64,11 @@ std::string full_report(const Options& opt, const AllResults& r) {
      << "Files: falling_scene.csv, falling_area.csv (area error against step, every run), "
         "falling_path.csv (the rock's outline every 20 steps), falling_summary.csv; "
         "swinging_diagonals.csv, swinging_strains.csv, swinging_energy.csv, "
-        "swinging_summary.csv; speed_spin.csv, speed_pendulum.csv; rotation_spin.csv, rotation_swing.csv, "
-        "rotation_swing_summary.csv, rotation_gain.csv, rotation_pendulum.csv; PNGs: falling_scene.png, "
-        "falling_area_error.png, swinging_energy.png, speed_error.png.\n\n";
+        "swinging_summary.csv; speed_spin.csv, speed_pendulum.csv, speed_incline.csv, "
+        "speed_plastic.csv; rotation_spin.csv, rotation_swing.csv, rotation_swing_summary.csv, "
+        "rotation_gain.csv, rotation_pendulum.csv; PNGs: falling_scene.png, "
+        "falling_area_error.png, swinging_energy.png, speed_error.png, speed_incline.png, "
+        "speed_plastic.png, rotation_stress.png.\n\n";
   md << availability(opt, r);
   md << conclusion_report(opt, r);
   md << falling_report(opt, r.falling);

@@ -147,6 +147,7 @@ SpeedResults run_speed(const Options& opt) {
           pendulum_point(t, dt, out.pendulum_time, out.reference, opt.smoke ? 1 : kTimingRepeats));
     }
   }
+  out.closed_form = run_closed_form_speed(opt);
   return out;
 }
 
@@ -168,6 +169,7 @@ void write_speed_csv(const Options& opt, const SpeedResults& r) {
          << ',' << full(p.amplitude) << ',' << full(p.amplitude_ref) << ','
          << full(rel(p.amplitude, p.amplitude_ref)) << '\n';
   }
+  write_closed_form_speed_csv(opt, r.closed_form);
 }
 
 std::string speed_report(const Options& opt, const SpeedResults& r) {
@@ -214,6 +216,7 @@ std::string speed_report(const Options& opt, const SpeedResults& r) {
        << sig(rel(p.amplitude, p.amplitude_ref)) << " | " << describe(p.result) << " |\n";
   }
   md << '\n';
+  md << closed_form_speed_report(opt, r.closed_form);
   return md.str();
 }
 

@@ -1,13 +1,16 @@
 // Speed against error, over a sweep of time steps, one curve per treatment:
 // (a) a freely spinning block: area drift after a fixed time against wall time;
 // (b) a rigid pendulum: period and amplitude error against the CVODE reference
-//     (solver/pendulum_reference.hpp) against wall time.
+//     (solver/pendulum_reference.hpp) against wall time;
+// and, beyond rotation (speed_closed_form.hpp), a block sliding down an incline and a
+// Mohr-Coulomb specimen compressed through its contacts, against their closed forms.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "options.hpp"
+#include "speed_closed_form.hpp"
 #include "treatments.hpp"
 
 namespace dda::paper {
@@ -44,6 +47,7 @@ struct SpeedResults {
   std::vector<PendulumPoint> pendulum;
   PendulumReference reference;
   double spin_omega = 0.0, spin_time = 0.0, pendulum_time = 0.0;
+  ClosedFormSpeed closed_form;  // the incline and the plastic specimen
 };
 
 SpeedResults run_speed(const Options& opt);
