@@ -322,9 +322,10 @@ const GainPoint* find_gain(const std::vector<GainPoint>& list, const std::string
 
 std::string gain_cell(const GainPoint* g) {
   if (!g) return "-";
-  std::string cell = sig(g->gain) + " (" + fixed(g->max_swing, 3) + " rad)";
-  if (g->result.status != RunStatus::Completed) cell += " " + std::string(status_word(g->result.status));
-  return cell;
+  std::ostringstream cell;
+  cell << sig(g->gain) << " (" << fixed(g->max_swing, 3) << " rad)";
+  if (g->result.status != RunStatus::Completed) cell << ' ' << status_word(g->result.status);
+  return cell.str();
 }
 
 }  // namespace
