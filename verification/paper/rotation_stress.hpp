@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "options.hpp"
@@ -37,6 +38,9 @@ struct SwingStress {
   double rms_error = 0.0;   // root mean square of the same
   std::vector<double> time;                  // every step (for the CSV and plot)
   std::vector<Vec3> stress, expected;        // two-step means, block axes (Pa)
+  // The same error at the steps of Tables 2-3 (200, 2000, 5000), {step, error}; the full
+  // run only.
+  std::vector<std::pair<int, double>> table_steps;
 };
 
 // The energy gain of the paper's swinging octagon, max over [0, T] of (E - E0 - E_pin) /
@@ -69,7 +73,8 @@ struct RotationStudy {
 };
 
 RotationStudy run_rotation_study(const Options& opt);
-// rotation_spin.csv, rotation_swing.csv (every step), rotation_gain.csv, rotation_pendulum.csv.
+// rotation_spin.csv, rotation_swing.csv (every step), rotation_swing_summary.csv,
+// rotation_table3.csv, rotation_gain.csv, rotation_pendulum.csv.
 void write_rotation_csv(const Options& opt, const RotationStudy& s);
 std::string rotation_report(const Options& opt, const RotationStudy& s);
 
