@@ -35,6 +35,14 @@ void best_row(std::ostringstream& md, const Measure& m) {
   md << ' ' << ranked.back().second << " (" << sig(ranked.back().first) << m.unit << ") |\n";
 }
 
+// Whether a run used its treatment's default inertia (the study repeats two block-frame
+// treatments with Shi's, which the measures leave out).
+bool runs_default_inertia(const std::string& treatment, const std::string& inertia) {
+  const bool block_frame = treatment == "local_frame" || treatment == "finite_rotation" ||
+                           treatment == "local_frame_as_printed";
+  return block_frame == (inertia == "pseudo_rigid");
+}
+
 // Table 1: the largest |A/A0 - 1| at the end over the three settings.
 Measure falling_area(const std::vector<FallingRun>& runs) {
   Measure m{"Table 1: rock's area error at the end, worst setting", "", {}};
@@ -83,22 +91,16 @@ std::string conclusion_report(const Options& opt, const AllResults& r) {
   Measure swing_stress{"Swinging octagon's stress against the closed form, rms over a period",
                        "", {}};
   for (const SpinStress& s : r.rotation.spin) {
-    const bool default_inertia =
-        s.inertia == "pseudo_rigid" || (s.treatment != "local_frame" && s.treatment != "finite_rotation" &&
-                                        s.treatment != "local_frame_as_printed");
+    const bool default_inertia = runs_default_inertia(s.treatment, s.inertia);
     if (default_inertia && s.result.status == RunStatus::Completed) spin.value[s.treatment] = s.error;
   }
   for (const SwingStress& s : r.rotation.swing) {
-    const bool default_inertia =
-        s.inertia == "pseudo_rigid" || (s.treatment != "local_frame" && s.treatment != "finite_rotation" &&
-                                        s.treatment != "local_frame_as_printed");
+    const bool default_inertia = runs_default_inertia(s.treatment, s.inertia);
     if (default_inertia && s.result.status == RunStatus::Completed) swing_stress.value[s.treatment] = s.rms_error;
   }
   Measure table3{"Tables 2-3's step 2000: stress against the closed form, / max", "", {}};
   for (const SwingStress& s : r.rotation.swing) {
-    const bool default_inertia =
-        s.inertia == "pseudo_rigid" || (s.treatment != "local_frame" && s.treatment != "finite_rotation" &&
-                                        s.treatment != "local_frame_as_printed");
+    const bool default_inertia = runs_default_inertia(s.treatment, s.inertia);
     for (const auto& [step, e] : s.table_steps) {
       if (step == 2000 && default_inertia) table3.value[s.treatment] = e;
     }
