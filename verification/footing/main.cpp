@@ -1,0 +1,194 @@
+// dda_verify_footing --out DIR [--smoke] [--cells H,H,...] [--steps N,N,...]
+//                    [--mesh crossed|diagonal|both] [--jobs N]
+// A smooth rigid strip footing pressed into a weightless Tresca layer of plastic blocks
+// against Prandtl's (2 + pi) c (issue 13 item 8; verification/footing/README.md). Writes
+// curves.csv (the load-settlement curve of every run), runs.csv (one row a run: the limit
+// pressure, its error against Prandtl, the cost), zone_<label>.csv (each block's outline and
+// plastic strain at the end), scene_<label>.json (the scene of each run, pins unmoved) and
+// report.md into DIR, and prints the report. Exit codes: 0 done (a run that stops early is a
+// result in the report); 1 output could not be written; 2 bad arguments.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "../common/format.hpp"
+#include "footing_case.hpp"
+
+namespace {
+
+using namespace dda::footing;
+namespace fmt = dda::verification;
+
+constexpr const char* kUsage =
+    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|both] [--jobs N]\n"
+    "  --out DIR     write curves.csv, runs.csv, zone_*.csv and report.md into DIR\n"
+    "  --smoke       the coarsest crossed mesh (h = 0.5 m) at 150 steps only\n"
+    "  --cells LIST  cell sides h (m), default 0.5,0.25,0.125,0.0625\n"
+    "  --steps LIST  steps over the 6 cm push, default 150,300 (300 not on the finest cell)\n"
+    "  --mesh M      crossed (default), diagonal or both\n"
+    "  --jobs N      runs at once (default 1)\n";
+
+std::vector<double> numbers(const std::string& text) {
+  std::vector<double> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(std::stod(item));
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::filesystem::path out;
+  bool smoke = false;
+  std::vector<double> cells_list{0.5, 0.25, 0.125, 0.0625};
+  std::vector<double> steps_list{150, 300};
+  bool custom_steps = false;
+  std::vector<Mesh> meshes{Mesh::Crossed};
+  int jobs = 1;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--smoke") {
+        smoke = true;
+      } else if (arg == "--out" && i + 1 < argc) {
+        out = argv[++i];
+      } else if (arg == "--cells" && i + 1 < argc) {
+        cells_list = numbers(argv[++i]);
+      } else if (arg == "--steps" && i + 1 < argc) {
+        steps_list = numbers(argv[++i]);
+        custom_steps = true;
+      } else if (arg == "--mesh" && i + 1 < argc) {
+        const std::string m = argv[++i];
+        if (m == "crossed") meshes = {Mesh::Crossed};
+        else if (m == "diagonal") meshes = {Mesh::Diagonal};
+        else if (m == "both") meshes = {Mesh::Crossed, Mesh::Diagonal};
+        else throw std::invalid_argument("--mesh: " + m);
+      } else if (arg == "--jobs" && i + 1 < argc) {
+        jobs = std::max(1, std::atoi(argv[++i]));
+      } else if (arg == "--help" || arg == "-h") {
+        std::cout << kUsage;
+        return 0;
+      } else {
+        std::cerr << "dda_verify_footing: unexpected argument \"" << arg << "\"\n" << kUsage;
+        return 2;
+      }
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "dda_verify_footing: bad argument (" << e.what() << ")\n" << kUsage;
+    return 2;
+  }
+  if (out.empty()) {
+    std::cerr << "dda_verify_footing: --out DIR is required\n" << kUsage;
+    return 2;
+  }
+  std::vector<FootingCase> cases;
+  if (smoke) {
+    cases.push_back(FootingCase{});
+  } else {
+    const double finest = *std::min_element(cells_list.begin(), cells_list.end());
+    for (Mesh m : meshes) {
+      for (double h : cells_list) {
+        for (double n : steps_list) {
+          // The slower load rate is left out on the finest cell unless asked for.
+          if (!custom_steps && n != steps_list.front() && h == finest && cells_list.size() > 1) continue;
+          FootingCase c;
+          c.mesh = m;
+          c.cell = h;
+          c.steps = static_cast<int>(n);
+          cases.push_back(c);
+        }
+      }
+    }
+  }
+  std::filesystem::create_directories(out);
+  std::vector<FootingResult> results(cases.size());
+  std::mutex print;
+  std::size_t next = 0;
+  auto worker = [&]() {
+    for (;;) {
+      std::size_t k;
+      {
+        std::lock_guard<std::mutex> lock(print);
+        if (next >= cases.size()) return;
+        k = next++;
+      }
+      results[k] = run_footing(cases[k]);
+      std::lock_guard<std::mutex> lock(print);
+      const FootingResult& r = results[k];
+      std::cerr << cases[k].label() << ": " << r.blocks << " blocks, q/c "
+                << fmt::fixed(r.final_pressure / cases[k].cohesion, 4) << ", "
+                << fmt::fixed(r.wall_s, 1) << " s" << (r.ok ? "" : ", STOPPED: " + r.message)
+                << '\n';
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 0; j < std::min<int>(jobs, static_cast<int>(cases.size())); ++j) threads.emplace_back(worker);
+  for (std::thread& t : threads) t.join();
+
+  try {
+    const double qu = prandtl_pressure(FootingCase{}.cohesion, FootingCase{}.friction_angle);
+    std::ofstream curves = fmt::open_csv(out, "curves.csv",
+                                         "label,mesh,cell,steps,step,settlement,pressure,q_over_c,yielding,edge_locked,edge_sliding,edge_open,edge_unbonded,corner_closed,solves,cuts");
+    std::ofstream runs = fmt::open_csv(
+        out, "runs.csv",
+        "label,mesh,cell,steps,blocks,ok,final_pressure,q_over_c,prandtl_q_over_c,relative_error,"
+        "wall_s,solves,cut_steps,open_close_max,energy_remainder_max,energy_scale,message");
+    std::ostringstream md;
+    md << "| mesh | h (m) | blocks | steps | q/c at s/B = 3 % | error vs 2 + pi | wall (s) | solves | cut steps |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      const FootingCase& c = cases[k];
+      const FootingResult& r = results[k];
+      for (const CurvePoint& p : r.curve) {
+        curves << c.label() << ',' << mesh_name(c.mesh) << ',' << fmt::full(c.cell) << ',' << c.steps << ','
+               << p.step << ',' << fmt::full(p.settlement) << ',' << fmt::full(p.pressure) << ','
+               << fmt::full(p.pressure / c.cohesion) << ',' << p.yielding << ',' << p.edge_locked << ','
+               << p.edge_sliding << ',' << p.edge_open << ',' << p.edge_unbonded << ','
+               << p.corner_closed << ',' << p.solves << ',' << p.cuts << '\n';
+      }
+      const double err = r.final_pressure / qu - 1.0;
+      std::string message = r.message;
+      std::replace(message.begin(), message.end(), ',', ';');
+      std::replace(message.begin(), message.end(), '\n', ' ');
+      runs << c.label() << ',' << mesh_name(c.mesh) << ',' << fmt::full(c.cell) << ',' << c.steps << ','
+           << r.blocks << ',' << (r.ok ? 1 : 0) << ',' << fmt::full(r.final_pressure) << ','
+           << fmt::full(r.final_pressure / c.cohesion) << ',' << fmt::full(qu / c.cohesion) << ','
+           << fmt::full(err) << ',' << fmt::full(r.wall_s) << ',' << r.solves << ',' << r.cut_steps << ','
+           << r.open_close_max << ',' << fmt::full(r.energy_remainder_max) << ','
+           << fmt::full(r.energy_scale) << ',' << '"' << message << '"' << '\n';
+      md << "| " << mesh_name(c.mesh) << " | " << fmt::significant(c.cell, 4) << " | " << r.blocks
+         << " | " << c.steps << " | " << fmt::fixed(r.final_pressure / c.cohesion, 3) << " | "
+         << (err >= 0 ? "+" : "") << fmt::fixed(100.0 * err, 1) << " % | " << fmt::fixed(r.wall_s, 1)
+         << " | " << r.solves << " | " << r.cut_steps << (r.ok ? "" : " (stopped: " + message + ")")
+         << " |\n";
+      std::ofstream zone = fmt::open_csv(out, "zone_" + c.label() + ".csv", "block,vertex,x,y,eps_p");
+      for (std::size_t b = 0; b < r.zone.polygons.size(); ++b) {
+        for (std::size_t v = 0; v < r.zone.polygons[b].size(); ++v) {
+          zone << b << ',' << v << ',' << fmt::full(r.zone.polygons[b][v].x()) << ','
+               << fmt::full(r.zone.polygons[b][v].y()) << ',' << fmt::full(r.zone.eps_p[b]) << '\n';
+        }
+      }
+    }
+    std::ofstream report(out / "report.md");
+    report << "# Strip footing on a Tresca layer of blocks against Prandtl\n\n"
+           << "Prandtl: q_u / c = 2 + pi = " << fmt::fixed(qu / FootingCase{}.cohesion, 4)
+           << "; footing B = 2 m (half model b = 1 m), E / c = 1000, nu = 0.3, pushed 6 cm (s/B = 3 %).\n\n"
+           << md.str();
+    if (!report) throw std::runtime_error("cannot write " + (out / "report.md").string());
+    std::cout << md.str();
+  } catch (const std::exception& e) {
+    std::cerr << "dda_verify_footing: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
