@@ -1,0 +1,128 @@
+#!/usr/bin/python3
+"""Figures of the footing verification (verification/footing/README.md) from the CSVs of
+dda_verify_footing: curves.png (load against settlement, every run, Prandtl's line),
+limit.png (the limit pressure's error against the cell size, log-log, with the cost),
+zone_<label>.png (each block of a run coloured by its plastic strain, the deformed mesh).
+Reads and draws only; usage: plot_footing.py DIR."""
+import csv
+import math
+import sys
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
+
+PRANDTL = 2.0 + math.pi
+HALF_WIDTH = 1.0  # b (m); B = 2 b
+
+
+def read(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def main(out):
+    out = Path(out)
+    runs = read(out / "runs.csv")
+    curves = {}
+    for row in read(out / "curves.csv"):
+        curves.setdefault(row["label"], []).append(row)
+
+    # Load-settlement curves.
+    fig, ax = plt.subplots(figsize=(7, 4.8))
+    for run in runs:
+        rows = curves.get(run["label"], [])
+        s = [float(r["settlement"]) / (2 * HALF_WIDTH) * 100 for r in rows]
+        q = [float(r["q_over_c"]) for r in rows]
+        style = "-" if run["mesh"] == "crossed" else ":"
+        width = 1.0 if int(run["steps"]) > 150 else 1.8
+        ax.plot(s, q, style, lw=width,
+                label=f"{run['mesh']} h = {float(run['cell']):g} m, {run['steps']} steps")
+    ax.axhline(PRANDTL, color="k", lw=1, ls="--", label="Prandtl (2 + π) c")
+    ax.set_xlabel("settlement s / B (%)")
+    ax.set_ylabel("footing pressure q / c")
+    ax.set_title("Smooth rigid strip footing on a Tresca layer of blocks")
+    ax.set_ylim(bottom=0)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    fig.savefig(out / "curves.png", dpi=120)
+    plt.close(fig)
+
+    # Error of the limit pressure against the cell size, and the cost.
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(10, 4.2))
+    for mesh, marker in (("crossed", "o"), ("diagonal", "s")):
+        for steps in sorted({int(r["steps"]) for r in runs if r["mesh"] == mesh}):
+            sel = [r for r in runs if r["mesh"] == mesh and int(r["steps"]) == steps and r["ok"] == "1"]
+            if not sel:
+                continue
+            sel.sort(key=lambda r: float(r["cell"]))
+            h = [HALF_WIDTH / float(r["cell"]) for r in sel]
+            err = [100 * float(r["relative_error"]) for r in sel]
+            ax.loglog(h, err, marker + ("-" if steps == 150 else "--"), label=f"{mesh}, {steps} steps")
+            blocks = [int(r["blocks"]) for r in sel]
+            wall = [float(r["wall_s"]) for r in sel]
+            ax2.loglog(blocks, wall, marker + ("-" if steps == 150 else "--"), label=f"{mesh}, {steps} steps")
+    ax.set_xlabel("cells across the footing's half width, b / h")
+    ax.set_ylabel("q_DDA / q_Prandtl − 1 (%)")
+    ax.set_title("Limit pressure at s / B = 3 %")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    ax2.set_xlabel("blocks in the layer")
+    ax2.set_ylabel("wall time of the run (s)")
+    ax2.set_title("Cost (shared 2-core machine)")
+    ax2.grid(alpha=0.3, which="both")
+    ax2.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "limit.png", dpi=120)
+    plt.close(fig)
+
+    # Plastic zones.
+    for run in runs:
+        path = out / f"zone_{run['label']}.csv"
+        if not path.exists():
+            continue
+        polys, eps = {}, {}
+        for r in read(path):
+            b = int(r["block"])
+            polys.setdefault(b, []).append((float(r["x"]), float(r["y"])))
+            eps[b] = float(r["eps_p"])
+        keys = sorted(polys)
+        values = [eps[k] for k in keys]
+        fig, ax = plt.subplots(figsize=(8, 4.4))
+        top = max(values) if values and max(values) > 0 else 1.0
+        coll = PolyCollection([polys[k] for k in keys], array=values, cmap="viridis",
+                              edgecolors="none" if len(keys) > 600 else "0.6", linewidths=0.2)
+        coll.set_clim(0, top)
+        ax.add_collection(coll)
+        # Prandtl's mechanism for B = 2 b (half): the active wedge, the fan, the passive wedge.
+        b = HALF_WIDTH
+        r0 = b * math.sqrt(2)
+        fan = [(b + r0 * math.cos(a), r0 * math.sin(a))
+               for a in [-3 * math.pi / 4 + k * (math.pi / 2) / 40 for k in range(41)]]
+        ax.plot([0, 0, b], [0, -b, 0], "w-", lw=1)  # active wedge (x >= 0 half)
+        ax.plot([p[0] for p in fan], [p[1] for p in fan], "w-", lw=1.2)
+        ax.plot([b + r0 * math.cos(-math.pi / 4), 3 * b], [r0 * math.sin(-math.pi / 4), 0], "w-", lw=1.2)
+        ax.plot([b, 3 * b], [0, 0], "w-", lw=0.5)
+        ax.plot([b, b + r0 * math.cos(-math.pi / 4)], [0, r0 * math.sin(-math.pi / 4)], "w-", lw=0.6)
+        rows = curves.get(run["label"], [])
+        settled = float(rows[-1]["settlement"]) if rows else 0.0
+        ax.add_patch(plt.Rectangle((0, -settled), b, 0.25, color="0.4"))
+        ax.set_xlim(-0.05, 4.05)
+        ax.set_ylim(-2.05, 0.35)
+        ax.set_aspect("equal")
+        fig.colorbar(coll, ax=ax, label="equivalent plastic strain", shrink=0.8)
+        ax.set_title(f"{run['label']}: plastic strain at s / B = 3 % (white: Prandtl's mechanism)",
+                     fontsize=9)
+        fig.tight_layout()
+        fig.savefig(out / f"zone_{run['label']}.png", dpi=120)
+        plt.close(fig)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit("usage: plot_footing.py DIR")
+    main(sys.argv[1])
