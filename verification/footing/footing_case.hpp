@@ -84,6 +84,7 @@ struct FootingResult {
   std::vector<CurvePoint> curve;
   double final_pressure = 0.0;   // Pa, at the full settlement: the DDA limit pressure
   double wall_s = 0.0;
+  double cpu_s = 0.0;    // CPU time of the thread that ran it
   int cut_steps = 0;
   long solves = 0;
   int open_close_max = 0;

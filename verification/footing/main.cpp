@@ -111,84 +111,104 @@ int main(int argc, char** argv) {
     }
   }
   std::filesystem::create_directories(out);
+  const double qu = prandtl_pressure(FootingCase{}.cohesion, FootingCase{}.friction_angle);
+  std::ofstream curves, runs;
+  try {
+    curves = fmt::open_csv(out, "curves.csv",
+                           "label,mesh,cell,steps,step,settlement,pressure,q_over_c,yielding,edge_locked,"
+                           "edge_sliding,edge_open,edge_unbonded,corner_closed,solves,cuts");
+    runs = fmt::open_csv(out, "runs.csv",
+                         "label,mesh,cell,steps,blocks,ok,final_pressure,q_over_c,prandtl_q_over_c,"
+                         "relative_error,wall_s,cpu_s,solves,cut_steps,open_close_max,"
+                         "energy_remainder_max,energy_scale,message");
+  } catch (const std::exception& e) {
+    std::cerr << "dda_verify_footing: " << e.what() << '\n';
+    return 1;
+  }
+  // Each run's rows are written as soon as it ends, so a study stopped part way keeps the
+  // runs it finished.
+  auto write_run = [&](const FootingCase& c, const FootingResult& r) {
+    for (const CurvePoint& p : r.curve) {
+      curves << c.label() << ',' << mesh_name(c.mesh) << ',' << fmt::full(c.cell) << ',' << c.steps << ','
+             << p.step << ',' << fmt::full(p.settlement) << ',' << fmt::full(p.pressure) << ','
+             << fmt::full(p.pressure / c.cohesion) << ',' << p.yielding << ',' << p.edge_locked << ','
+             << p.edge_sliding << ',' << p.edge_open << ',' << p.edge_unbonded << ',' << p.corner_closed
+             << ',' << p.solves << ',' << p.cuts << '\n';
+    }
+    curves.flush();
+    std::string message = r.message;
+    std::replace(message.begin(), message.end(), '"', '\'');
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    runs << c.label() << ',' << mesh_name(c.mesh) << ',' << fmt::full(c.cell) << ',' << c.steps << ','
+         << r.blocks << ',' << (r.ok ? 1 : 0) << ',' << fmt::full(r.final_pressure) << ','
+         << fmt::full(r.final_pressure / c.cohesion) << ',' << fmt::full(qu / c.cohesion) << ','
+         << fmt::full(r.final_pressure / qu - 1.0) << ',' << fmt::full(r.wall_s) << ',' << fmt::full(r.cpu_s)
+         << ',' << r.solves << ',' << r.cut_steps << ',' << r.open_close_max << ','
+         << fmt::full(r.energy_remainder_max) << ',' << fmt::full(r.energy_scale) << ",\"" << message
+         << "\"\n";
+    runs.flush();
+    std::ofstream zone = fmt::open_csv(out, "zone_" + c.label() + ".csv", "block,vertex,x,y,eps_p");
+    for (std::size_t b = 0; b < r.zone.polygons.size(); ++b) {
+      for (std::size_t v = 0; v < r.zone.polygons[b].size(); ++v) {
+        zone << b << ',' << v << ',' << fmt::full(r.zone.polygons[b][v].x()) << ','
+             << fmt::full(r.zone.polygons[b][v].y()) << ',' << fmt::full(r.zone.eps_p[b]) << '\n';
+      }
+    }
+  };
   std::vector<FootingResult> results(cases.size());
-  std::mutex print;
+  std::mutex lock_out;
   std::size_t next = 0;
+  bool write_failed = false;
   auto worker = [&]() {
     for (;;) {
       std::size_t k;
       {
-        std::lock_guard<std::mutex> lock(print);
+        std::lock_guard<std::mutex> lock(lock_out);
         if (next >= cases.size()) return;
         k = next++;
       }
       results[k] = run_footing(cases[k]);
-      std::lock_guard<std::mutex> lock(print);
+      std::lock_guard<std::mutex> lock(lock_out);
       const FootingResult& r = results[k];
       std::cerr << cases[k].label() << ": " << r.blocks << " blocks, q/c "
                 << fmt::fixed(r.final_pressure / cases[k].cohesion, 4) << ", "
-                << fmt::fixed(r.wall_s, 1) << " s" << (r.ok ? "" : ", STOPPED: " + r.message)
-                << '\n';
+                << fmt::fixed(r.wall_s, 1) << " s wall, " << fmt::fixed(r.cpu_s, 1) << " s CPU"
+                << (r.ok ? "" : ", STOPPED: " + r.message) << '\n';
+      try {
+        write_run(cases[k], r);
+      } catch (const std::exception& e) {
+        std::cerr << "dda_verify_footing: " << e.what() << '\n';
+        write_failed = true;
+      }
     }
   };
   std::vector<std::thread> threads;
   for (int j = 0; j < std::min<int>(jobs, static_cast<int>(cases.size())); ++j) threads.emplace_back(worker);
   for (std::thread& t : threads) t.join();
+  if (write_failed || !curves || !runs) return 1;
 
-  try {
-    const double qu = prandtl_pressure(FootingCase{}.cohesion, FootingCase{}.friction_angle);
-    std::ofstream curves = fmt::open_csv(out, "curves.csv",
-                                         "label,mesh,cell,steps,step,settlement,pressure,q_over_c,yielding,edge_locked,edge_sliding,edge_open,edge_unbonded,corner_closed,solves,cuts");
-    std::ofstream runs = fmt::open_csv(
-        out, "runs.csv",
-        "label,mesh,cell,steps,blocks,ok,final_pressure,q_over_c,prandtl_q_over_c,relative_error,"
-        "wall_s,solves,cut_steps,open_close_max,energy_remainder_max,energy_scale,message");
-    std::ostringstream md;
-    md << "| mesh | h (m) | blocks | steps | q/c at s/B = 3 % | error vs 2 + pi | wall (s) | solves | cut steps |\n"
-       << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-      const FootingCase& c = cases[k];
-      const FootingResult& r = results[k];
-      for (const CurvePoint& p : r.curve) {
-        curves << c.label() << ',' << mesh_name(c.mesh) << ',' << fmt::full(c.cell) << ',' << c.steps << ','
-               << p.step << ',' << fmt::full(p.settlement) << ',' << fmt::full(p.pressure) << ','
-               << fmt::full(p.pressure / c.cohesion) << ',' << p.yielding << ',' << p.edge_locked << ','
-               << p.edge_sliding << ',' << p.edge_open << ',' << p.edge_unbonded << ','
-               << p.corner_closed << ',' << p.solves << ',' << p.cuts << '\n';
-      }
-      const double err = r.final_pressure / qu - 1.0;
-      std::string message = r.message;
-      std::replace(message.begin(), message.end(), ',', ';');
-      std::replace(message.begin(), message.end(), '\n', ' ');
-      runs << c.label() << ',' << mesh_name(c.mesh) << ',' << fmt::full(c.cell) << ',' << c.steps << ','
-           << r.blocks << ',' << (r.ok ? 1 : 0) << ',' << fmt::full(r.final_pressure) << ','
-           << fmt::full(r.final_pressure / c.cohesion) << ',' << fmt::full(qu / c.cohesion) << ','
-           << fmt::full(err) << ',' << fmt::full(r.wall_s) << ',' << r.solves << ',' << r.cut_steps << ','
-           << r.open_close_max << ',' << fmt::full(r.energy_remainder_max) << ','
-           << fmt::full(r.energy_scale) << ',' << '"' << message << '"' << '\n';
-      md << "| " << mesh_name(c.mesh) << " | " << fmt::significant(c.cell, 4) << " | " << r.blocks
-         << " | " << c.steps << " | " << fmt::fixed(r.final_pressure / c.cohesion, 3) << " | "
-         << (err >= 0 ? "+" : "") << fmt::fixed(100.0 * err, 1) << " % | " << fmt::fixed(r.wall_s, 1)
-         << " | " << r.solves << " | " << r.cut_steps << (r.ok ? "" : " (stopped: " + message + ")")
-         << " |\n";
-      std::ofstream zone = fmt::open_csv(out, "zone_" + c.label() + ".csv", "block,vertex,x,y,eps_p");
-      for (std::size_t b = 0; b < r.zone.polygons.size(); ++b) {
-        for (std::size_t v = 0; v < r.zone.polygons[b].size(); ++v) {
-          zone << b << ',' << v << ',' << fmt::full(r.zone.polygons[b][v].x()) << ','
-               << fmt::full(r.zone.polygons[b][v].y()) << ',' << fmt::full(r.zone.eps_p[b]) << '\n';
-        }
-      }
-    }
-    std::ofstream report(out / "report.md");
-    report << "# Strip footing on a Tresca layer of blocks against Prandtl\n\n"
-           << "Prandtl: q_u / c = 2 + pi = " << fmt::fixed(qu / FootingCase{}.cohesion, 4)
-           << "; footing B = 2 m (half model b = 1 m), E / c = 1000, nu = 0.3, pushed 6 cm (s/B = 3 %).\n\n"
-           << md.str();
-    if (!report) throw std::runtime_error("cannot write " + (out / "report.md").string());
-    std::cout << md.str();
-  } catch (const std::exception& e) {
-    std::cerr << "dda_verify_footing: " << e.what() << '\n';
+  std::ostringstream md;
+  md << "| mesh | h (m) | blocks | steps | q/c at s/B = 3 % | error vs 2 + pi | wall (s) | CPU (s) | solves | cut steps |\n"
+     << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const FootingCase& c = cases[k];
+    const FootingResult& r = results[k];
+    const double err = r.final_pressure / qu - 1.0;
+    md << "| " << mesh_name(c.mesh) << " | " << fmt::significant(c.cell, 4) << " | " << r.blocks
+       << " | " << c.steps << " | " << fmt::fixed(r.final_pressure / c.cohesion, 3) << " | "
+       << (err >= 0 ? "+" : "") << fmt::fixed(100.0 * err, 1) << " % | " << fmt::fixed(r.wall_s, 1)
+       << " | " << fmt::fixed(r.cpu_s, 1) << " | " << r.solves << " | " << r.cut_steps
+       << (r.ok ? "" : " (stopped: " + r.message + ")") << " |\n";
+  }
+  std::ofstream report(out / "report.md");
+  report << "# Strip footing on a Tresca layer of blocks against Prandtl\n\n"
+         << "Prandtl: q_u / c = 2 + pi = " << fmt::fixed(qu / FootingCase{}.cohesion, 4)
+         << "; footing B = 2 m (half model b = 1 m), E / c = 1000, nu = 0.3, pushed 6 cm (s/B = 3 %).\n\n"
+         << md.str();
+  if (!report) {
+    std::cerr << "dda_verify_footing: cannot write " << (out / "report.md").string() << '\n';
     return 1;
   }
+  std::cout << md.str();
   return 0;
 }
