@@ -53,7 +53,11 @@ const char* mesh_name(Mesh m) { return m == Mesh::Crossed ? "crossed" : "diagona
 
 std::string FootingCase::label() const {
   char buf[96];
-  std::snprintf(buf, sizeof buf, "%s_h%g_n%d", mesh_name(mesh), cell, steps);
+  if (friction_angle == 0.0) {
+    std::snprintf(buf, sizeof buf, "%s_h%g_n%d", mesh_name(mesh), cell, steps);
+  } else {
+    std::snprintf(buf, sizeof buf, "%s_h%g_n%d_phi%g", mesh_name(mesh), cell, steps, friction_angle);
+  }
   return buf;
 }
 

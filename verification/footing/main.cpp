@@ -29,12 +29,13 @@ using namespace dda::footing;
 namespace fmt = dda::verification;
 
 constexpr const char* kUsage =
-    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|both] [--jobs N]\n"
+    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|both] [--phi DEG] [--jobs N]\n"
     "  --out DIR     write curves.csv, runs.csv, zone_*.csv and report.md into DIR\n"
     "  --smoke       the coarsest crossed mesh (h = 0.5 m) at 150 steps only\n"
     "  --cells LIST  cell sides h (m), default 0.5,0.25,0.125,0.0625\n"
     "  --steps LIST  steps over the 6 cm push, default 150,300 (300 not on the finest cell)\n"
     "  --mesh M      crossed (default), diagonal or both\n"
+    "  --phi DEG     the soil's friction angle (= dilation angle: associated), default 0 (Tresca)\n"
     "  --jobs N      runs at once (default 1)\n";
 
 std::vector<double> numbers(const std::string& text) {
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
   bool custom_steps = false;
   std::vector<Mesh> meshes{Mesh::Crossed};
   int jobs = 1;
+  double friction = 0.0;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -73,6 +75,8 @@ int main(int argc, char** argv) {
         else if (m == "diagonal") meshes = {Mesh::Diagonal};
         else if (m == "both") meshes = {Mesh::Crossed, Mesh::Diagonal};
         else throw std::invalid_argument("--mesh: " + m);
+      } else if (arg == "--phi" && i + 1 < argc) {
+        friction = std::stod(argv[++i]);
       } else if (arg == "--jobs" && i + 1 < argc) {
         jobs = std::max(1, std::atoi(argv[++i]));
       } else if (arg == "--help" || arg == "-h") {
@@ -105,13 +109,14 @@ int main(int argc, char** argv) {
           c.mesh = m;
           c.cell = h;
           c.steps = static_cast<int>(n);
+          c.friction_angle = friction;
           cases.push_back(c);
         }
       }
     }
   }
   std::filesystem::create_directories(out);
-  const double qu = prandtl_pressure(FootingCase{}.cohesion, FootingCase{}.friction_angle);
+  const double qu = prandtl_pressure(FootingCase{}.cohesion, friction);
   std::ofstream curves, runs;
   try {
     curves = fmt::open_csv(out, "curves.csv",
@@ -188,7 +193,7 @@ int main(int argc, char** argv) {
   if (write_failed || !curves || !runs) return 1;
 
   std::ostringstream md;
-  md << "| mesh | h (m) | blocks | steps | q/c at s/B = 3 % | error vs 2 + pi | wall (s) | CPU (s) | solves | cut steps |\n"
+  md << "| mesh | h (m) | blocks | steps | q/c at s/B = 3 % | error vs Prandtl | wall (s) | CPU (s) | solves | cut steps |\n"
      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const FootingCase& c = cases[k];
@@ -202,7 +207,8 @@ int main(int argc, char** argv) {
   }
   std::ofstream report(out / "report.md");
   report << "# Strip footing on a Tresca layer of blocks against Prandtl\n\n"
-         << "Prandtl: q_u / c = 2 + pi = " << fmt::fixed(qu / FootingCase{}.cohesion, 4)
+         << "Prandtl: q_u / c = " << (friction == 0.0 ? "2 + pi = " : "N_c = ") << fmt::fixed(qu / FootingCase{}.cohesion, 4)
+         << " (phi = " << friction << " degrees)"
          << "; footing B = 2 m (half model b = 1 m), E / c = 1000, nu = 0.3, pushed 6 cm (s/B = 3 %).\n\n"
          << md.str();
   if (!report) {

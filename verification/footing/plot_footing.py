@@ -41,10 +41,12 @@ def main(out):
         width = 1.0 if int(run["steps"]) > 150 else 1.8
         ax.plot(s, q, style, lw=width,
                 label=f"{run['mesh']} h = {float(run['cell']):g} m, {run['steps']} steps")
-    ax.axhline(PRANDTL, color="k", lw=1, ls="--", label="Prandtl (2 + π) c")
+    for value in sorted({round(float(r["prandtl_q_over_c"]), 6) for r in runs}):
+        name = "Prandtl (2 + π) c" if abs(value - PRANDTL) < 1e-9 else f"Prandtl N_c c = {value:.3f} c"
+        ax.axhline(value, color="k", lw=1, ls="--", label=name)
     ax.set_xlabel("settlement s / B (%)")
     ax.set_ylabel("footing pressure q / c")
-    ax.set_title("Smooth rigid strip footing on a Tresca layer of blocks")
+    ax.set_title("Smooth rigid strip footing on a layer of plastic blocks")
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="lower right")
@@ -68,6 +70,7 @@ def main(out):
             ax2.loglog(blocks, wall, marker + ("-" if steps == 150 else "--"), label=f"{mesh}, {steps} steps")
     ax.set_xlabel("cells across the footing's half width, b / h")
     ax.set_ylabel("q_DDA / q_Prandtl − 1 (%)")
+    # (runs of one friction angle per directory: the error is against that angle's N_c)
     ax.set_title("Limit pressure at s / B = 3 %")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
@@ -98,16 +101,16 @@ def main(out):
                               edgecolors="none" if len(keys) > 600 else "0.6", linewidths=0.2)
         coll.set_clim(0, top)
         ax.add_collection(coll)
-        # Prandtl's mechanism for B = 2 b (half): the active wedge, the fan, the passive wedge.
         b = HALF_WIDTH
+        tresca = abs(float(run["prandtl_q_over_c"]) - PRANDTL) < 1e-9
         r0 = b * math.sqrt(2)
         fan = [(b + r0 * math.cos(a), r0 * math.sin(a))
                for a in [-3 * math.pi / 4 + k * (math.pi / 2) / 40 for k in range(41)]]
-        ax.plot([0, 0, b], [0, -b, 0], "w-", lw=1)  # active wedge (x >= 0 half)
-        ax.plot([p[0] for p in fan], [p[1] for p in fan], "w-", lw=1.2)
-        ax.plot([b + r0 * math.cos(-math.pi / 4), 3 * b], [r0 * math.sin(-math.pi / 4), 0], "w-", lw=1.2)
-        ax.plot([b, 3 * b], [0, 0], "w-", lw=0.5)
-        ax.plot([b, b + r0 * math.cos(-math.pi / 4)], [0, r0 * math.sin(-math.pi / 4)], "w-", lw=0.6)
+        if tresca:  # Prandtl's mechanism (half): the active wedge, the fan, the passive wedge
+            ax.plot([0, 0, b], [0, -b, 0], "w-", lw=1)
+            ax.plot([p[0] for p in fan], [p[1] for p in fan], "w-", lw=1.2)
+            ax.plot([b + r0 * math.cos(-math.pi / 4), 3 * b], [r0 * math.sin(-math.pi / 4), 0], "w-", lw=1.2)
+            ax.plot([b, b + r0 * math.cos(-math.pi / 4)], [0, r0 * math.sin(-math.pi / 4)], "w-", lw=0.6)
         rows = curves.get(run["label"], [])
         settled = float(rows[-1]["settlement"]) if rows else 0.0
         ax.add_patch(plt.Rectangle((0, -settled), b, 0.25, color="0.4"))
@@ -115,8 +118,8 @@ def main(out):
         ax.set_ylim(-2.05, 0.35)
         ax.set_aspect("equal")
         fig.colorbar(coll, ax=ax, label="equivalent plastic strain", shrink=0.8)
-        ax.set_title(f"{run['label']}: plastic strain at s / B = 3 % (white: Prandtl's mechanism)",
-                     fontsize=9)
+        ax.set_title(f"{run['label']}: plastic strain at s / B = 3 %"
+                     + (" (white: Prandtl's mechanism)" if tresca else ""), fontsize=9)
         fig.tight_layout()
         fig.savefig(out / f"zone_{run['label']}.png", dpi=120)
         plt.close(fig)
