@@ -24,12 +24,50 @@ def read(path):
         return list(csv.DictReader(f))
 
 
+def write_table(out, runs, curves):
+    """table.md: each run's limit pressure (at the end of the push, s / B = 3 %, and at
+    2 %), its error against Prandtl, the slope of the curve's last third against its first
+    step's (how level it ended), the observed order of the error between successive cells,
+    and the cost."""
+    lines = ["| mesh | phi | h (m) | b / h | blocks | steps | q/c at s/B = 2 % | q/c at 3 % | error | "
+             "order | last-third slope / initial | wall (s) | CPU (s) | solves | cut steps |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    previous = {}
+    for run in sorted(runs, key=lambda r: (r["mesh"], float(r["prandtl_q_over_c"]), int(r["steps"]),
+                                           -float(r["cell"]))):
+        rows = curves.get(run["label"], [])
+        if len(rows) < 4:
+            continue
+        s = [float(r["settlement"]) for r in rows]
+        q = [float(r["q_over_c"]) for r in rows]
+        n = len(rows) - 1
+        at2 = q[min(range(len(s)), key=lambda k: abs(s[k] - 0.04))]
+        k3 = (2 * n) // 3
+        slope = (q[n] - q[k3]) / (s[n] - s[k3]) / (q[1] / s[1])
+        err = float(run["relative_error"])
+        key = (run["mesh"], run["prandtl_q_over_c"], run["steps"])
+        order = "-"
+        if key in previous and err > 0 and previous[key][1] > 0:
+            h0, e0 = previous[key]
+            order = f"{math.log(e0 / err) / math.log(h0 / float(run['cell'])):.2f}"
+        previous[key] = (float(run["cell"]), err)
+        phi = "0" if abs(float(run["prandtl_q_over_c"]) - PRANDTL) < 1e-9 else run["label"].split("phi")[-1]
+        lines.append(
+            f"| {run['mesh']} | {phi} | {float(run['cell']):g} | {HALF_WIDTH / float(run['cell']):g} | {run['blocks']} | "
+            f"{run['steps']} | {at2:.3f} | {q[n]:.3f} | {100 * err:+.1f} % | {order} | {slope:.4f} | "
+            f"{float(run['wall_s']):.1f} | {float(run['cpu_s']):.1f} | {run['solves']} | {run['cut_steps']}"
+            + ("" if run["ok"] == "1" else f" (stopped: {run['message']})") + " |")
+    (out / "table.md").write_text("\n".join(lines) + "\n")
+
+
 def main(out):
     out = Path(out)
     runs = read(out / "runs.csv")
     curves = {}
     for row in read(out / "curves.csv"):
         curves.setdefault(row["label"], []).append(row)
+
+    write_table(out, runs, curves)
 
     # Load-settlement curves.
     fig, ax = plt.subplots(figsize=(7, 4.8))
