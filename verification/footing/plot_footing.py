@@ -13,6 +13,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 PRANDTL = 2.0 + math.pi
@@ -105,15 +106,24 @@ def main(out):
             ax.loglog(h, err, marker + ("-" if steps == 150 else "--"), label=f"{mesh}, {steps} steps")
             blocks = [int(r["blocks"]) for r in sel]
             wall = [float(r["wall_s"]) for r in sel]
-            ax2.loglog(blocks, wall, marker + ("-" if steps == 150 else "--"), label=f"{mesh}, {steps} steps")
+            cpu = [float(r["cpu_s"]) for r in sel]
+            line, = ax2.loglog(blocks, cpu, marker + ("-" if steps == 150 else "--"),
+                               label=f"{mesh}, {steps} steps: CPU")
+            ax2.loglog(blocks, wall, marker, mfc="none", color=line.get_color(), alpha=0.5,
+                       label=f"{mesh}, {steps} steps: wall")
     ax.set_xlabel("cells across the footing's half width, b / h")
     ax.set_ylabel("q_DDA / q_Prandtl − 1 (%)")
     # (runs of one friction angle per directory: the error is against that angle's N_c)
     ax.set_title("Limit pressure at s / B = 3 %")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
+    ax.set_xticks(sorted({HALF_WIDTH / float(r["cell"]) for r in runs}))
+    ax.set_yticks([1, 2, 5, 10, 20, 50])
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+        axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
     ax2.set_xlabel("blocks in the layer")
-    ax2.set_ylabel("wall time of the run (s)")
+    ax2.set_ylabel("time of the run (s)")
     ax2.set_title("Cost (shared 2-core machine)")
     ax2.grid(alpha=0.3, which="both")
     ax2.legend(fontsize=8)
