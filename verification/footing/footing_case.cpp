@@ -49,7 +49,14 @@ constexpr double kWall = 0.5;               // thickness of the fixed walls (m)
 
 }  // namespace
 
-const char* mesh_name(Mesh m) { return m == Mesh::Crossed ? "crossed" : "diagonal"; }
+const char* mesh_name(Mesh m) {
+  switch (m) {
+    case Mesh::Crossed: return "crossed";
+    case Mesh::Diagonal: return "diagonal";
+    case Mesh::Uniform: return "uniform";
+  }
+  return "?";
+}
 
 std::string FootingCase::label() const {
   char buf[96];
@@ -89,9 +96,8 @@ Scene footing_scene(const FootingCase& c) {
         add(Json::array({point(x1, y1), point(x0, y1), point(xm, ym)}), "soil", false);
         add(Json::array({point(x0, y1), point(x0, y0), point(xm, ym)}), "soil", false);
       } else {
-        // Alternate the diagonal's direction cell by cell (a chequer), the less biased
-        // of the one-diagonal meshes.
-        if ((i + j) % 2 == 0) {
+        // One diagonal a cell: alternating cell by cell (a chequer), or all the same way.
+        if (c.mesh == Mesh::Uniform || (i + j) % 2 == 0) {
           add(Json::array({point(x0, y0), point(x1, y0), point(x1, y1)}), "soil", false);
           add(Json::array({point(x0, y0), point(x1, y1), point(x0, y1)}), "soil", false);
         } else {

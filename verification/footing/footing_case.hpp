@@ -20,7 +20,9 @@ namespace dda::footing {
 enum class Mesh {
   Crossed,  // both diagonals: 4 triangles a cell (Nagtegaal, Parks and Rice's remedy for
             // constant-strain locking under isochoric flow)
-  Diagonal, // one diagonal: 2 triangles a cell (locks)
+  Diagonal, // one diagonal: 2 triangles a cell, the diagonal's direction alternating cell
+            // by cell (a chequer, the "union jack" pattern)
+  Uniform,  // one diagonal: 2 triangles a cell, every diagonal the same way (/)
 };
 
 const char* mesh_name(Mesh m);

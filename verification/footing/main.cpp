@@ -1,5 +1,5 @@
 // dda_verify_footing --out DIR [--smoke] [--cells H,H,...] [--steps N,N,...]
-//                    [--mesh crossed|diagonal|both] [--jobs N]
+//                    [--mesh crossed|diagonal|uniform|both|all] [--jobs N]
 // A smooth rigid strip footing pressed into a weightless Tresca layer of plastic blocks
 // against Prandtl's (2 + pi) c (issue 13 item 8; verification/footing/README.md). Writes
 // curves.csv (the load-settlement curve of every run), runs.csv (one row a run: the limit
@@ -29,12 +29,13 @@ using namespace dda::footing;
 namespace fmt = dda::verification;
 
 constexpr const char* kUsage =
-    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|both] [--phi DEG] [--jobs N]\n"
+    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|uniform|both|all] [--phi DEG] [--jobs N]\n"
     "  --out DIR     write curves.csv, runs.csv, zone_*.csv and report.md into DIR\n"
     "  --smoke       the coarsest crossed mesh (h = 0.5 m) at 150 steps only\n"
     "  --cells LIST  cell sides h (m), default 0.5,0.25,0.125,0.0625\n"
     "  --steps LIST  steps over the 6 cm push, default 150,300 (300 not on the finest cell)\n"
-    "  --mesh M      crossed (default), diagonal or both\n"
+    "  --mesh M      crossed (default: both diagonals a cell), diagonal (one, alternating),\n"
+    "                uniform (one, all the same way), both (crossed and diagonal) or all\n"
     "  --phi DEG     the soil's friction angle (= dilation angle: associated), default 0 (Tresca)\n"
     "  --jobs N      runs at once (default 1)\n";
 
@@ -73,7 +74,9 @@ int main(int argc, char** argv) {
         const std::string m = argv[++i];
         if (m == "crossed") meshes = {Mesh::Crossed};
         else if (m == "diagonal") meshes = {Mesh::Diagonal};
+        else if (m == "uniform") meshes = {Mesh::Uniform};
         else if (m == "both") meshes = {Mesh::Crossed, Mesh::Diagonal};
+        else if (m == "all") meshes = {Mesh::Crossed, Mesh::Diagonal, Mesh::Uniform};
         else throw std::invalid_argument("--mesh: " + m);
       } else if (arg == "--phi" && i + 1 < argc) {
         friction = std::stod(argv[++i]);
