@@ -193,6 +193,8 @@ FootingResult run_footing(const FootingCase& c) {
     }
   }
   long solves_before = 0;
+  int reasons_before[5] = {0, 0, 0, 0, 0};
+  double time_before = 0.0;
   int cuts_before = 0;
   auto record = [&](int step) {
     double force = 0.0;  // upward force of the layer on the footing = the pins' pull down
@@ -202,7 +204,11 @@ FootingResult run_footing(const FootingCase& c) {
       if (world.blocks[static_cast<std::size_t>(k)].branch != Branch::Elastic) ++yielding;
     }
     const double settlement = -world.blocks[static_cast<std::size_t>(footing)].translation.y();
-    CurvePoint p{step, settlement, force / c.half_width, yielding};
+    CurvePoint p;
+    p.step = step;
+    p.settlement = settlement;
+    p.pressure = force / c.half_width;
+    p.yielding = yielding;
     for (const Contact& ct : world.contacts) {
       const int a = ct.key.vertex_block, e = ct.key.edge_block;
       if (a < 3 || e < 3 || a >= footing || e >= footing) continue;
@@ -217,6 +223,15 @@ FootingResult run_footing(const FootingCase& c) {
     }
     p.solves = stats.iterations - solves_before;
     p.cuts = stats.cut_steps - cuts_before;
+    const int now[5] = {stats.cuts_for_displacement, stats.cuts_for_open_close, stats.cuts_for_penetration,
+                        stats.cuts_for_material, stats.cuts_for_overshoot};
+    for (int i = 0; i < 5; ++i) {
+      if (now[i] > reasons_before[i]) p.cut_reasons += "dopmv"[i] + std::to_string(now[i] - reasons_before[i]);
+      reasons_before[i] = now[i];
+    }
+    p.energy_remainder = world.energy.remainder;
+    p.dt = world.time - time_before;
+    time_before = world.time;
     solves_before = stats.iterations;
     cuts_before = stats.cut_steps;
     r.curve.push_back(p);

@@ -72,6 +72,10 @@ struct CurvePoint {
   int corner_closed = 0;
   long solves = 0;          // linear solves of the step (cut attempts included)
   int cuts = 0;             // attempts of the step thrown away
+  std::string cut_reasons;  // by reason: d displacement, o open-close, p penetration,
+                            // m material, v overshoot (e.g. "o3m1"); empty without cuts
+  double energy_remainder = 0.0;  // the energy account's unexplained remainder (J/m)
+  double dt = 0.0;          // the step's accepted time step (s)
 };
 
 struct PlasticZone {  // the layer at the end: each block's outline and plastic strain

@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
   try {
     curves = fmt::open_csv(out, "curves.csv",
                            "label,mesh,cell,steps,step,settlement,pressure,q_over_c,yielding,edge_locked,"
-                           "edge_sliding,edge_open,edge_unbonded,corner_closed,solves,cuts");
+                           "edge_sliding,edge_open,edge_unbonded,corner_closed,solves,cuts,cut_reasons,dt,energy_remainder");
     runs = fmt::open_csv(out, "runs.csv",
                          "label,mesh,cell,steps,blocks,ok,final_pressure,q_over_c,prandtl_q_over_c,"
                          "relative_error,wall_s,cpu_s,solves,cut_steps,open_close_max,"
@@ -141,7 +141,8 @@ int main(int argc, char** argv) {
              << p.step << ',' << fmt::full(p.settlement) << ',' << fmt::full(p.pressure) << ','
              << fmt::full(p.pressure / c.cohesion) << ',' << p.yielding << ',' << p.edge_locked << ','
              << p.edge_sliding << ',' << p.edge_open << ',' << p.edge_unbonded << ',' << p.corner_closed
-             << ',' << p.solves << ',' << p.cuts << '\n';
+             << ',' << p.solves << ',' << p.cuts << ',' << p.cut_reasons << ',' << fmt::full(p.dt) << ','
+             << fmt::full(p.energy_remainder) << '\n';
     }
     curves.flush();
     std::string message = r.message;
