@@ -95,7 +95,7 @@ def main(out):
 
     # Error of the limit pressure against the cell size, and the cost.
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(10, 4.2))
-    for mesh, marker in (("crossed", "o"), ("diagonal", "s")):
+    for mesh, marker in (("crossed", "o"), ("diagonal", "s"), ("uniform", "^")):
         for steps in sorted({int(r["steps"]) for r in runs if r["mesh"] == mesh}):
             sel = [r for r in runs if r["mesh"] == mesh and int(r["steps"]) == steps and r["ok"] == "1"]
             if not sel:
