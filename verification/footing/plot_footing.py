@@ -27,37 +27,44 @@ def read(path):
 
 def write_table(out, runs, curves):
     """table.md: each run's limit pressure (at the end of the push, s / B = 3 %, and at
-    2 %), its error against Prandtl, the slope of the curve's last third against its first
+    1 and 2 %), its error against Prandtl, the slope of the curve's last third against its first
     step's (how level it ended), the observed order of the error between successive cells,
     and the cost."""
-    lines = ["| mesh | phi | h (m) | b / h | blocks | steps | q/c at s/B = 2 % | q/c at 3 % | error | "
+    lines = ["| mesh | phi | h (m) | b / h | blocks | steps | q/c at s/B = 1 % | 2 % | 3 % | error at 3 % | "
              "order | last-third slope / initial | wall (s) | CPU (s) | solves | cut steps |",
-             "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
-    previous = {}
-    for run in sorted(runs, key=lambda r: (r["mesh"], float(r["prandtl_q_over_c"]), int(r["steps"]),
-                                           -float(r["cell"]))):
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    def phi_of(run):
+        return "0" if abs(float(run["prandtl_q_over_c"]) - PRANDTL) < 1e-9 else run["label"].split("phi")[-1]
+
+    # The observed order against the run of twice the cell (same mesh and phi, fewest steps).
+    reference = {}
+    for run in sorted(runs, key=lambda r: -int(r["steps"])):
+        reference[(run["mesh"], phi_of(run), float(run["cell"]))] = float(run["relative_error"])
+    for run in sorted(runs, key=lambda r: (r["mesh"], phi_of(r), int(r["steps"]), -float(r["cell"]))):
         rows = curves.get(run["label"], [])
         if len(rows) < 4:
             continue
         s = [float(r["settlement"]) for r in rows]
         q = [float(r["q_over_c"]) for r in rows]
         n = len(rows) - 1
+        at1 = q[min(range(len(s)), key=lambda k: abs(s[k] - 0.02))]
         at2 = q[min(range(len(s)), key=lambda k: abs(s[k] - 0.04))]
         k3 = (2 * n) // 3
         slope = (q[n] - q[k3]) / (s[n] - s[k3]) / (q[1] / s[1])
         err = float(run["relative_error"])
-        key = (run["mesh"], run["prandtl_q_over_c"], run["steps"])
+        coarser = reference.get((run["mesh"], phi_of(run), 2 * float(run["cell"])))
         order = "-"
-        if key in previous and err > 0 and previous[key][1] > 0:
-            h0, e0 = previous[key]
-            order = f"{math.log(e0 / err) / math.log(h0 / float(run['cell'])):.2f}"
-        previous[key] = (float(run["cell"]), err)
-        phi = "0" if abs(float(run["prandtl_q_over_c"]) - PRANDTL) < 1e-9 else run["label"].split("phi")[-1]
+        if coarser is not None and err > 0 and coarser > 0:
+            order = f"{math.log(coarser / err) / math.log(2.0):.2f}"
+        note = ""
+        if run["ok"] != "1":
+            note = (f" (stopped: {run['message'].split(':')[0]}, at s/B = {100 * s[n] / (2 * HALF_WIDTH):.2f} %"
+                    + (", energy guard" if "energy" in run["message"] else "") + ")")
         lines.append(
-            f"| {run['mesh']} | {phi} | {float(run['cell']):g} | {HALF_WIDTH / float(run['cell']):g} | {run['blocks']} | "
-            f"{run['steps']} | {at2:.3f} | {q[n]:.3f} | {100 * err:+.1f} % | {order} | {slope:.4f} | "
-            f"{float(run['wall_s']):.1f} | {float(run['cpu_s']):.1f} | {run['solves']} | {run['cut_steps']}"
-            + ("" if run["ok"] == "1" else f" (stopped: {run['message']})") + " |")
+            f"| {run['mesh']} | {phi_of(run)} | {float(run['cell']):g} | {HALF_WIDTH / float(run['cell']):g} | "
+            f"{run['blocks']} | {run['steps']} | {at1:.3f} | {at2:.3f} | {q[n]:.3f} | {100 * err:+.1f} % | {order} | "
+            f"{slope:.4f} | {float(run['wall_s']):.1f} | {float(run['cpu_s']):.1f} | {run['solves']} | "
+            f"{run['cut_steps']}{note} |")
     (out / "table.md").write_text("\n".join(lines) + "\n")
 
 
