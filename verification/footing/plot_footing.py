@@ -79,21 +79,26 @@ def main(out):
 
     # Load-settlement curves.
     fig, ax = plt.subplots(figsize=(7, 4.8))
+    prandtl_values = sorted({round(float(r["prandtl_q_over_c"]), 6) for r in runs})
+    top = 1.6 * max(prandtl_values)  # a cut step's spike is drawn at the top
     for run in runs:
         rows = curves.get(run["label"], [])
         s = [float(r["settlement"]) / (2 * HALF_WIDTH) * 100 for r in rows]
         q = [float(r["q_over_c"]) for r in rows]
         style = "-" if run["mesh"] == "crossed" else ":"
         width = 1.0 if int(run["steps"]) > 150 else 1.8
-        ax.plot(s, q, style, lw=width,
-                label=f"{run['mesh']} h = {float(run['cell']):g} m, {run['steps']} steps")
-    for value in sorted({round(float(r["prandtl_q_over_c"]), 6) for r in runs}):
-        name = "Prandtl (2 + π) c" if abs(value - PRANDTL) < 1e-9 else f"Prandtl N_c c = {value:.3f} c"
+        line, = ax.plot(s, q, style, lw=width,
+                        label=f"{run['mesh']} h = {float(run['cell']):g} m, {run['steps']} steps")
+        cut = [k for k, r in enumerate(rows) if int(r.get("cuts") or 0) > 0]
+        ax.plot([s[k] for k in cut], [min(q[k], top) for k in cut], "x", color=line.get_color(), ms=6)
+    for value in prandtl_values:
+        name = "Prandtl (2 + π) c" if abs(value - PRANDTL) < 1e-5 else f"Prandtl N_c c = {value:.3f} c"
         ax.axhline(value, color="k", lw=1, ls="--", label=name)
     ax.set_xlabel("settlement s / B (%)")
     ax.set_ylabel("footing pressure q / c")
     ax.set_title("Smooth rigid strip footing on a layer of plastic blocks")
-    ax.set_ylim(bottom=0)
+    ax.set_ylim(0, top)
+    ax.plot([], [], "kx", label="a step that was cut (not an equilibrium; clipped)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="lower right")
     fig.tight_layout()
