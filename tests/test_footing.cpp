@@ -54,7 +54,7 @@ TEST_CASE("a rigid strip footing on a Tresca layer of blocks reaches Prandtl's l
   // blocks stiffen further under isochoric flow (locking, eased but not removed by the
   // crossed diagonals). The refinement study (verification/footing/README.md) measured
   // +24.8 % on this mesh at 150 steps, +14.6 % at h = 0.25 m and +8.6 % at h = 0.125 m
-  // (order 0.77 in h; Richardson's extrapolation gives 5.138 c, 0.07 % from Prandtl). The
+  // (order 0.77 in h; Richardson's extrapolation gives 5.139 c, -0.05 % from Prandtl). The
   // upper bound is this mesh's measured error at the test's 30 steps, +24.9 %, with 5 points
   // for what the load step (0.06 %), the penalty and the solver's tolerances may move: a
   // result beyond +30 % is a change of the method's answer, not noise.
