@@ -60,7 +60,9 @@ const char* mesh_name(Mesh m) {
 
 std::string FootingCase::label() const {
   char buf[96];
-  if (friction_angle == 0.0) {
+  if (penalty_factor != 50.0) {
+    std::snprintf(buf, sizeof buf, "%s_h%g_n%d_p%g", mesh_name(mesh), cell, steps, penalty_factor);
+  } else if (friction_angle == 0.0) {
     std::snprintf(buf, sizeof buf, "%s_h%g_n%d", mesh_name(mesh), cell, steps);
   } else {
     std::snprintf(buf, sizeof buf, "%s_h%g_n%d_phi%g", mesh_name(mesh), cell, steps, friction_angle);
@@ -134,6 +136,7 @@ Scene footing_scene(const FootingCase& c) {
         {"steps", c.steps},
         {"max_displacement_ratio", c.max_displacement_ratio},
         {"dynamic_coefficient", 0.0},
+        {"penalty", c.penalty_factor * c.young},
         {"output_every", c.steps}}},
       {"materials",
        {{"footing",

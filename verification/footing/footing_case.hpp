@@ -47,6 +47,7 @@ struct FootingCase {
   int steps = 150;
   double time_step = 0.01;   // s
   double max_displacement_ratio = 0.05;
+  double penalty_factor = 50.0;  // penalty = this x E (50: the "auto" penalty)
   std::string label() const;  // e.g. "crossed_h0.5_n150"
 };
 

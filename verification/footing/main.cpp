@@ -29,7 +29,7 @@ using namespace dda::footing;
 namespace fmt = dda::verification;
 
 constexpr const char* kUsage =
-    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|uniform|both|all] [--phi DEG] [--jobs N]\n"
+    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|uniform|both|all] [--phi DEG] [--penalty F] [--jobs N]\n"
     "  --out DIR     write curves.csv, runs.csv, zone_*.csv and report.md into DIR\n"
     "  --smoke       the coarsest crossed mesh (h = 0.5 m) at 150 steps only\n"
     "  --cells LIST  cell sides h (m), default 0.5,0.25,0.125,0.0625\n"
@@ -37,6 +37,7 @@ constexpr const char* kUsage =
     "  --mesh M      crossed (default: both diagonals a cell), diagonal (one, alternating),\n"
     "                uniform (one, all the same way), both (crossed and diagonal) or all\n"
     "  --phi DEG     the soil's friction angle (= dilation angle: associated), default 0 (Tresca)\n"
+    "  --penalty F   contact and pin penalty F x E (default 50, Shi's auto)\n"
     "  --jobs N      runs at once (default 1)\n";
 
 std::vector<double> numbers(const std::string& text) {
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
   std::vector<Mesh> meshes{Mesh::Crossed};
   int jobs = 1;
   double friction = 0.0;
+  double penalty = 50.0;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -78,6 +80,8 @@ int main(int argc, char** argv) {
         else if (m == "both") meshes = {Mesh::Crossed, Mesh::Diagonal};
         else if (m == "all") meshes = {Mesh::Crossed, Mesh::Diagonal, Mesh::Uniform};
         else throw std::invalid_argument("--mesh: " + m);
+      } else if (arg == "--penalty" && i + 1 < argc) {
+        penalty = std::stod(argv[++i]);
       } else if (arg == "--phi" && i + 1 < argc) {
         friction = std::stod(argv[++i]);
       } else if (arg == "--jobs" && i + 1 < argc) {
@@ -113,6 +117,7 @@ int main(int argc, char** argv) {
           c.cell = h;
           c.steps = static_cast<int>(n);
           c.friction_angle = friction;
+          c.penalty_factor = penalty;
           cases.push_back(c);
         }
       }
