@@ -62,7 +62,7 @@ TEST_CASE("a rigid strip footing on a Tresca layer of blocks reaches Prandtl's l
   CHECK(q < 1.30 * qu);
 
   // The load has levelled off: over the last third of the push the curve rises at less than
-  // 5 % of its initial (elastic) slope. Measured: 0.9 % (the locking's residual hardening).
+  // 5 % of its initial (elastic) slope. Measured: 0.8 % (the residual hardening).
   const CurvePoint& first = r.curve[1];
   const CurvePoint& two_thirds = r.curve[static_cast<std::size_t>(2 * c.steps / 3)];
   const CurvePoint& last = r.curve.back();

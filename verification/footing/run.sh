@@ -7,7 +7,7 @@
 #
 #   verification/footing/run.sh OUT_DIR [--smoke] [dda_verify_footing options]
 #
-# The full study takes about an hour on the 2-core machine (most of it the finest mesh,
+# The full study takes about 30 min of CPU (most of it the finest mesh,
 # 8192 blocks); --smoke runs the coarsest mesh only (a few seconds). It builds nothing: it
 # runs $DDA_BUILD_DIR/dda_verify_footing (default: build/release of this repository; build
 # it with `cmake --build --preset release --target dda_verify_footing`), then draws the
@@ -16,7 +16,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then
-  echo "usage: $0 OUT_DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|both] [--jobs N]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
+  echo "usage: $0 OUT_DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|uniform|both|all] [--phi DEG] [--penalty F] [--jobs N]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
   exit 2
 fi
 out="$1"
