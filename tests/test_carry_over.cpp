@@ -174,3 +174,72 @@ TEST_CASE("carry_over: each contact finds its own predecessor whatever the two l
     }
   }
 }
+
+TEST_CASE("carry_over: a bond follows two coincident corners when their contact swaps roles",
+          "[contact][carry]") {
+  // Two unit squares side by side, block 1 on [0, 1] and block 2 on [1, 2], bonded along x = 1.
+  // Their corners meet at (1, 1): last step the contact there was block 1's corner 2 on
+  // block 2's left edge 3 (from (1, 1) to (1, 0)), locked at that edge's start; this step
+  // round-off resolves the same pair of corners the other way round, block 2's corner 3 on
+  // block 1's right edge 1 (from (1, 0) to (1, 1)), at its end.
+  const std::vector<JointLaw> laws = {{0.0, 1e6, 1e6}};
+  Contact old;
+  old.key = {1, 2, 2, 3};
+  old.vertex = Vec2(1.0, 1.0);
+  old.edge_start = Vec2(1.0, 1.0);
+  old.edge_end = Vec2(1.0, 0.0);
+  old.t = 0.0;
+  old.state.mode = ContactMode::Lock;
+  old.state.t_lock = 0.0;
+  old.state.bonded = true;
+  old.state.normal_force = 50.0;
+  Contact swapped;
+  swapped.key = {2, 3, 1, 1};
+  swapped.vertex = Vec2(1.0 + 1e-7, 1.0 - 2e-7);
+  swapped.edge_start = Vec2(1.0, 0.0);
+  swapped.edge_end = Vec2(1.0, 1.0);
+  swapped.tangent = Vec2(0.0, 1.0);
+  swapped.t = 1.0 - 2e-7;
+  swapped.gap = 1e-7;  // open by a hair: a bonded contact in tension
+  // And the bottom corners' contact, found again by its key: it keeps its own state.
+  Contact bottom;
+  bottom.key = {1, 1, 2, 3};
+  bottom.vertex = Vec2(1.0, 0.0);
+  bottom.edge_start = Vec2(1.0, 1.0);
+  bottom.edge_end = Vec2(1.0, 0.0);
+  bottom.t = 1.0;
+  bottom.state.mode = ContactMode::Lock;
+  bottom.state.t_lock = 1.0;
+  bottom.state.bonded = true;
+  Contact bottom_again = bottom;
+  bottom_again.state = ContactState{};
+  std::vector<Contact> found = {bottom_again, swapped};
+  carry_over({old, bottom}, found, 1e-12, false, laws);
+  CHECK(found[0].state.bonded);
+  CHECK(found[0].state.t_lock == 1.0);
+  // The corner's bond is handed over; the shear spring is anchored at block 1's corner,
+  // the material point the old anchor was, so it keeps the slip between the two corners.
+  CHECK(found[1].state.bonded);
+  CHECK(found[1].state.mode == ContactMode::Lock);
+  CHECK(found[1].state.t_lock == 1.0);
+  CHECK(found[1].stretch_from(found[1].state.t_lock) == Approx(-2e-7).margin(1e-15));
+  CHECK(found[1].state.normal_force == 50.0);
+
+  // A bond is handed over once, and only by a contact that was lost: with the old contact
+  // found again by its key, the swapped one is a new, unbonded contact.
+  Contact old_again = old;
+  old_again.state = ContactState{};
+  std::vector<Contact> both = {old_again, swapped};
+  carry_over({old, bottom}, both, 1e-12, false, laws);
+  CHECK(both[0].state.bonded);
+  CHECK_FALSE(both[1].state.bonded);
+  CHECK(both[1].state.mode == ContactMode::Open);
+  // Nor to a contact of the same pair at another corner.
+  Contact elsewhere = swapped;
+  elsewhere.vertex = Vec2(1.0, 0.0);
+  elsewhere.t = 0.0;
+  elsewhere.gap = 0.0;
+  std::vector<Contact> far = {elsewhere};
+  carry_over({old}, far, 1e-12, false, laws);
+  CHECK_FALSE(far[0].state.bonded);
+}
