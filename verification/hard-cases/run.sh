@@ -26,12 +26,9 @@ for arg in "$@"; do
     *) usage ;;
   esac
 done
-exe="${DDA_BUILD_DIR:-$root/build/release}/dda"
-if [ ! -x "$exe" ]; then
-  echo "$0: $exe not found; build it first (cmake --preset release && cmake --build --preset release)" >&2
-  echo "    or point DDA_BUILD_DIR at a build directory that has it" >&2
-  exit 2
-fi
+# shellcheck source=../common/program.sh
+source "$root/verification/common/program.sh"
+exe="$(verification_program "$0" dda)" || exit 2
 py=/usr/bin/python3
 
 # A fresh set each time: runs left over from another set would enter the report.

@@ -18,11 +18,8 @@ if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then
 fi
 out="$1"
 shift
-exe="${DDA_BUILD_DIR:-$root/build/release}/dda_verify_slope"
-if [ ! -x "$exe" ]; then
-  echo "$0: $exe not found; build it first (cmake --preset release && cmake --build --preset release)" >&2
-  echo "    or point DDA_BUILD_DIR at a build directory that has it" >&2
-  exit 2
-fi
+# shellcheck source=../common/program.sh
+source "$root/verification/common/program.sh"
+exe="$(verification_program "$0" dda_verify_slope)" || exit 2
 "$exe" --out "$out" "$@"
 /usr/bin/python3 "$here/plot_slope.py" "$out"
