@@ -1,5 +1,5 @@
 // The step's Newton iteration, hand-written inside the open-close loop (solver/step.cpp)
-// against KINSOL with SUNDIALS' KLU (solver/kinsol_step.hpp), on the same step: a
+// against KINSOL with SUNDIALS' KLU (verification/reference/kinsol_step.hpp), on the same step: a
 // Mohr-Coulomb specimen on its plateau, pushed through a platen (tests/test_plastic_block.cpp
 // has the scene and checks that both find the same increments). Arg: dilation angle
 // (10: non-associated, unsymmetric tangent; 30: associated). Run:
@@ -7,7 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include "solver/contact_detection.hpp"
-#include "solver/kinsol_step.hpp"
+#include "kinsol_step.hpp"
 #include "solver/step.hpp"
 #include "solver/world.hpp"
 

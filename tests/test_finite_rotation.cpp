@@ -1,6 +1,6 @@
 // The treatments that change T inside the step (issue 4): finite_rotation (the secant
 // rotation column iterated to the step's own r0, paper-notes item 6) and sin_variable
-// (Cheng and Zhang's T'). References: CVODE's pendulum (solver/pendulum_reference), energy
+// (Cheng and Zhang's T'). References: CVODE's pendulum (verification/reference/pendulum_reference), energy
 // conservation and the kinematics of the block frame.
 #include <limits>
 #include <catch2/catch.hpp>
@@ -10,7 +10,7 @@
 #include "kinematics/point_maps.hpp"
 #include "scene_builders.hpp"
 #include "solver/energy.hpp"
-#include "solver/pendulum_reference.hpp"
+#include "pendulum_reference.hpp"
 #include "solver/run.hpp"
 #include "solver/world.hpp"
 

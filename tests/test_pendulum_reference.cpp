@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "kinematics/polygon.hpp"
-#include "solver/pendulum_reference.hpp"
+#include "pendulum_reference.hpp"
 
 using namespace dda;
 using Catch::Matchers::WithinAbs;

@@ -10,7 +10,7 @@
 #include "kinematics/frames.hpp"
 #include "paper_scenes.hpp"
 #include "solver/energy.hpp"
-#include "solver/pendulum_reference.hpp"
+#include "pendulum_reference.hpp"
 
 namespace dda::paper {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "csv.hpp"
 #include "paper_scenes.hpp"
-#include "solver/pendulum_reference.hpp"
+#include "pendulum_reference.hpp"
 
 namespace dda::paper {
 namespace {
@@ -54,7 +54,7 @@ double pendulum_angle(const Vec2& centroid, const Vec2& pivot) {
   return std::atan2(d.x(), -d.y());
 }
 
-// The CVODE solution (solver/pendulum_reference) of I_p theta'' = -m g l sin(theta) for the
+// The CVODE solution (verification/reference/pendulum_reference) of I_p theta'' = -m g l sin(theta) for the
 // pendulum scene's block, with its mass and inertia from the exact polygon integrals.
 PendulumReference pendulum_reference_for(double duration) {
   const World w = make_world(pendulum_scene(0.01, 1, RotationUpdate::Original));
@@ -69,7 +69,7 @@ PendulumReference pendulum_reference_for(double duration) {
   ref.period = pendulum_period(params);
   ref.amplitude = pendulum_amplitude(params, duration);
   ref.linear_period = 2.0 * kPi / std::sqrt(params.omega0_sq);
-  ref.source = "CVODE (solver/pendulum_reference), rtol 1e-12";
+  ref.source = "CVODE (verification/reference/pendulum_reference), rtol 1e-12";
   return ref;
 }
 

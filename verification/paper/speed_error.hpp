@@ -1,7 +1,7 @@
 // Speed against error, over a sweep of time steps, one curve per treatment:
 // (a) a freely spinning block: area drift after a fixed time against wall time;
 // (b) a rigid pendulum: period and amplitude error against the CVODE reference
-//     (solver/pendulum_reference.hpp) against wall time;
+//     (verification/reference/pendulum_reference.hpp) against wall time;
 // and, beyond rotation (speed_closed_form.hpp), a block sliding down an incline and a
 // Mohr-Coulomb specimen compressed through its contacts, against their closed forms.
 #pragma once

@@ -1,5 +1,5 @@
 // CVODE reference solution of the rigid pendulum (see pendulum_reference.hpp).
-#include "solver/pendulum_reference.hpp"
+#include "pendulum_reference.hpp"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>

@@ -1,4 +1,4 @@
-#include "solver/kinsol_step.hpp"
+#include "kinsol_step.hpp"
 
 #include <kinsol/kinsol.h>
 #include <nvector/nvector_serial.h>
