@@ -14,8 +14,6 @@ using namespace dda;
 
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Where the trace's line crosses the normal line through `centre`, as a distance along the
 // set's normal `n` (joint_set_traces turns each line about exactly that point).
 double line_distance(const JointSegment& t, const Vec2& centre, const Vec2& n) {

@@ -47,9 +47,9 @@ void add_block_couplings(const World& w, BlockSystem& sys, double p) {
     const Vec2 x = 0.5 * (a.moments.centroid + b.moments.centroid);
     const Mat26 ta = t.at(x - a.moments.centroid);
     const Mat26 tb = t.at(x - b.moments.centroid);
-    sys.diagonal[a.first_dof / 6] += p * ta.transpose() * ta;
-    sys.diagonal[b.first_dof / 6] += p * tb.transpose() * tb;
-    sys.couplings.push_back({b.first_dof / 6, a.first_dof / 6, -p * tb.transpose() * ta});
+    sys.diagonal[block_row(a)] += p * ta.transpose() * ta;
+    sys.diagonal[block_row(b)] += p * tb.transpose() * tb;
+    sys.couplings.push_back({block_row(b), block_row(a), -p * tb.transpose() * ta});
   }
 }
 

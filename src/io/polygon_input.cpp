@@ -16,8 +16,6 @@ double bbox_diagonal(const Polygon& poly) {
   return (box.max - box.min).stableNorm();  // no underflow for a block 1e-300 m across
 }
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Degeneracy tolerance relative to the polygon's bounding-box diagonal d: lengths <= 1e-12 d
 // and areas <= 1e-12 d^2 count as zero. Scale-free, far above rounding in the sums (~1e-16
 // relative) and far below any real block.

@@ -8,8 +8,6 @@
 namespace dda {
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Signed distance of p from the line through u and v: positive on the left of u -> v, which
 // is the inner side of an edge of a counter-clockwise polygon.
 double line_distance(const Vec2& u, const Vec2& v, const Vec2& p) {

@@ -9,8 +9,6 @@
 namespace dda {
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Twice the signed area of triangle abc: > 0 when a, b, c turn counter-clockwise.
 double orient(const Vec2& a, const Vec2& b, const Vec2& c) { return cross(b - a, c - a); }
 

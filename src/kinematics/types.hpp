@@ -18,6 +18,10 @@ using Mat26 = Eigen::Matrix<double, 2, 6>;
 // A polygon is its vertices in order, counter-clockwise, without repeating the first one.
 using Polygon = std::vector<Vec2>;
 
+// The z component of the cross product of two plane vectors: twice the signed area of the
+// triangle they span (> 0 when b is counter-clockwise of a).
+inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
 // Index of each of Shi's six block unknowns (Shi 1988; paper Eq. 1).
 enum Dof : int { kU0 = 0, kV0 = 1, kR0 = 2, kEx = 3, kEy = 4, kGxy = 5 };
 

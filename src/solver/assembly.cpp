@@ -53,7 +53,7 @@ void add_point_force(const World& world, const StepContext& ctx, int index, cons
 std::vector<bool> rigid_rows(const World& world) {
   std::vector<bool> rigid(static_cast<std::size_t>(world.dof_count / 6), false);
   for (const Block& b : world.blocks) {
-    if (!b.fixed) rigid[static_cast<std::size_t>(b.first_dof / 6)] = b.rigid;
+    if (!b.fixed) rigid[static_cast<std::size_t>(block_row(b))] = b.rigid;
   }
   return rigid;
 }
@@ -63,7 +63,7 @@ void assemble(const World& world, const StepContext& ctx, BlockSystem& system) {
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
     if (b.fixed) continue;
-    const int row = b.first_dof / 6;
+    const int row = block_row(b);
     add_block_terms(world, static_cast<int>(i), ctx, system.diagonal[row],
                     system.rhs.segment<6>(b.first_dof));
   }
@@ -71,7 +71,7 @@ void assemble(const World& world, const StepContext& ctx, BlockSystem& system) {
     const Block& b = world.blocks[pin.block];
     if (b.fixed) continue;  // a pin on a fixed block holds nothing that moves
     const Mat26 tp = step_t(ctx, pin.block).at(pin.current - b.moments.centroid);
-    system.diagonal[b.first_dof / 6] += spring_stiffness(tp, ctx.penalty);
+    system.diagonal[block_row(b)] += spring_stiffness(tp, ctx.penalty);
     system.rhs.segment<6>(b.first_dof) += spring_force(tp, ctx.penalty, pin.anchor - pin.current);
   }
   for (const PointLoad& load : world.loads) {

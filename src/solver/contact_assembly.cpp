@@ -82,17 +82,17 @@ class ContactAssembler {
     const Block& bv = world_.blocks[c.key.vertex_block];
     const Block& be = world_.blocks[c.key.edge_block];
     if (!bv.fixed) {
-      system_.diagonal[bv.first_dof / 6] += k * m.on_vertex_block * m.on_vertex_block.transpose();
+      system_.diagonal[block_row(bv)] += k * m.on_vertex_block * m.on_vertex_block.transpose();
       system_.rhs.segment<6>(bv.first_dof) -= k * g0 * m.on_vertex_block;
     }
     if (!be.fixed) {
-      system_.diagonal[be.first_dof / 6] += k * m.on_edge_block * m.on_edge_block.transpose();
+      system_.diagonal[block_row(be)] += k * m.on_edge_block * m.on_edge_block.transpose();
       system_.rhs.segment<6>(be.first_dof) -= k * g0 * m.on_edge_block;
     }
     if (!bv.fixed && !be.fixed) {
       const bool vertex_row = bv.first_dof > be.first_dof;  // store below the diagonal
       const Mat6 k_ve = k * m.on_vertex_block * m.on_edge_block.transpose();
-      coupling(bv.first_dof / 6, be.first_dof / 6) += vertex_row ? k_ve : Mat6(k_ve.transpose());
+      coupling(block_row(bv), block_row(be)) += vertex_row ? k_ve : Mat6(k_ve.transpose());
     }
   }
 
@@ -109,7 +109,7 @@ class ContactAssembler {
   void touch(const Contact& c) {
     const Block& bv = world_.blocks[c.key.vertex_block];
     const Block& be = world_.blocks[c.key.edge_block];
-    if (!bv.fixed && !be.fixed) coupling(bv.first_dof / 6, be.first_dof / 6);
+    if (!bv.fixed && !be.fixed) coupling(block_row(bv), block_row(be));
   }
 
  private:

@@ -178,6 +178,9 @@ struct World {
   StagePlan stages;
 };
 
+// A free block's row of 6 x 6 blocks in the global system (BlockSystem): its first slot / 6.
+inline int block_row(const Block& b) { return b.first_dof / 6; }
+
 // Key of an unordered block pair in World::pair_joint.
 inline std::uint64_t pair_key(int i, int j) {
   const auto lo = static_cast<std::uint64_t>(i < j ? i : j);
