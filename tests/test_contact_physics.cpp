@@ -1,4 +1,4 @@
-// Contacts and Mohr-Coulomb joints against closed forms (verification catalogue).
+// Contacts and Mohr-Coulomb joints against closed forms (docs/closed-forms.md).
 #include <catch2/catch.hpp>
 #include <cmath>
 

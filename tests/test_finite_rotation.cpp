@@ -1,5 +1,5 @@
 // The treatments that change T inside the step (issue 4): finite_rotation (the secant
-// rotation column iterated to the step's own r0, paper-notes item 6) and sin_variable
+// rotation column iterated to the step's own r0, docs/paper-errata.md, item 6) and sin_variable
 // (Cheng and Zhang's T'). References: CVODE's pendulum (verification/reference/pendulum_reference), energy
 // conservation and the kinematics of the block frame.
 #include <limits>
@@ -152,7 +152,7 @@ TEST_CASE("finite_rotation: the rigid pendulum's period matches CVODE to second 
   const double inertia_per_mass = ngon_centroidal_inertia_per_mass(8, radius) + arm * arm;
   const PendulumParams params = pendulum_params(1.0, kG, arm, inertia_per_mass, -M_PI / 2, 0.0);
   const double reference = pendulum_period(params);
-  // Shi's step is Newmark with beta = 1/2, gamma = 1 (verification catalogue). For a
+  // Shi's step is Newmark with beta = 1/2, gamma = 1 (docs/closed-forms.md). For a
   // linear oscillator, Newmark with beta = 1/2 lengthens the period by about
   // (beta/2 - 1/24) Omega^2 = (5/24) Omega^2, Omega = 2 pi dt / T; gamma = 1 adds damping,
   // which shortens a large swing's period by a term of the same order. Allowing Omega^2 / 4

@@ -42,7 +42,7 @@ TEST_CASE("polygon moments: right triangle with legs 3 and 6", "[kinematics]") {
 
 TEST_CASE("polygon moments: regular octagon", "[kinematics]") {
   // Circumradius R: area 2 sqrt(2) R^2; polar moment A R^2 (1 + 2 cos^2(pi/8)) / 6 split
-  // equally between the axes by symmetry (verification catalogue, rigid pendulum).
+  // equally between the axes by symmetry (docs/closed-forms.md, rigid pendulum).
   const double r = 0.5;  // the paper's octagon: diameter 1 m, area 0.707107 m^2
   const Moments m = polygon_moments(test::regular_polygon(8, r, {3.0, -2.0}, 0.3));
   const double area = 2.0 * std::sqrt(2.0) * r * r;

@@ -1,4 +1,4 @@
-// Drucker-Prager closed forms (verification catalogue, "Drucker-Prager"): the matches to
+// Drucker-Prager closed forms (docs/closed-forms.md, "Drucker-Prager"): the matches to
 // Mohr-Coulomb, the cone return formula, the apex, the plane-strain limit load, hardening.
 #include <catch2/catch.hpp>
 

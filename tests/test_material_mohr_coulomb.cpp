@@ -1,4 +1,4 @@
-// Mohr-Coulomb closed forms (verification catalogue, "Mohr-Coulomb"), driven through the
+// Mohr-Coulomb closed forms (docs/closed-forms.md, "Mohr-Coulomb"), driven through the
 // material-point driver (src/materials/material_point.hpp) in plane strain. Tension positive.
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 // `dda material-point SPEC.json --out FILE.csv` through the real executable: the CSV against
-// closed forms (verification catalogue, "Mohr-Coulomb"), its header, a path that fails
+// closed forms (docs/closed-forms.md, "Mohr-Coulomb"), its header, a path that fails
 // (exit 3, rows kept), and every kind of bad spec (one message naming the place, exit 2,
 // no CSV written).
 #include <algorithm>

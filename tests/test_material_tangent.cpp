@@ -1,5 +1,5 @@
 // Consistent tangents against central finite differences on every return branch
-// (verification catalogue, "Tangents and convergence"), and a Taylor test.
+// (docs/closed-forms.md, "Tangents and convergence"), and a Taylor test.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>

@@ -1,6 +1,6 @@
 // Plastic blocks inside the DDA step (issue 5 item 4): a Mohr-Coulomb specimen loaded in
 // plane-strain compression through its contacts levels off at the biaxial strength
-// s1 = N s3 + 2 c sqrt(N) (verification catalogue); one that never yields gives the elastic
+// s1 = N s3 + 2 c sqrt(N) (docs/closed-forms.md); one that never yields gives the elastic
 // block's answer.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -245,7 +245,7 @@ TEST_CASE("a Mohr-Coulomb block that never yields swings like the elastic block"
 TEST_CASE("scenes/plastic_column.json: the soil hardens until it carries its load",
           "[plastic]") {
   // Unconfined plane-strain Mohr-Coulomb (sxx = 0: frictionless joints, no lateral support)
-  // holds |syy| = 2 c sqrt(N) (verification catalogue, s3 = 0). The load (98.1 kPa) exceeds
+  // holds |syy| = 2 c sqrt(N) (docs/closed-forms.md, s3 = 0). The load (98.1 kPa) exceeds
   // the initial 2 c0 sqrt(N) = 69.3 kPa, so the soil yields and hardens along its table
   // c = c0 + 4e6 eps_p until 2 c sqrt(N) = |syy|: eps_p = (|syy| / (2 sqrt N) - c0) / 4e6.
   const Scene scene = read_scene_file(std::string(DDA_SOURCE_DIR) + "/scenes/plastic_column.json");
@@ -276,7 +276,7 @@ TEST_CASE("a non-associated Mohr-Coulomb block: Newton with the unsymmetric tang
   // Dilation 10 degrees: the consistent tangent is unsymmetric, the step is solved by KLU.
   // Pushed as above, the vertical stress levels off at the same N s3 + 2 c sqrt(N) (the
   // strength does not depend on psi), the plastic strain increments keep the ratio
-  // -(1 + sin psi)/(1 - sin psi) (verification catalogue), and each step's Newton iteration
+  // -(1 + sin psi)/(1 - sin psi) (docs/closed-forms.md), and each step's Newton iteration
   // converges quadratically: the elastic predictor, one correction with the consistent
   // tangent, and the solve that confirms it (3 solves; the symmetric part alone took 12).
   const double psi = 10.0;

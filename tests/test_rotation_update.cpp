@@ -89,7 +89,7 @@ TEST_CASE("frames: a stretch along the block's axis, seen globally, is the turne
     CHECK_THAT(stress[1], WithinAbs(1e6 * expected[1] / kPreStrain, 1e-9));
     CHECK_THAT(stress[2], WithinAbs(0.5e6 * expected[2] / kPreStrain, 1e-9));
   }
-  // 30 degrees by hand, to pin the convention on numbers (paper-notes item 1: the printed
+  // 30 degrees by hand, to pin the convention on numbers (docs/paper-errata.md, item 1: the printed
   // Eq. 18, global from local with the angle's sign flipped, gives (7.5e-4, 2.5e-4, -8.66e-4)).
   const Vec3 at30 = strain_from_turned_frame(Vec3(kPreStrain, 0.0, 0.0), 30.0 * kDegree);
   CHECK_THAT(at30[0], WithinAbs(7.5e-4, 1e-18));

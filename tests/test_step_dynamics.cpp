@@ -61,7 +61,7 @@ TEST_CASE("free fall stays exact when the displacement ratio cuts steps", "[step
 }
 
 TEST_CASE("original update: a spinning block grows by exactly 1 + r^2 per step", "[step]") {
-  // The false volume expansion the paper cures (paper Section 2; verification catalogue):
+  // The false volume expansion the paper cures (paper Section 2; docs/closed-forms.md):
   // x += T d maps offsets by [[1, -r], [r, 1]], whose determinant is 1 + r^2.
   Scene s = test::base_scene(500, 0.01);
   s.gravity = Vec2::Zero();

@@ -35,7 +35,7 @@ Mat2 quarter_turn();
 
 // The secant column (R(r) - I) / r: with it, T d moves every point by the exact rotation
 // through d_r0 = r (R(r) the counter-clockwise rotation matrix). Tends to J as r -> 0 and is
-// exactly J at r = 0. finite_rotation iterates r to the step's own r0 (paper-notes item 6).
+// exactly J at r = 0. finite_rotation iterates r to the step's own r0 (docs/paper-errata.md, item 6).
 Mat2 secant_rotation_column(double r);
 
 // Cheng and Zhang's column (R(r) - I) / sin r (paper Eqs. 9-11): with sin r0 as the unknown,

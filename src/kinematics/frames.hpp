@@ -1,5 +1,5 @@
 // Strain and stress tensors in turned frames. One sign convention everywhere (see
-// paper-notes item 1): a positive angle is counter-clockwise, as r0 in T. A block's frame
+// docs/paper-errata.md, item 1): a positive angle is counter-clockwise, as r0 in T. A block's frame
 // (paper Section 3, Fig. 1) is the global frame turned by the block's total rotation.
 #pragma once
 

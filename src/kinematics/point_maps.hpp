@@ -30,7 +30,7 @@ Vec2 finite_rotation_displacement(const Vec2& offset, const Vec6& db);
 // frame_map: the block stretched in its own frame, then turned (paper Eq. 19 in the
 //   kinematically consistent form): A = R(r) (I + E^).
 // frame_map_as_printed: Eq. (19) as printed, the global total strain on the initial offsets:
-//   A = R(r) + R E^ R^T. Equal to frame_map only while r is small (paper-notes item 2).
+//   A = R(r) + R E^ R^T. Equal to frame_map only while r is small (docs/paper-errata.md, item 2).
 Mat2 frame_map(double r, const Vec3& local_strain);
 Mat2 frame_map_as_printed(double r, const Vec3& local_strain);
 

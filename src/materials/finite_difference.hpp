@@ -1,5 +1,5 @@
 // The tangent of integrate() by central finite differences of its stress, the independent
-// reference for the consistent tangents (verification catalogue, "Tangents").
+// reference for the consistent tangents (docs/closed-forms.md, "Tangents").
 #pragma once
 
 #include "materials/material.hpp"

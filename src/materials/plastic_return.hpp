@@ -40,7 +40,7 @@ inline PlasticReturn failed_return(const Vec4& trial, double eps_p, const Mat4& 
 // non-negative, inside the planes not in the active set), times a stress scale of the
 // trial: 1e-12 of the largest stress, thousands of ulps above the round-off of a return (a
 // handful of flops on 3-vectors), far below anything a tolerance could hide. Never a
-// comparison with exact 0 (CalculiX bug #184, verification catalogue).
+// comparison with exact 0 (CalculiX bug #184, docs/closed-forms.md).
 constexpr double kDecisionTolerance = 1e-12;
 
 }  // namespace dda

@@ -1,5 +1,5 @@
 // Mohr-Coulomb return map with optional tension cut-off, in principal stress space with szz
-// taking part (de Souza Neto, Peric and Owen 2008, section 8.2; verification catalogue).
+// taking part (de Souza Neto, Peric and Owen 2008, section 8.2; docs/closed-forms.md).
 #pragma once
 
 #include "materials/elastic.hpp"

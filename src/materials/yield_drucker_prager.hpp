@@ -1,6 +1,6 @@
 // The Drucker-Prager cone f = sqrt(J2) + eta p - xi c(eps_p) with the plastic potential
 // sqrt(J2) + eta_bar p, p = tr(s) / 3, tension positive (de Souza Neto, Peric and Owen 2008,
-// section 6.4.6; verification catalogue, "Drucker-Prager").
+// section 6.4.6; docs/closed-forms.md, "Drucker-Prager").
 #pragma once
 
 #include "materials/material.hpp"

@@ -1,6 +1,6 @@
 // The Mohr-Coulomb surface and the Rankine tension cut-off as planes in sorted principal
 // stress space, s1 >= s2 >= s3, tension positive (de Souza Neto, Peric and Owen 2008,
-// section 8.2; verification catalogue, "Mohr-Coulomb").
+// section 8.2; docs/closed-forms.md, "Mohr-Coulomb").
 //
 // Mohr-Coulomb plane (i, j), the major stress i with the minor j:
 //   f_ij = (s_i - s_j) + (s_i + s_j) sin(phi) - 2 c cos(phi)

@@ -208,7 +208,7 @@ struct ControlSettings {
   // Write history rows and a VTK frame every this many steps (and at the start and end).
   int output_every = 10;
   // Open-close iterations allowed per step before the step is cut (dt x 0.3) and redone
-  // (Shi's usual limit; verification catalogue). Range >= 2.
+  // (Shi's usual limit; docs/closed-forms.md). Range >= 2.
   int max_open_close = 8;
   // Augmented-Lagrangian rounds allowed per step (penetration control at a fixed penalty,
   // solver/step.cpp) before a step whose contacts are deeper than allowed_penetration is

@@ -13,7 +13,7 @@ namespace dda {
 namespace {
 
 // Shi's usual penalty: about 50 times the largest Young's modulus (per metre of thickness);
-// see the verification catalogue ("Shi's usual controls").
+// see the docs/closed-forms.md ("Shi's usual controls").
 constexpr double kAutoPenaltyFactor = 50.0;
 
 double resolve_penalty(const Scene& scene) {

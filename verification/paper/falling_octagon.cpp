@@ -126,7 +126,7 @@ std::string falling_report(const Options& opt, const std::vector<FallingRun>& ru
   const Launch l = table1_launch(st);
   std::ostringstream md;
   md << "## Table 1: the falling octagon\n\n"
-     << "The paper does not give its slope (paper-notes item 4); this one is a staircase of "
+     << "The paper does not give its slope (docs/paper-errata.md, item 4); this one is a staircase of "
         "fixed blocks, so that the rock strikes tread edges and turns (on a plane frictionless "
         "slope it would only slide): "
      << st.steps << " steps, each " << fixed(st.tread, 2) << " m deep and " << fixed(st.riser, 2)

@@ -53,7 +53,7 @@ const std::map<std::string, PaperDiagonals>& paper_table2() {
   return kTable;
 }
 
-// Paper Table 3 is garbled (paper-notes item 5). Legible: the step-200 rows (ex, ey, gxy),
+// Paper Table 3 is garbled (docs/paper-errata.md, item 5). Legible: the step-200 rows (ex, ey, gxy),
 // whose Ke and Cheng-Zhang rows reproduce the principal strains the text quotes when put
 // through the printed Eq. (22); and the text's principal strains of Section 5.2.
 struct PaperStrainRow {
@@ -291,7 +291,7 @@ std::string swinging_report(const Options& opt, const std::vector<SwingRun>& run
   }
 
   md << "\n### What the paper's Table 3 says (legible values only)\n\n"
-     << "Table 3 is garbled in the source (paper-notes item 5). Legible are the step-200 rows "
+     << "Table 3 is garbled in the source (docs/paper-errata.md, item 5). Legible are the step-200 rows "
         "(ex, ey, gxy) and the principal strains quoted in the text of Section 5.2: Ke, step "
         "200: e_max 1.27e-4, e_min -6.86e-5; Ke, step 5000: e_max 4.40e-5, e_min -1.75e-5; "
         "Cheng and Zhang, step 200: e_max 1.26e-4, e_min -6.84e-5; step 5000: e_max "

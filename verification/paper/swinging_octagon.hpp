@@ -58,7 +58,7 @@ void write_swinging_csv(const Options& opt, const std::vector<SwingRun>& runs);
 std::string swinging_report(const Options& opt, const std::vector<SwingRun>& runs);
 
 // Principal strains of [exx, eyy, gxy] (engineering shear): the correct form of the paper's
-// Eq. (22), (ex+ey)/2 +- sqrt(((ex-ey)/2)^2 + (gxy/2)^2) (paper-notes item 3). {max, min}.
+// Eq. (22), (ex+ey)/2 +- sqrt(((ex-ey)/2)^2 + (gxy/2)^2) (docs/paper-errata.md, item 3). {max, min}.
 std::array<double, 2> principal_strains(const Vec3& e);
 
 }  // namespace dda::paper
