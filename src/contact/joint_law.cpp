@@ -31,12 +31,8 @@ ContactDecision unbonded(const Contact& c, const ContactTrial& trial, const Join
     case ContactMode::Open:
       // Closing: Shi enters locked. A frictionless joint cannot hold any shear, so it enters
       // sliding in the direction of the trial's slip: entering locked, its shear spring
-      // would stop the vertex on the edge, it would open, close locked again, and the loop
-      // would cycle open <-> lock without reaching sliding (a rock thrown onto a
-      // frictionless step came to a dead stop). With friction, entering sliding on the same
-      // test was tried: the trial's normal force, taken from a deeper penetration, then
-      // overestimates friction, the slip reverses, and a diamond landing on a corner gained
-      // energy; Shi's rule stays.
+      // would stop the vertex on the edge and the loop would cycle open <-> lock. With
+      // friction Shi's rule stays (docs/contacts.md, "Rules tried and not kept").
       if (law.tan_phi == 0.0 && trial.shear_force != 0.0) {
         return {ContactMode::Slide, slip_sign_of_force(trial.shear_force), false, false};
       }

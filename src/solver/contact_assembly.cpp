@@ -12,9 +12,8 @@ namespace {
 
 // Slips below this share of the allowed penetration count as no slip (round-off), and a
 // closed contact opens only beyond kOpenToleranceShare of it (see
-// ContactTrial::open_tolerance). (1e-4 for the slip was tried: a settling 100-brick wall
-// needed 2.4-3.1 open-close iterations a step instead of 7.6, but a 1000-brick wall 12
-// instead of 10.4, so the round-off scale stays.)
+// ContactTrial::open_tolerance). A coarser slip tolerance was tried and not kept
+// (docs/contacts.md, "Rules tried and not kept").
 constexpr double kSlipToleranceShare = 1e-6;
 constexpr double kOpenToleranceShare = 1e-6;
 // A contact that has changed mode this many times in one open-close loop may from then on

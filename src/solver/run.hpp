@@ -14,7 +14,7 @@ namespace dda {
 struct StageTimes {
   double detect = 0;          // broad and narrow phase, state carried over
   double assemble = 0;        // block terms and, per open-close iteration, contact terms
-  double solve = 0;           // CHOLMOD factorisation and solve
+  double solve = 0;           // linear solves: CHOLMOD (kept factor, its updates, CG) or KLU
   double contact_update = 0;  // each contact's next mode after a solve
   double update = 0;          // configuration, stresses, velocities
 };

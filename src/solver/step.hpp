@@ -1,4 +1,5 @@
-// One DDA time step as a pipeline of named stages (see step.cpp, read top-down).
+// One DDA time step (advance_step, step.cpp, read top-down): choose dt, detect_contacts,
+// solve_open_close, check_step (cut and redo), commit_step, the energy guard.
 #pragma once
 
 #include <optional>
