@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/scene_reader.hpp"
+#include "io/input_error.hpp"
 #include "kinematics/types.hpp"
 
 namespace dda::input {

@@ -3,16 +3,12 @@
 // "scene.json: blocks[3].vertices: ...") and is thrown as InputError.
 #pragma once
 
-#include <stdexcept>
 #include <string>
 
+#include "io/input_error.hpp"
 #include "solver/scene.hpp"
 
 namespace dda {
-
-struct InputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Reads and validates a scene file. Throws InputError.
 Scene read_scene_file(const std::string& path);

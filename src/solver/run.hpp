@@ -5,54 +5,10 @@
 #include <functional>
 #include <string>
 
+#include "solver/run_stats.hpp"
 #include "solver/world.hpp"
 
 namespace dda {
-
-// Wall time spent in each stage of the step (seconds, summed over the run), to show where
-// the time goes (bench/, README "Speed").
-struct StageTimes {
-  double detect = 0;          // broad and narrow phase, state carried over
-  double assemble = 0;        // block terms and, per open-close iteration, contact terms
-  double solve = 0;           // linear solves: CHOLMOD (kept factor, its updates, CG) or KLU
-  double contact_update = 0;  // each contact's next mode after a solve
-  double update = 0;          // configuration, stresses, velocities
-};
-
-struct RunStats {
-  int steps = 0;           // completed steps
-  int cut_steps = 0;       // attempts thrown away and redone with a shorter dt, for:
-  int cuts_for_displacement = 0;  //   a vertex moved more than its block's step limit
-  int cuts_for_open_close = 0;    //   open-close loop not settled in max_open_close
-  int cuts_for_penetration = 0;   //   a contact deeper than allowed_penetration
-  int cuts_for_material = 0;      //   a plastic block's return map failed
-  int cuts_for_overshoot = 0;     //   an open contact's vertex ended inside the other block
-  long iterations = 0;     // linear solves (assemble + solve passes) in all
-  double wall_time_s = 0;  // whole run, seconds
-  long open_close_total = 0;  // open-close iterations of accepted steps, summed
-  int open_close_max = 0;     // the most any accepted step needed
-  long contacts_total = 0;    // closed contacts at the end of each step, summed
-  int contacts_max = 0;
-  int contacts_final = 0;     // closed contacts at the end of the run
-  // The most block pairs the broad phase handed to the narrow phase in a step (pairs within
-  // their search distance, fixed pairs included): what the contact search costs.
-  long candidate_pairs_max = 0;
-  // The observer stopped the run before its end: dda run's does so on SIGINT or SIGTERM
-  // (summary.json's "interrupted"), a fos trial's once its verdict is known. The state
-  // reached is complete, only shorter than asked.
-  bool interrupted = false;
-  double deepest_penetration = 0.0;   // m, deepest contact penetration after any accepted step
-  double largest_normal_force = 0.0;  // N/m, largest contact normal force after any accepted step
-  // Times the penalty was raised: always 0 since the penalty stays as the scene sets it
-  // (kept in the summary for the scripts that read it).
-  int penalty_raises = 0;
-  // Augmented-Lagrangian rounds (solver/step.cpp, control.max_augmentations): solves spent pushing
-  // contacts deeper than allowed_penetration back out at the fixed penalty.
-  long augmentations = 0;
-  StageTimes stage_times;
-  bool diverged = false;
-  std::string message;     // why the run stopped early, empty otherwise
-};
 
 // Called with the world after each completed step (and once before the first step with
 // world.step == 0). Return false to stop the run.

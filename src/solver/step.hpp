@@ -12,7 +12,7 @@
 #include "solver/contact_detection.hpp"
 #include "solver/factor_springs.hpp"
 #include "solver/linear_solver.hpp"
-#include "solver/run.hpp"
+#include "solver/run_stats.hpp"
 #include "solver/world.hpp"
 
 namespace dda {
