@@ -1,93 +1,18 @@
 // The material interface (MFront's behaviour data): state at the start of a step and total
-// strain at its end in, stress, new state, consistent tangent and a status out.
-//
-// Strain-driven and total: the stress is never accumulated. With the plastic strain e_p of
-// the start state and an initial stress s0, the trial stress is
-//   s_trial = s0 + D (e - e_p),  e = (exx, eyy, ezz = 0, gxy)       (plane strain, voigt4.hpp)
-// and a return map (return_*.hpp) brings it back onto the yield surface. Tension positive.
+// strain at its end in, stress, new state, consistent tangent and a status out
+// (materials/material_types.hpp). integrate() is the switch over the models: it calls the
+// returns (return_*.hpp), which know only the vocabulary, never this switch.
 #pragma once
 
-#include <optional>
-#include <string>
-#include <vector>
-
 #include "kinematics/types.hpp"
-#include "materials/elastic.hpp"
-#include "materials/hardening.hpp"
-#include "materials/voigt4.hpp"
+#include "materials/material_types.hpp"
 
 namespace dda {
-
-enum class MaterialModel { Elastic, DruckerPrager, MohrCoulomb };
-
-// How the Drucker-Prager cone is matched to the Mohr-Coulomb friction angle and cohesion
-// (yield_drucker_prager.hpp).
-enum class DruckerPragerMatch { Outer, Inner, PlaneStrain };
-
-struct MaterialParameters {
-  MaterialModel model = MaterialModel::Elastic;
-  double young = 0.0;           // Pa, > 0
-  double poisson = 0.0;         // (-1, 0.5)
-  double density = 0.0;         // kg/m^3, > 0 (not used here; carried for the scene)
-  double cohesion = 0.0;        // Pa, >= 0 (the cohesion at eps_p = 0)
-  double friction_angle = 0.0;  // degrees, [0, 90)
-  double dilation_angle = 0.0;  // degrees, [0, friction_angle]; = friction: associated flow
-  // Mohr-Coulomb only: the tension cut-off, a Rankine plane s_max = tensile_strength (Pa,
-  // >= 0). Absent: no cut-off (the Mohr-Coulomb surface alone, its apex at c cot phi);
-  // 0: no tension at all (s_max <= 0). It does not soften with the cohesion.
-  std::optional<double> tensile_strength;
-  // Cohesion against equivalent plastic strain, piecewise linear, constant beyond the ends.
-  // Empty: constant `cohesion`. Given: its value at eps_p = 0 must equal `cohesion`.
-  std::vector<HardeningPoint> hardening;
-  DruckerPragerMatch match = DruckerPragerMatch::PlaneStrain;  // Drucker-Prager only
-  // Plastic models are plane strain only (validate_material rejects plane stress).
-  PlaneMode plane = PlaneMode::Strain;
-};
-
-// What a material point carries from step to step.
-//
-// eps_p, the equivalent plastic strain, is the strain-like variable conjugate to the
-// cohesion (de Souza Neto, Peric and Owen 2008, sections 6.4 and 8.2): its rate times c is
-// the plastic dissipation of associated flow. Mohr-Coulomb: d eps_p = 2 cos(phi) times the
-// sum of the plane multipliers (on the main plane with fixed axes, eps_p = cos(phi) (e_p1 -
-// e_p3)); Drucker-Prager: d eps_p = xi d gamma. The tension cut-off's flow leaves it (and so
-// the cohesion) unchanged.
-struct MaterialState {
-  Vec4 plastic_strain = Vec4::Zero();  // (xx, yy, zz, xy), engineering shear; zz is not zero
-  double eps_p = 0.0;
-};
-
-// Which return the stress took. Tension: the cut-off is active (alone or with the
-// Mohr-Coulomb surface; MaterialResult::active_planes tells which).
-enum class Branch { Elastic, Plane, Edge, Apex, Cone, Tension };
-const char* branch_name(Branch b);  // "elastic", "plane", "edge", "apex", "cone", "tension"
-
-struct MaterialStatus {
-  bool converged = true;
-  std::string reason;  // why it failed; empty when converged
-  // Retry with this fraction of the strain increment (substepping); 0 when a smaller
-  // increment cannot cure the failure (e.g. no return exists for these parameters).
-  double suggested_fraction = 1.0;
-};
-
-struct MaterialResult {
-  Vec4 stress = Vec4::Zero();  // (sxx, syy, szz, sxy); plane stress: szz = 0
-  MaterialState state;
-  Mat3 tangent = Mat3::Zero();  // d(sxx, syy, sxy) / d(exx, eyy, gxy), consistent
-  Branch branch = Branch::Elastic;
-  MaterialStatus status;
-  // Mohr-Coulomb: the planes of the return in sorted principal space, a bitmask of
-  // MohrCoulombPlane (yield_mohr_coulomb.hpp); 0 when elastic. For diagnostics and tests.
-  unsigned active_planes = 0;
-};
 
 // The stress of `params` at total strain (exx, eyy, gxy) from `start`, with initial stress
 // s0 (sxx, syy, szz, sxy) (plane stress: its szz is ignored). Does not validate `params`
 // (validate_material does, at input).
 MaterialResult integrate(const MaterialParameters& params, const MaterialState& start,
                          const Vec3& total_strain, const Vec4& initial_stress = Vec4::Zero());
-
-// True for the models with a yield surface.
-inline bool is_plastic(MaterialModel m) { return m != MaterialModel::Elastic; }
 
 }  // namespace dda

@@ -3,7 +3,7 @@
 // e_p_start + D^-1 (s_trial - s) for every return, and integrate() computes it once.
 #pragma once
 
-#include "materials/material.hpp"
+#include "materials/material_types.hpp"
 #include "materials/voigt4.hpp"
 
 namespace dda {

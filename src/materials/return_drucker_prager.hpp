@@ -4,7 +4,7 @@
 #pragma once
 
 #include "materials/elastic.hpp"
-#include "materials/material.hpp"
+#include "materials/material_types.hpp"
 #include "materials/plastic_return.hpp"
 
 namespace dda {

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "materials/material.hpp"
+#include "materials/material_types.hpp"
 
 namespace dda {
 

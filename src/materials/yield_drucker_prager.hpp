@@ -3,7 +3,7 @@
 // section 6.4.6; docs/closed-forms.md, "Drucker-Prager").
 #pragma once
 
-#include "materials/material.hpp"
+#include "materials/material_types.hpp"
 #include "materials/voigt4.hpp"
 
 namespace dda {
