@@ -41,18 +41,6 @@ bool belongs(const ModelKey& k, MaterialModel model) {
   return false;
 }
 
-std::string_view model_name(MaterialModel model) {
-  switch (model) {
-    case MaterialModel::Elastic:
-      return "elastic";
-    case MaterialModel::DruckerPrager:
-      return "drucker_prager";
-    case MaterialModel::MohrCoulomb:
-      return "mohr_coulomb";
-  }
-  return "?";
-}
-
 constexpr MaterialModel kModels[] = {MaterialModel::Elastic, MaterialModel::DruckerPrager,
                                      MaterialModel::MohrCoulomb};
 

@@ -81,12 +81,9 @@ void read_run_length(const Field& control, ControlSettings& c, bool staged) {
 
 RotationUpdate read_rotation_update(const Field& f) {
   const std::string name = f.string();
-  std::string known_names;
-  for (const RotationUpdateName& known : kRotationUpdateNames) {
-    if (name == known.name) return known.value;
-    known_names += (known_names.empty() ? "\"" : ", \"") + std::string(known.name) + "\"";
-  }
-  f.fail("unknown rotation update \"" + name + "\" (known: " + known_names + ")");
+  if (const auto value = value_in(kRotationUpdateNames, name)) return *value;
+  f.fail("unknown rotation update \"" + name + "\" (known: " +
+         quoted_names(kRotationUpdateNames) + ")");
 }
 
 // A positive number, or "auto" (nullopt); `unit` is shown in the message.

@@ -5,25 +5,6 @@
 #include "materials/return_mohr_coulomb.hpp"
 
 namespace dda {
-
-const char* branch_name(Branch b) {
-  switch (b) {
-    case Branch::Elastic:
-      return "elastic";
-    case Branch::Plane:
-      return "plane";
-    case Branch::Edge:
-      return "edge";
-    case Branch::Apex:
-      return "apex";
-    case Branch::Cone:
-      return "cone";
-    case Branch::Tension:
-      return "tension";
-  }
-  return "unknown";
-}
-
 namespace {
 
 // Plane stress is elastic only: s = s0 + D e in plane, szz = 0.

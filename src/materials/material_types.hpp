@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "kinematics/enum_names.hpp"
 #include "kinematics/types.hpp"
 #include "materials/elastic.hpp"
 #include "materials/hardening.hpp"
@@ -21,6 +22,14 @@
 namespace dda {
 
 enum class MaterialModel { Elastic, DruckerPrager, MohrCoulomb };
+
+// The scene names of the models (the contract of materials.*.model).
+inline constexpr EnumName<MaterialModel> kMaterialModelNames[] = {
+    {MaterialModel::Elastic, "elastic"},
+    {MaterialModel::DruckerPrager, "drucker_prager"},
+    {MaterialModel::MohrCoulomb, "mohr_coulomb"},
+};
+inline std::string_view model_name(MaterialModel m) { return name_in(kMaterialModelNames, m); }
 
 // How the Drucker-Prager cone is matched to the Mohr-Coulomb friction angle and cohesion
 // (yield_drucker_prager.hpp).
@@ -62,7 +71,12 @@ struct MaterialState {
 // Which return the stress took. Tension: the cut-off is active (alone or with the
 // Mohr-Coulomb surface; MaterialResult::active_planes tells which).
 enum class Branch { Elastic, Plane, Edge, Apex, Cone, Tension };
-const char* branch_name(Branch b);  // "elastic", "plane", "edge", "apex", "cone", "tension"
+// The names of the branches in the output files (summary.json, material-point CSV).
+inline constexpr EnumName<Branch> kBranchNames[] = {
+    {Branch::Elastic, "elastic"}, {Branch::Plane, "plane"}, {Branch::Edge, "edge"},
+    {Branch::Apex, "apex"},       {Branch::Cone, "cone"},   {Branch::Tension, "tension"},
+};
+inline const char* branch_name(Branch b) { return name_in(kBranchNames, b).data(); }
 
 struct MaterialStatus {
   bool converged = true;

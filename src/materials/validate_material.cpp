@@ -20,10 +20,7 @@ ParameterError error(std::string key, std::string message) {
 }  // namespace
 
 std::optional<MaterialModel> parse_model(std::string_view name) {
-  if (name == "elastic") return MaterialModel::Elastic;
-  if (name == "drucker_prager") return MaterialModel::DruckerPrager;
-  if (name == "mohr_coulomb") return MaterialModel::MohrCoulomb;
-  return std::nullopt;
+  return value_in(kMaterialModelNames, name);
 }
 
 std::optional<DruckerPragerMatch> parse_match(std::string_view name) {

@@ -11,6 +11,7 @@
 
 #include "contact/joint_law.hpp"
 #include "kinematics/polygon.hpp"
+#include "kinematics/enum_names.hpp"
 #include "kinematics/types.hpp"
 #include "solver/base_motion.hpp"
 #include "solver/joint_water.hpp"
@@ -32,10 +33,7 @@ enum class RotationUpdate {
   FiniteRotation,       // local frame plus the secant rotation column in T (the default)
 };
 
-struct RotationUpdateName {
-  RotationUpdate value;
-  std::string_view name;
-};
+using RotationUpdateName = EnumName<RotationUpdate>;
 
 // The scene names of the treatments (the contract of control.rotation_update).
 inline constexpr RotationUpdateName kRotationUpdateNames[] = {
@@ -49,10 +47,7 @@ inline constexpr RotationUpdateName kRotationUpdateNames[] = {
 };
 
 inline std::string_view rotation_update_name(RotationUpdate u) {
-  for (const RotationUpdateName& n : kRotationUpdateNames) {
-    if (n.value == u) return n.name;
-  }
-  return "?";  // unreachable: every value has a name
+  return name_in(kRotationUpdateNames, u);
 }
 
 // Treatments that keep total strain, strain rates and stress in the block's own frame
