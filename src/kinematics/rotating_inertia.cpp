@@ -1,25 +1,9 @@
 #include "kinematics/rotating_inertia.hpp"
 
-#include <cmath>
+#include "kinematics/block_matrices.hpp"
+#include "kinematics/point_maps.hpp"
 
 namespace dda {
-namespace {
-
-// [e_x, e_y, g_xy] (engineering shear) as a symmetric tensor.
-Mat2 strain_tensor(const Vec3& e) {
-  Mat2 t;
-  t << e[0], 0.5 * e[2], 0.5 * e[2], e[1];
-  return t;
-}
-
-Mat2 rotation(double theta) {
-  const double c = std::cos(theta), s = std::sin(theta);
-  Mat2 r;
-  r << c, -s, s, c;
-  return r;
-}
-
-}  // namespace
 
 Mat2 material_inertia(double density, double sxx, double syy, double sxy) {
   Mat2 j;
@@ -29,8 +13,7 @@ Mat2 material_inertia(double density, double sxx, double syy, double sxy) {
 
 Vec6 rotating_inertia_force(const Mat2& j0, double theta, const Vec3& local_strain,
                             const Spin& spin) {
-  Mat2 quarter;
-  quarter << 0.0, -1.0, 1.0, 0.0;
+  const Mat2 quarter = quarter_turn();
   const Mat2 u = Mat2::Identity() + strain_tensor(local_strain);
   const Mat2 rate = strain_tensor(spin.strain_rate);
   const double w = spin.omega;
@@ -44,7 +27,7 @@ Vec6 rotating_inertia_force(const Mat2& j0, double theta, const Vec3& local_stra
   const Mat2 gj = g_h * j0;
   const Mat2 q_local = 0.5 * (gj + gj.transpose());
   // A force conjugate to the strain turns like a stress: Q : dE^ = (R Q R^T) : dE_global.
-  const Mat2 r = rotation(theta);
+  const Mat2 r = rotation_matrix(theta);
   const Mat2 q = r * q_local * r.transpose();
   Vec6 h = Vec6::Zero();
   // The rotation equation's 2 omega tr(E^' J0 U) = omega dI_p/dt, less what the mass
