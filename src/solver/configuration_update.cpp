@@ -154,6 +154,10 @@ void move_blocks(World& world, const Eigen::VectorXd& d) {
 
 }  // namespace
 
+Vec3 block_frame_increment(const Block& b, const Vec6& db) {
+  return strain_in_turned_frame(db.segment<3>(kEx), b.rotation + 0.5 * db[kR0]);
+}
+
 Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db) {
   if (b.fixed) return b.vertices[k];
   const Vec2 offset = b.vertices[k] - b.moments.centroid;
@@ -169,8 +173,7 @@ Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const
       // rebuild_in_frame's rule: the step's r0 and strain increment (turned by the
       // mid-step angle) added, then x = xc + A (X - Xc).
       const double rotation = b.rotation + db[kR0];
-      const Vec3 local_strain =
-          b.local_strain + strain_in_turned_frame(db.segment<3>(kEx), b.rotation + 0.5 * db[kR0]);
+      const Vec3 local_strain = b.local_strain + block_frame_increment(b, db);
       const Mat2 a = treatment == RotationUpdate::LocalFrameAsPrinted
                          ? frame_map_as_printed(rotation, local_strain)
                          : frame_map(rotation, local_strain);

@@ -28,6 +28,11 @@ double max_displacement_share(const World& world, const Eigen::VectorXd& d);
 // Every treatment then records each block's r0 as its last_rotation_increment.
 void update_configuration(World& world, const Eigen::VectorXd& d);
 
+// The step's strain increment db[ex, ey, gxy] (global frame) in block b's frame, turned by
+// the mid-step angle b.rotation + r0 / 2, for a block not yet updated (the update takes the
+// same angle from its updated rotation). The local-frame treatments accumulate it.
+Vec3 block_frame_increment(const Block& b, const Vec6& db);
+
 // Where vertex k of block b will be after update_configuration with the block's increments
 // db, without moving anything (the same rule per treatment; tests check that the two agree).
 Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db);

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "contact/narrow_phase.hpp"
-#include "kinematics/frames.hpp"
 #include "kinematics/polygon.hpp"
 #include "solver/assembly.hpp"
 #include "solver/configuration_update.hpp"
@@ -149,9 +148,8 @@ void follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
     if (b.fixed || b.rigid) continue;
-    const double r0 = d[b.first_dof + kR0];
-    const Vec3 local = strain_in_turned_frame(d.segment<3>(b.first_dof + kEx), b.rotation + 0.5 * r0);
-    ctx.spins[i] = Spin{r0 / ctx.dt, local / ctx.dt};
+    const Vec6 db = d.segment<6>(b.first_dof);
+    ctx.spins[i] = Spin{db[kR0] / ctx.dt, block_frame_increment(b, db) / ctx.dt};
   }
 }
 
