@@ -33,11 +33,7 @@ void hand_over_bonds(const std::vector<Contact>& previous, const std::vector<cha
                      const std::vector<Contact*>& unmatched) {
   if (unmatched.empty()) return;
   std::unordered_multimap<std::uint64_t, std::size_t> lost;  // by block pair
-  auto pair_of = [](const ContactKey& k) {
-    const auto lo = static_cast<std::uint64_t>(std::min(k.vertex_block, k.edge_block));
-    const auto hi = static_cast<std::uint64_t>(std::max(k.vertex_block, k.edge_block));
-    return (hi << 32) | lo;
-  };
+  auto pair_of = [](const ContactKey& k) { return pair_key(k.vertex_block, k.edge_block); };
   for (std::size_t i = 0; i < previous.size(); ++i) {
     const ContactState& s = previous[i].state;
     if (!carried[i] && s.bonded && s.mode != ContactMode::Open) lost.emplace(pair_of(previous[i].key), i);

@@ -13,6 +13,14 @@ namespace dda {
 
 enum class ContactMode : std::uint8_t { Open, Slide, Lock };
 
+// Key of an unordered pair of blocks i and j (the joint a pair uses, World::pair_joint; the
+// contacts a pair shares, carry_over).
+inline std::uint64_t pair_key(int i, int j) {
+  const auto lo = static_cast<std::uint64_t>(i < j ? i : j);
+  const auto hi = static_cast<std::uint64_t>(i < j ? j : i);
+  return (hi << 32) | lo;
+}
+
 // A contact's next mode: its slip direction if sliding, and whether a locked one takes a
 // new shear anchor where the vertex is.
 struct ModeChange {

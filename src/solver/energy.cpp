@@ -27,6 +27,14 @@ double complementary_density(const Vec4& s, double young, double poisson) {
   return (normal + 2.0 * (1.0 + poisson) * s[3] * s[3]) / (2.0 * young);
 }
 
+// A contact's shear spring energy F^2 / 2 ks, locked or sliding (a sliding contact is its
+// spring in series with the slider: ContactState::spring_energy); none when open.
+double shear_spring_energy(const Contact& c, double ks) {
+  if (c.state.mode == ContactMode::Open) return 0.0;
+  const double f = c.iterate.shear_force;
+  return f * f / (2.0 * ks);
+}
+
 // A plastic block's stress with its out-of-plane component, (xx, yy, zz, xy).
 Vec4 stress4(const Block& b) { return Vec4(b.stress[0], b.stress[1], b.szz, b.stress[2]); }
 
@@ -48,11 +56,9 @@ double contact_energy(const World& world, const std::vector<Contact>& contacts, 
     // gives it back although no work put it there (the account then shows it).
     // (An augmented contact's multiplier force p s is not a spring: its work is a term of
     // its own, multiplier_work.)
-    const double g = c.iterate.new_gap, f = c.iterate.shear_force;
+    const double g = c.iterate.new_gap;
     if (c.state.mode != ContactMode::Open || g < 0.0) e += 0.5 * penalty * g * g;
-    // The shear spring, locked or sliding (in series with the slider: ContactState::
-    // spring_energy).
-    if (c.state.mode != ContactMode::Open) e += f * f / (2.0 * ks);
+    e += shear_spring_energy(c, ks);
   }
   for (const Pin& pin : world.pins) {
     if (world.blocks[static_cast<std::size_t>(pin.block)].fixed) continue;
@@ -155,9 +161,8 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
       // slide) is stored, the rest dissipated. Without the spring a relock, which anchors
       // the spring where it keeps the friction the contact carried, would bring S^2 / 2 ks
       // from nowhere, and a release would lose it (docs/contacts.md, "Relocking").
-      const double f = c.iterate.shear_force;
-      const double stored = f * f / (2.0 * ks) - c.state.spring_energy;
-      const double dissipated = -f * c.iterate.slip - stored;
+      const double stored = shear_spring_energy(c, ks) - c.state.spring_energy;
+      const double dissipated = -c.iterate.shear_force * c.iterate.slip - stored;
       s.friction_dissipation += std::max(0.0, dissipated);
       s.friction_gain += std::max(0.0, -dissipated);
       brought += std::max(0.0, -dissipated);
@@ -239,10 +244,7 @@ void start_energy_account(World& world) {
 
 void record_spring_energies(std::vector<Contact>& contacts, double penalty) {
   const double ks = kShearSpringRatio * penalty;
-  for (Contact& c : contacts) {
-    const double f = c.iterate.shear_force;
-    c.state.spring_energy = c.state.mode == ContactMode::Open ? 0.0 : f * f / (2.0 * ks);
-  }
+  for (Contact& c : contacts) c.state.spring_energy = shear_spring_energy(c, ks);
 }
 
 }  // namespace dda

@@ -181,12 +181,6 @@ struct World {
 // A free block's row of 6 x 6 blocks in the global system (BlockSystem): its first slot / 6.
 inline int block_row(const Block& b) { return b.first_dof / 6; }
 
-// Key of an unordered block pair in World::pair_joint.
-inline std::uint64_t pair_key(int i, int j) {
-  const auto lo = static_cast<std::uint64_t>(i < j ? i : j);
-  const auto hi = static_cast<std::uint64_t>(i < j ? j : i);
-  return (hi << 32) | lo;
-}
 
 // Contact search distance between blocks i and j (m): 1.25 x the sum of what their vertices
 // may move in a step, so every contact the step could close is found with a quarter to
