@@ -3,6 +3,8 @@
 // program depends only on the solver's API. Geometry lives here and nowhere else.
 #pragma once
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "solver/scene.hpp"
@@ -66,6 +68,26 @@ Polygon swinging_octagon();
 inline const Vec2 kSwingPin{9.5, 0.0};
 // dt 0.02 s, max displacement ratio 0.1, pinned at (9.5, 0), gravity.
 Scene swinging_octagon_scene(int steps, RotationUpdate update);
+
+// The swing of the pinned octagon: the angle (rad, counter-clockwise) the line from the pin's
+// anchor to the block's centroid has swept since the start, unwrapped step by step (a step
+// turns it by far less than pi).
+class SwingAngle {
+ public:
+  SwingAngle(const Vec2& anchor, const Vec2& centroid)
+      : anchor_(anchor), start_(std::atan2((centroid - anchor).y(), (centroid - anchor).x())) {}
+  // The swing with the centroid now at `centroid`.
+  double follow(const Vec2& centroid) {
+    const Vec2 now = centroid - anchor_;
+    swing_ += std::remainder(std::atan2(now.y(), now.x()) - start_ - swing_, 2.0 * std::numbers::pi);
+    return swing_;
+  }
+
+ private:
+  Vec2 anchor_;
+  double start_;
+  double swing_ = 0.0;
+};
 
 // ---- speed against error ----
 

@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "csv.hpp"
+#include "kinematics/block_matrices.hpp"
 #include "kinematics/frames.hpp"
+#include "kinematics/point_maps.hpp"
 #include "paper_scenes.hpp"
 #include "solver/energy.hpp"
 #include "pendulum_reference.hpp"
@@ -101,13 +103,9 @@ Vec3 quasi_static_stress(const Block& b, const Vec2& pin_offset, const OctagonPe
   const Vec2 inward(-std::sin(theta), std::cos(theta));
   const Vec2 a_c = p.arm * (alpha * tangential + omega * omega * inward);
   const Vec2 force = p.mass * (a_c - Vec2(0.0, -kGravity));
-  Mat2 r;
-  r << std::cos(rotation), -std::sin(rotation), std::sin(rotation), std::cos(rotation);
-  const Vec2 f = r.transpose() * force;
-  Mat2 quarter;
-  quarter << 0.0, -1.0, 1.0, 0.0;
+  const Vec2 f = rotation_matrix(rotation).transpose() * force;
   const Mat2 fx = f * pin_offset.transpose();
-  const Mat2 euler = alpha * quarter * b.material_inertia;
+  const Mat2 euler = alpha * quarter_turn() * b.material_inertia;
   const Mat2 q = 0.5 * (fx + fx.transpose()) - 0.5 * (euler + euler.transpose()) +
                  omega * omega * b.material_inertia;
   return Vec3(q(0, 0), q(1, 1), q(0, 1)) / b.initial_area;
@@ -183,19 +181,16 @@ GainPoint gain_point(const Treatment& t, double dt, double penalty, double durat
   g.penalty = world.penalty;
   const Pin& pin = world.pins[0];
   const Vec2 start = world.blocks[0].moments.centroid - pin.anchor;
-  const double start_angle = std::atan2(start.y(), start.x());
   const double mgl = world.blocks[0].density * world.blocks[0].initial_area * kGravity * start.norm();
   std::optional<double> e0;
-  double swing = 0.0;
+  SwingAngle swing(pin.anchor, world.blocks[0].moments.centroid);
   g.result = run_world(world, [&](const World& w) {
     const EnergyTotals e = scene_energy(w);
     const double stretch = (pin.current - pin.anchor).norm();
     const double excess = e.kinetic + e.potential - 0.5 * w.penalty * stretch * stretch;
     if (!e0) e0 = excess;
     g.gain = std::max(g.gain, (excess - *e0) / mgl);
-    const Vec2 now = w.blocks[0].moments.centroid - pin.anchor;
-    swing += std::remainder(std::atan2(now.y(), now.x()) - start_angle - swing, 2.0 * kPi);
-    g.max_swing = std::max(g.max_swing, std::abs(swing));
+    g.max_swing = std::max(g.max_swing, std::abs(swing.follow(w.blocks[0].moments.centroid)));
   });
   return g;
 }
@@ -207,16 +202,11 @@ PendulumCheck pendulum_check(const Treatment& t, double period) {
   World world = make_world(swinging_octagon_scene(steps, t.value));
   PendulumCheck c;
   c.treatment = std::string(t.name);
-  const Pin& pin = world.pins[0];
-  const Vec2 start = world.blocks[0].moments.centroid - pin.anchor;
-  const double start_angle = std::atan2(start.y(), start.x());
   std::vector<double> times, swings;
-  double swing = 0.0;
+  SwingAngle swing(world.pins[0].anchor, world.blocks[0].moments.centroid);
   c.result = run_world(world, [&](const World& w) {
-    const Vec2 now = w.blocks[0].moments.centroid - pin.anchor;
-    swing += std::remainder(std::atan2(now.y(), now.x()) - start_angle - swing, 2.0 * kPi);
     times.push_back(w.time);
-    swings.push_back(swing);
+    swings.push_back(swing.follow(w.blocks[0].moments.centroid));
   });
   int found = 0;
   for (std::size_t k = 1; k + 1 < swings.size() && found < 2; ++k) {

@@ -107,15 +107,10 @@ SwingRun run_one(const Treatment& t, int steps) {
   const Pin& pin = world.pins[0];
   const Vec2 start = world.blocks[0].moments.centroid - pin.anchor;
   const double arm = start.norm();
-  const double start_angle = std::atan2(start.y(), start.x());
-  double swing = 0.0, max_stretch = 0.0;
+  SwingAngle swing_angle(pin.anchor, world.blocks[0].moments.centroid);
+  double max_stretch = 0.0;
   run.result = run_world(world, [&](const World& w) {
-    const Block& b = w.blocks[0];
-    const Vec2 now = b.moments.centroid - pin.anchor;
-    // Unwrapped: the step's change of angle is below pi (a few hundredths of a rad).
-    double a = std::atan2(now.y(), now.x()) - start_angle - swing;
-    a = std::remainder(a, 2.0 * kPi);
-    swing += a;
+    const double swing = swing_angle.follow(w.blocks[0].moments.centroid);
     const EnergyTotals e = scene_energy(w);
     const double stretch = (pin.current - pin.anchor).norm();
     max_stretch = std::max(max_stretch, stretch);
