@@ -235,7 +235,7 @@ json settings_json(const World& w) {
                                     [](const Block& b) { return !b.fixed; })},
       {"energy_tolerance", c.energy_tolerance},
       {"linear_solver", c.reuse_factor ? "reuse" : "factorise"},
-      {"inertia", w.pseudo_rigid ? "pseudo_rigid" : "shi"},
+      {"inertia", name_in(kInertiaNames, w.pseudo_rigid ? Inertia::PseudoRigid : Inertia::Shi)},
       {"inertia_rule", c.inertia ? "user" : "auto"},
   };
   if (staged) settings["stages"] = stages_json(w.stages);

@@ -144,17 +144,17 @@ ControlSettings read_control(const Field& f, bool staged) {
   }
   if (auto g = f.optional_member("inertia")) {
     const std::string name = g->string();
-    if (name == "pseudo_rigid") {
-      if (!keeps_block_frame(c.rotation_update)) {
+    if (name != "auto") {
+      c.inertia = value_in(kInertiaNames, name);
+      if (!c.inertia) {
+        g->fail("unknown inertia \"" + name + "\" (known: \"auto\", " +
+                quoted_names(kInertiaNames) + ")");
+      }
+      if (*c.inertia == Inertia::PseudoRigid && !keeps_block_frame(c.rotation_update)) {
         g->fail("\"pseudo_rigid\" needs a rotation_update that keeps a block frame "
                 "(\"local_frame\", \"local_frame_as_printed\" or \"finite_rotation\"), got \"" +
                 std::string(rotation_update_name(c.rotation_update)) + "\"");
       }
-      c.inertia = Inertia::PseudoRigid;
-    } else if (name == "shi") {
-      c.inertia = Inertia::Shi;
-    } else if (name != "auto") {
-      g->fail("unknown inertia \"" + name + "\" (known: \"auto\", \"pseudo_rigid\", \"shi\")");
     }
   }
   return c;

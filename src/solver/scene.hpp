@@ -70,6 +70,13 @@ enum class Inertia {
   PseudoRigid,
 };
 
+// The scene and summary names of the inertias (control.inertia; "auto" is the absence of a
+// choice, not a value).
+inline constexpr EnumName<Inertia> kInertiaNames[] = {
+    {Inertia::PseudoRigid, "pseudo_rigid"},
+    {Inertia::Shi, "shi"},
+};
+
 // A block material (issue 5): elastic, or a plastic model of src/materials. The plastic
 // parameters are read only for the plastic models (materials/material.hpp documents them).
 struct Material {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "csv.hpp"
@@ -38,9 +39,8 @@ void best_row(std::ostringstream& md, const Measure& m) {
 // Whether a run used its treatment's default inertia (the study repeats two block-frame
 // treatments with Shi's, which the measures leave out).
 bool runs_default_inertia(const std::string& treatment, const std::string& inertia) {
-  const bool block_frame = treatment == "local_frame" || treatment == "finite_rotation" ||
-                           treatment == "local_frame_as_printed";
-  return block_frame == (inertia == "pseudo_rigid");
+  const std::optional<RotationUpdate> u = value_in(kRotationUpdateNames, treatment);
+  return u && keeps_block_frame(*u) == (inertia == "pseudo_rigid");
 }
 
 // Table 1: the largest |A/A0 - 1| at the end over the three settings.

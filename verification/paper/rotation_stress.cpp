@@ -36,7 +36,9 @@ Vec3 local_stress(const Block& b) { return stress_in_turned_frame(b.stress, b.ro
 // |s| of a stress [sxx, syy, sxy] as a tensor (the shear counted twice).
 double tensor_norm(const Vec3& s) { return std::sqrt(s[0] * s[0] + s[1] * s[1] + 2 * s[2] * s[2]); }
 
-std::string inertia_name(const World& w) { return w.pseudo_rigid ? "pseudo_rigid" : "shi"; }
+std::string inertia_name(const World& w) {
+  return std::string(name_in(kInertiaNames, w.pseudo_rigid ? Inertia::PseudoRigid : Inertia::Shi));
+}
 
 // The runs of a study: every treatment with its default inertia, and the block-frame ones
 // that default to the pseudo-rigid inertia once more with Shi's, to show what it changes.
