@@ -17,13 +17,13 @@ constexpr double kC = 1e6;  // cohesion, Pa
 
 dda::MaterialParameters material(dda::MaterialModel model) {
   dda::MaterialParameters p;
-  p.model = model;
   p.young = 20e9;
   p.poisson = 0.3;
   p.density = 2500.0;
-  p.cohesion = kC;
-  p.friction_angle = 30.0;
-  p.dilation_angle = 30.0;
+  if (model == dda::MaterialModel::MohrCoulomb)
+    p.model_parameters = dda::mohr_coulomb_parameters(kC, 30.0, 30.0);
+  else if (model == dda::MaterialModel::DruckerPrager)
+    p.model_parameters = dda::drucker_prager_parameters(kC, 30.0, 30.0);
   return p;
 }
 
@@ -52,7 +52,7 @@ Case make_case(const std::string& name) {
   if (name == "mc_apex") return {mc, trial_of(3, 2.9, 2.95), Branch::Apex};
   if (name == "mc_tension") {
     auto p = mc;
-    p.tensile_strength = 0.5 * kC;
+    std::get<dda::MohrCoulombParameters>(p.model_parameters).tensile_strength = 0.5 * kC;
     return {p, trial_of(0.8, -0.5, 0), Branch::Tension};
   }
   if (name == "dp_elastic") return {dp, trial_of(-1, -3, -2), Branch::Elastic};

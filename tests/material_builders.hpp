@@ -11,14 +11,43 @@ namespace dda::test {
 
 inline MaterialParameters soil(MaterialModel model, double dilation_deg) {
   MaterialParameters p;
-  p.model = model;
   p.young = 50e6;
   p.poisson = 0.3;
   p.density = 2000.0;
-  p.cohesion = 20e3;
-  p.friction_angle = 30.0;
-  p.dilation_angle = dilation_deg;
+  if (model == MaterialModel::DruckerPrager)
+    p.model_parameters = drucker_prager_parameters(20e3, 30.0, dilation_deg);
+  else if (model == MaterialModel::MohrCoulomb)
+    p.model_parameters = mohr_coulomb_parameters(20e3, 30.0, dilation_deg);
   return p;
+}
+
+// Makes `p` a material of `model`, its own parameters at their defaults (zero strength).
+inline void set_model(MaterialParameters& p, MaterialModel model) {
+  if (model == MaterialModel::DruckerPrager)
+    p.model_parameters = DruckerPragerParameters{};
+  else if (model == MaterialModel::MohrCoulomb)
+    p.model_parameters = MohrCoulombParameters{};
+  else
+    p.model_parameters = ElasticOnly{};
+}
+
+// The model's own parameters of `p` (which must be of that model), to change one.
+inline MohrCoulombParameters& mohr_coulomb_of(MaterialParameters& p) {
+  return std::get<MohrCoulombParameters>(p.model_parameters);
+}
+inline DruckerPragerParameters& drucker_prager_of(MaterialParameters& p) {
+  return std::get<DruckerPragerParameters>(p.model_parameters);
+}
+inline const MohrCoulombParameters& mohr_coulomb_of(const MaterialParameters& p) {
+  return std::get<MohrCoulombParameters>(p.model_parameters);
+}
+inline const DruckerPragerParameters& drucker_prager_of(const MaterialParameters& p) {
+  return std::get<DruckerPragerParameters>(p.model_parameters);
+}
+// The strength of a plastic `p` (to read or change one).
+inline FrictionalStrength& strength_of(MaterialParameters& p) { return *frictional_strength(p); }
+inline const FrictionalStrength& strength_of(const MaterialParameters& p) {
+  return *frictional_strength(p);
 }
 
 inline PathSegment segment(int steps, std::optional<ComponentTarget> xx,

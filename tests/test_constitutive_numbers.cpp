@@ -125,7 +125,7 @@ std::vector<double> steps(double lo, double hi, double h, double extent) {
   return v;
 }
 
-bool perfectly_plastic(const MapSpec& spec) { return spec.params.hardening.empty(); }
+bool perfectly_plastic(const MapSpec& spec) { return frictional_strength(spec.params)->hardening.empty(); }
 
 }  // namespace
 

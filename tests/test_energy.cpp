@@ -46,7 +46,7 @@ RunStats run_quietly(World& world) {
   return run(world, [](const World&, const RunStats&) { return true; });
 }
 
-double mass_of(const Block& b) { return b.density * b.moments.area; }
+double mass_of(const World& w, const Block& b) { return material_of(w, b).density * b.moments.area; }
 
 }  // namespace
 
@@ -79,7 +79,7 @@ TEST_CASE("energy account: friction dissipates mu N times the distance slid", "[
   const Vec2 down(-std::cos(a), -std::sin(a));
   REQUIRE_FALSE(run_quietly(w).diverged);
   const double slid = (w.blocks[1].moments.centroid - c0).dot(down);
-  const double m = mass_of(w.blocks[1]);
+  const double m = mass_of(w, w.blocks[1]);
   const double expected = std::tan(20.0 * M_PI / 180.0) * m * 9.81 * std::cos(a) * slid;
   INFO("slid " << slid << " m, friction " << w.energy.friction_dissipation << " J/m, expected "
                << expected);
@@ -115,7 +115,7 @@ TEST_CASE("energy account: a block dropped on a floor creates no energy", "[ener
   s.blocks.push_back(floor);
   s.blocks.push_back(test::block(test::rectangle(0.2, 0.1, 0.5, 0.5)));
   World w = make_world(s);
-  const double drop = mass_of(w.blocks[1]) * 9.81 * 0.1;
+  const double drop = mass_of(w, w.blocks[1]) * 9.81 * 0.1;
   const RunStats stats = run_quietly(w);
   INFO(stats.message << " dt " << dt << ", remainder max " << w.energy.remainder_max);
   REQUIRE_FALSE(stats.diverged);

@@ -57,9 +57,9 @@ TEST_CASE("Mohr-Coulomb plane-strain biaxial strength s1 = N s3 + 2 c sqrt(N)", 
   for (const double psi : {0.0, 10.0, 30.0}) {
     const MaterialParameters p = soil(psi);
     const MaterialPointRun r = biaxial(p);
-    const double n = flow_factor(p.friction_angle);
+    const double n = flow_factor(test::strength_of(p).friction_angle);
     // Compression magnitudes: major = N minor + 2 c sqrt(N).
-    const double strength = n * kP0 + 2.0 * p.cohesion * std::sqrt(n);
+    const double strength = n * kP0 + 2.0 * test::strength_of(p).cohesion * std::sqrt(n);
     int plastic = 0;
     for (const MaterialPointRow& row : r.rows) {
       // szz = nu (sxx + syy): elastically always, plastically while szz is intermediate
@@ -114,9 +114,9 @@ TEST_CASE("Mohr-Coulomb uniaxial strengths 2 c cos(phi) / (1 -+ sin phi)", "[mat
     MaterialParameters p = soil(10.0);
     // A cut-off below the uniaxial tensile strength (23.1 kPa) caps tension, and changes
     // nothing in compression.
-    if (cutoff) p.tensile_strength = 10e3;
-    const double compressive = 2.0 * p.cohesion * cos_phi / (1.0 - sin_phi);
-    const double tensile = 2.0 * p.cohesion * cos_phi / (1.0 + sin_phi);
+    if (cutoff) test::mohr_coulomb_of(p).tensile_strength = 10e3;
+    const double compressive = 2.0 * test::strength_of(p).cohesion * cos_phi / (1.0 - sin_phi);
+    const double tensile = 2.0 * test::strength_of(p).cohesion * cos_phi / (1.0 + sin_phi);
 
     // sxx = 0 held; syy by strain. szz = nu syy stays intermediate.
     const MaterialPointRun c = run(p, Vec4::Zero(), {segment(100, stress(0.0), strain(-0.01), {})});
@@ -129,7 +129,7 @@ TEST_CASE("Mohr-Coulomb uniaxial strengths 2 c cos(phi) / (1 -+ sin phi)", "[mat
     if (cutoff) {
       CHECK(end.branch == Branch::Tension);
       CHECK(end.active_planes == kTension1);
-      CHECK_THAT(end.stress[kYY], WithinRel(*p.tensile_strength, kDriverTol));
+      CHECK_THAT(end.stress[kYY], WithinRel(*test::mohr_coulomb_of(p).tensile_strength, kDriverTol));
     } else {
       CHECK(end.branch == Branch::Plane);
       CHECK_THAT(end.stress[kYY], WithinRel(tensile, kDriverTol));
@@ -144,7 +144,7 @@ TEST_CASE("Mohr-Coulomb simple shear at zero mean stress with psi = 0 plateaus a
   // Free normal stresses (sxx = syy = 0 held), gxy pushed to 2 %.
   const MaterialPointRun r =
       run(p, Vec4::Zero(), {segment(200, stress(0.0), stress(0.0), strain(0.02))});
-  const double tau = p.cohesion * std::cos(rad(p.friction_angle));
+  const double tau = test::strength_of(p).cohesion * std::cos(rad(test::strength_of(p).friction_angle));
   const MaterialPointRow& end = r.rows.back();
   CHECK(end.branch == Branch::Plane);
   CHECK_THAT(end.stress[kXY], WithinRel(tau, kDriverTol));
@@ -166,7 +166,7 @@ TEST_CASE("Mohr-Coulomb apex under hydrostatic tension at c cot(phi)", "[materia
   CHECK(saw_edge);
   const MaterialPointRow& end = r.rows.back();
   CHECK(end.branch == Branch::Apex);
-  const double apex = p.cohesion / std::tan(rad(p.friction_angle));
+  const double apex = test::strength_of(p).cohesion / std::tan(rad(test::strength_of(p).friction_angle));
   // The apex stress is set directly from c, so it is exact to round-off (1e-14).
   CHECK_THAT(end.stress[kXX], WithinRel(apex, 1e-14));
   CHECK_THAT(end.stress[kYY], WithinRel(apex, 1e-14));
@@ -183,7 +183,7 @@ TEST_CASE("Mohr-Coulomb with zero dilation: no return beyond the apex, said so",
   CHECK(r.status.suggested_fraction == 0.0);
   // With a cut-off below the apex the same step returns to s1 = s2 = T (szz lags).
   MaterialParameters cut = p;
-  cut.tensile_strength = 5e3;
+  test::mohr_coulomb_of(cut).tensile_strength = 5e3;
   const MaterialResult t = integrate(cut, {}, {0.01, 0.01, 0.0});
   REQUIRE(t.status.converged);
   CHECK(t.branch == Branch::Tension);
@@ -201,7 +201,7 @@ TEST_CASE("Mohr-Coulomb oedometric compression runs on the left edge, on both pl
   p.poisson = 0.2;
   const MaterialPointRun r =
       run(p, {-kP0, -kP0, -kP0, 0.0}, {segment(100, strain(0.0), strain(-0.1), strain(0.0))});
-  const MohrCoulombAngles a = mohr_coulomb_angles(p.friction_angle, p.dilation_angle);
+  const MohrCoulombAngles a = mohr_coulomb_angles(test::strength_of(p).friction_angle, test::strength_of(p).dilation_angle);
   int on_edge = 0;
   for (const MaterialPointRow& row : r.rows) {
     if (row.branch != Branch::Edge) continue;
@@ -210,7 +210,7 @@ TEST_CASE("Mohr-Coulomb oedometric compression runs on the left edge, on both pl
     const double sx = row.stress[kXX], sy = row.stress[kYY], sz = row.stress[kZZ];
     // Both planes at the cohesion, each written out from the catalogue's criterion;
     // exact to round-off of the return (1e-12 of the stresses).
-    const double strength = 2.0 * p.cohesion * a.cos_phi;
+    const double strength = 2.0 * test::strength_of(p).cohesion * a.cos_phi;
     CHECK_THAT((sx - sy) + (sx + sy) * a.sin_phi, WithinRel(strength, 1e-12 * -sy / strength));
     CHECK_THAT((sz - sy) + (sz + sy) * a.sin_phi, WithinRel(strength, 1e-12 * -sy / strength));
     // The plastic flow of an edge has a zz part: szz is no longer nu (sxx + syy).
@@ -222,11 +222,11 @@ TEST_CASE("Mohr-Coulomb oedometric compression runs on the left edge, on both pl
 
 TEST_CASE("Mohr-Coulomb cohesion softening follows the table", "[materials]") {
   MaterialParameters p = soil(10.0);
-  p.hardening = {{0.0, 20e3}, {0.01, 10e3}, {0.02, 5e3}};
+  test::strength_of(p).hardening = {{0.0, 20e3}, {0.01, 10e3}, {0.02, 5e3}};
   const MaterialPointRun r = biaxial(p, 400, -0.06);
-  const CohesionLaw law(p.hardening, p.cohesion);
-  const MohrCoulombAngles a = mohr_coulomb_angles(p.friction_angle, p.dilation_angle);
-  const double n = flow_factor(p.friction_angle);
+  const CohesionLaw law(test::strength_of(p).hardening, test::strength_of(p).cohesion);
+  const MohrCoulombAngles a = mohr_coulomb_angles(test::strength_of(p).friction_angle, test::strength_of(p).dilation_angle);
+  const double n = flow_factor(test::strength_of(p).friction_angle);
   int plastic = 0;
   for (const MaterialPointRow& row : r.rows) {
     if (row.branch != Branch::Plane) continue;
@@ -253,10 +253,10 @@ TEST_CASE("Mohr-Coulomb cohesion softening follows the table", "[materials]") {
 
 TEST_CASE("Mohr-Coulomb cohesion hardening follows the table", "[materials]") {
   MaterialParameters p = soil(20.0);
-  p.hardening = {{0.0, 20e3}, {0.005, 30e3}, {0.05, 35e3}};
+  test::strength_of(p).hardening = {{0.0, 20e3}, {0.005, 30e3}, {0.05, 35e3}};
   const MaterialPointRun r = biaxial(p, 200, -0.04);
-  const MohrCoulombAngles a = mohr_coulomb_angles(p.friction_angle, p.dilation_angle);
-  const double n = flow_factor(p.friction_angle);
+  const MohrCoulombAngles a = mohr_coulomb_angles(test::strength_of(p).friction_angle, test::strength_of(p).dilation_angle);
+  const double n = flow_factor(test::strength_of(p).friction_angle);
   int plastic = 0;
   for (const MaterialPointRow& row : r.rows) {
     if (row.branch != Branch::Plane) continue;

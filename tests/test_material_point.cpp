@@ -18,7 +18,7 @@ namespace {
 
 MaterialParameters elastic(PlaneMode plane) {
   MaterialParameters p;
-  p.model = MaterialModel::Elastic;
+  test::set_model(p, MaterialModel::Elastic);
   p.young = 2e9;
   p.poisson = 0.2;
   p.density = 2500.0;
@@ -65,9 +65,9 @@ TEST_CASE("elastic material: plane strain and plane stress by hand", "[materials
 
 TEST_CASE("plastic models refuse plane stress", "[materials]") {
   MaterialParameters p = elastic(PlaneMode::Stress);
-  p.model = MaterialModel::MohrCoulomb;
-  p.cohesion = 1e6;
-  p.friction_angle = 30.0;
+  test::set_model(p, MaterialModel::MohrCoulomb);
+  test::strength_of(p).cohesion = 1e6;
+  test::strength_of(p).friction_angle = 30.0;
   const MaterialResult r = integrate(p, {}, {1e-3, 0.0, 0.0});
   CHECK_FALSE(r.status.converged);
   CHECK(r.status.suggested_fraction == 0.0);
@@ -119,7 +119,7 @@ TEST_CASE("material-point Newton converges quadratically with the consistent tan
   const double scale = 1e5;
   for (const MaterialModel model : {MaterialModel::DruckerPrager, MaterialModel::MohrCoulomb}) {
     MaterialParameters p = test::soil(model, 10.0);
-    p.hardening = {{0.0, 20e3}, {0.05, 40e3}};
+    test::strength_of(p).hardening = {{0.0, 20e3}, {0.05, 40e3}};
     const std::vector<PathSegment> path = {segment(10, ComponentTarget{Control::Stress, -1e5},
                                                    ComponentTarget{Control::Strain, -0.02},
                                                    ComponentTarget{Control::Stress, 3e4})};

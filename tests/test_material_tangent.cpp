@@ -9,6 +9,7 @@
 #include "materials/finite_difference.hpp"
 #include "materials/material.hpp"
 #include "materials/yield_mohr_coulomb.hpp"
+#include "material_builders.hpp"
 
 using namespace dda;
 
@@ -25,14 +26,14 @@ constexpr double kTangentTol = 1e-6;
 // cohesion hardening from 1 to 2 MPa over eps_p = 0.05 so that no tangent is degenerate.
 MaterialParameters rock(MaterialModel model) {
   MaterialParameters p;
-  p.model = model;
+  test::set_model(p, model);
   p.young = 1e9;
   p.poisson = 0.25;
   p.density = 2500.0;
-  p.cohesion = 1e6;
-  p.friction_angle = 30.0;
-  p.dilation_angle = 10.0;
-  p.hardening = {{0.0, 1e6}, {0.05, 2e6}};
+  test::strength_of(p).cohesion = 1e6;
+  test::strength_of(p).friction_angle = 30.0;
+  test::strength_of(p).dilation_angle = 10.0;
+  test::strength_of(p).hardening = {{0.0, 1e6}, {0.05, 2e6}};
   return p;
 }
 
@@ -92,7 +93,7 @@ TEST_CASE("Mohr-Coulomb tangent against finite differences on every branch", "[m
   // Oedometric compression: the trial has sxx = szz exactly, a tie in the principal order.
   // It yields only if sin(phi) < 1 - 2 nu (test_material_mohr_coulomb.cpp), so phi = 20.
   MaterialParameters mc20 = mc;
-  mc20.friction_angle = 20.0;
+  test::strength_of(mc20).friction_angle = 20.0;
   check_point(mc20, {"left edge, trial sxx = szz",
                      {0.0, -2e-2, 0.0},
                      iso(-0.1e6),
@@ -102,7 +103,7 @@ TEST_CASE("Mohr-Coulomb tangent against finite differences on every branch", "[m
 
 TEST_CASE("Mohr-Coulomb with tension cut-off: tangent against finite differences", "[materials]") {
   MaterialParameters mc = rock(MaterialModel::MohrCoulomb);
-  mc.tensile_strength = 0.5e6;
+  test::mohr_coulomb_of(mc).tensile_strength = 0.5e6;
   const Point points[] = {
       {"tension plane", {-0.8e-3, 3.8e-3, 2.1e-3}, iso(0.3e6), Branch::Tension, kTension1},
       {"tension and main plane",
@@ -144,8 +145,8 @@ TEST_CASE("Drucker-Prager tangent against finite differences on cone and apex", 
   for (const Point& pt : points) check_point(dp, pt);
   // Associated, and on a softening segment (H = -2e7 Pa).
   MaterialParameters soft = dp;
-  soft.dilation_angle = 30.0;
-  soft.hardening = {{0.0, 1e6}, {0.05, 0.0}};
+  test::strength_of(soft).dilation_angle = 30.0;
+  test::strength_of(soft).hardening = {{0.0, 1e6}, {0.05, 0.0}};
   check_point(
       soft, {"cone, associated, softening", {-3e-3, 2.7e-3, -3.4e-3}, iso(0.4e6), Branch::Cone, 0});
 }
@@ -158,7 +159,7 @@ TEST_CASE("Vanishing tangents vanish in finite differences too", "[materials]") 
   MaterialParameters mc = rock(MaterialModel::MohrCoulomb);
   MaterialParameters dp = rock(MaterialModel::DruckerPrager);
   MaterialParameters cut = mc;
-  cut.tensile_strength = 0.5e6;
+  test::mohr_coulomb_of(cut).tensile_strength = 0.5e6;
   struct Case {
     const MaterialParameters* p;
     Point pt;
@@ -219,9 +220,9 @@ TEST_CASE("Tangents against finite differences over random states", "[materials]
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (const Setup& s : setups) {
     MaterialParameters p = rock(s.model);
-    p.dilation_angle = s.dilation;
-    p.tensile_strength = s.tension;
-    p.hardening = {{0.0, 1e6}, {0.02, 2e6}, {0.05, 1.5e6}};  // hardening, then softening
+    test::strength_of(p).dilation_angle = s.dilation;
+    if (s.tension) test::mohr_coulomb_of(p).tensile_strength = s.tension;  // Mohr-Coulomb only
+    test::strength_of(p).hardening = {{0.0, 1e6}, {0.02, 2e6}, {0.05, 1.5e6}};  // hardening, then softening
     const double floor = 1e-3 * elastic_scale(p);
     // A wider spread of szz with a cut-off reaches its corners with the edges more often.
     const double zz_spread = s.tension ? 5e6 : 2e6;

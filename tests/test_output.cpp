@@ -91,6 +91,8 @@ Block make_block(Polygon vertices, double rotation, Vec3 strain, Vec3 local_stra
 // that only a full-precision write reads back exactly.
 World make_test_world(const Scene& scene) {
   World w;
+  // One material for both blocks, massless (density 0): the output is checked, not the mass.
+  w.materials.push_back(WorldMaterial{});
   w.blocks.push_back(make_block({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, std::numbers::pi / 2, Vec3(1e-3, 0, 0),
                                 Vec3(0, 1e-3, 0), Vec3(-1.5e5, 2.0e4 / 3.0, 0.1),
                                 Vec3(0.1, -0.2, 1.0 / 7.0)));

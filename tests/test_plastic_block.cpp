@@ -13,6 +13,7 @@
 #include "solver/run.hpp"
 #include "solver/step.hpp"
 #include "solver/world.hpp"
+#include "material_builders.hpp"
 
 using namespace dda;
 
@@ -55,10 +56,13 @@ Platen platen_test(MaterialModel model, bool pinned = false, double dilation = k
   // (20 kg/m^3: 2 M/dt^2 = 4e5 N/m against k ~ 1e10 N/m) make rho ~ 4e-5.
   s.materials[0] = elastic_material("rock", 20.0, 1e10, 0.25);
   Material specimen = elastic_material("soil", 20.0, 1e10, 0.25);
-  specimen.model = model;
-  specimen.cohesion = kCohesion;
-  specimen.friction_angle = kFriction;
-  specimen.dilation_angle = dilation;  // = friction: associated, a symmetric tangent
+  test::set_model(specimen.parameters, model);
+  if (is_plastic(model)) {
+    test::strength_of(specimen.parameters).cohesion = kCohesion;
+    test::strength_of(specimen.parameters).friction_angle = kFriction;
+    // = friction: associated, a symmetric tangent
+    test::strength_of(specimen.parameters).dilation_angle = dilation;
+  }
   s.materials.push_back(specimen);
   BlockSpec base = test::block(test::rectangle(-1.0, -1.0, 3.0, 1.0));
   base.fixed = true;
@@ -214,9 +218,11 @@ TEST_CASE("a Mohr-Coulomb block that never yields swings like the elastic block"
   auto swing = [](MaterialModel model) {
     Scene s = test::base_scene(400, 0.01);
     Material m = elastic_material("rock", 2700.0, 1e9, 0.25);
-    m.model = model;
-    m.cohesion = 1e9;
-    m.friction_angle = 30.0;
+    test::set_model(m.parameters, model);
+    if (is_plastic(model)) {
+      test::strength_of(m.parameters).cohesion = 1e9;
+      test::strength_of(m.parameters).friction_angle = 30.0;
+    }
     s.materials[0] = m;
     s.blocks.push_back(test::block(test::rectangle(0.0, 0.0, 2.0, 0.5)));
     s.blocks[0].initial_stress = Vec3(2e5, -1e5, 5e4);

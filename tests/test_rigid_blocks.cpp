@@ -117,7 +117,7 @@ TEST_CASE("rigid block: a deformable block of growing stiffness moves as the rig
     std::vector<double> distance;
     for (double young : {1e8, 1e10, 1e12, 1e14}) {
       Scene deformable = base;
-      deformable.materials[0].young = young;
+      deformable.materials[0].parameters.young = young;
       distance.push_back(largest_distance(trajectory(deformable, moving), reference));
     }
     for (std::size_t k = 1; k < distance.size(); ++k) {
@@ -150,7 +150,7 @@ TEST_CASE("rigid block: an unloaded spinning block moves as the rigid one at eve
   const std::vector<Polygon> reference = trajectory(rigid, 0);
   for (double young : {1e8, 1e14}) {
     Scene deformable = thrown_spinning_bar();
-    deformable.materials[0].young = young;
+    deformable.materials[0].parameters.young = young;
     deformable.control.inertia = Inertia::Shi;
     CHECK(largest_distance(trajectory(deformable, 0), reference) < 1e-13);
   }
@@ -170,7 +170,7 @@ TEST_CASE("rigid block: a spinning deformable block tends to the rigid one as E 
   int k = 0;
   for (double young : {1e8, 1e14}) {
     Scene deformable = thrown_spinning_bar();
-    deformable.materials[0].young = young;
+    deformable.materials[0].parameters.young = young;
     gap[k++] = largest_distance(trajectory(deformable, 0), reference);
   }
   INFO("gap at E 1e8: " << gap[0] << " m; at 1e14: " << gap[1] << " m");

@@ -104,7 +104,7 @@ TEST_CASE("pseudo-rigid inertia: a spinning block keeps its angular momentum and
   // moment) is off by the full 2e-4.
   World w = make_world(spinning_rectangle(1e8, 0.005, 1.0));
   const double l0 = angular_momentum(w.blocks[0]);
-  const double m0 = w.blocks[0].density * w.blocks[0].moments.area;
+  const double m0 = material_of(w, w.blocks[0]).density * w.blocks[0].moments.area;
   REQUIRE_FALSE(run(w, [](const World&, const RunStats&) { return true; }).diverged);
   const Block& b = w.blocks[0];
   INFO("L / L0 - 1 = " << angular_momentum(b) / l0 - 1.0 << ", omega " << b.velocity[kR0]);
@@ -162,10 +162,10 @@ Scene swinging_bar(double dt, double duration, double young, double penalty) {
 reference::PseudoRigidBody reference_body(const World& w) {
   const Block& b = w.blocks[0];
   reference::PseudoRigidBody body;
-  body.mass = b.density * b.initial_area;
+  body.mass = material_of(w, b).density * b.initial_area;
   body.area = b.initial_area;
   body.inertia = b.material_inertia;
-  body.elastic = b.elastic;
+  body.elastic = elastic_of(w, b);
   body.gravity = w.gravity;
   body.pinned = true;
   body.pin_offset = w.pins[0].initial - b.initial_centroid;

@@ -124,7 +124,7 @@ TEST_CASE("local_frame: a pre-strained block turned rigidly keeps its local stra
       CHECK(b.moments.centroid.norm() <= 1e-15);
       // The stress turns with the block: D e^ turned by theta. The summed angle's error
       // (3e-14 rad) moves components of ~1e6 Pa by ~1e-7 Pa: 1e-6.
-      const Vec3 s_local = b.elastic * Vec3(kPreStrain, 0.0, 0.0);
+      const Vec3 s_local = elastic_of(w, b) * Vec3(kPreStrain, 0.0, 0.0);
       const double c = std::cos(theta);
       const double s = std::sin(theta);
       CHECK_THAT(b.stress[0], WithinAbs(s_local[0] * c * c + s_local[1] * s * s, 1e-6));

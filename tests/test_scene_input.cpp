@@ -19,6 +19,7 @@
 #include "io/scene_reader.hpp"
 #include "kinematics/polygon.hpp"
 #include "solver/world.hpp"
+#include "material_builders.hpp"
 
 namespace fs = std::filesystem;
 
@@ -504,13 +505,13 @@ TEST_CASE("a valid scene lands in the Scene struct field by field", "[scene][inp
   const dda::Material& rock = scene.materials[scene.blocks[0].material];
   const dda::Material& clay = scene.materials[scene.blocks[1].material];
   CHECK(rock.name == "rock");
-  CHECK(rock.density == 2700.0);
-  CHECK(rock.young == 1e9);
-  CHECK(rock.poisson == 0.25);
+  CHECK(rock.parameters.density == 2700.0);
+  CHECK(rock.parameters.young == 1e9);
+  CHECK(rock.parameters.poisson == 0.25);
   CHECK(clay.name == "clay");
-  CHECK(clay.density == 1800.0);
-  CHECK(clay.young == 5e7);
-  CHECK(clay.poisson == 0.4);
+  CHECK(clay.parameters.density == 1800.0);
+  CHECK(clay.parameters.young == 5e7);
+  CHECK(clay.parameters.poisson == 0.4);
 
   const dda::BlockSpec& base = scene.blocks[0];
   CHECK(base.vertices == dda::Polygon{{0, 0}, {4, 0}, {4, 1}, {0, 1}});
@@ -548,25 +549,25 @@ TEST_CASE("plastic materials land in the Material struct, defaults where left ou
   const dda::Material& rock = scene.materials[1];
   const dda::Material& soil = scene.materials[2];
   CHECK(soil.name == "soil");
-  CHECK(soil.model == dda::MaterialModel::MohrCoulomb);
-  CHECK(soil.density == 2000.0);
-  CHECK(soil.young == 5e7);
-  CHECK(soil.poisson == 0.3);
-  CHECK(soil.cohesion == 2e4);
-  CHECK(soil.friction_angle == 32.0);
-  CHECK(soil.dilation_angle == 8.0);
-  REQUIRE(soil.tensile_strength.has_value());
-  CHECK(*soil.tensile_strength == 1e4);
-  REQUIRE(soil.hardening.size() == 3);
-  CHECK(soil.hardening[1].eps_p == 0.01);
-  CHECK(soil.hardening[1].cohesion == 3e4);
-  CHECK(soil.hardening[2].cohesion == 1e4);
-  CHECK(clay.model == dda::MaterialModel::DruckerPrager);
-  CHECK(clay.match == dda::DruckerPragerMatch::Inner);
-  CHECK(clay.dilation_angle == 22.0);
-  CHECK_FALSE(clay.tensile_strength.has_value());
-  CHECK(rock.model == dda::MaterialModel::Elastic);
-  CHECK(rock.hardening.empty());
+  CHECK(soil.parameters.model() == dda::MaterialModel::MohrCoulomb);
+  CHECK(soil.parameters.density == 2000.0);
+  CHECK(soil.parameters.young == 5e7);
+  CHECK(soil.parameters.poisson == 0.3);
+  CHECK(dda::test::strength_of(soil.parameters).cohesion == 2e4);
+  CHECK(dda::test::strength_of(soil.parameters).friction_angle == 32.0);
+  CHECK(dda::test::strength_of(soil.parameters).dilation_angle == 8.0);
+  REQUIRE(dda::test::mohr_coulomb_of(soil.parameters).tensile_strength.has_value());
+  CHECK(*dda::test::mohr_coulomb_of(soil.parameters).tensile_strength == 1e4);
+  REQUIRE(dda::test::strength_of(soil.parameters).hardening.size() == 3);
+  CHECK(dda::test::strength_of(soil.parameters).hardening[1].eps_p == 0.01);
+  CHECK(dda::test::strength_of(soil.parameters).hardening[1].cohesion == 3e4);
+  CHECK(dda::test::strength_of(soil.parameters).hardening[2].cohesion == 1e4);
+  CHECK(clay.parameters.model() == dda::MaterialModel::DruckerPrager);
+  CHECK(dda::test::drucker_prager_of(clay.parameters).match == dda::DruckerPragerMatch::Inner);
+  CHECK(dda::test::strength_of(clay.parameters).dilation_angle == 22.0);
+  CHECK(rock.parameters.model() == dda::MaterialModel::Elastic);
+  // (Clay's tension cut-off and rock's hardening cannot be there: the Drucker-Prager and
+  // elastic parameter structs have no such fields.)
   CHECK(scene.blocks[0].material == 2);
 
   // Left out: dilation_angle 0, match "plane_strain", no tension cut-off, no hardening.
@@ -575,21 +576,26 @@ TEST_CASE("plastic materials land in the Material struct, defaults where left ou
   minimal = without(minimal, "/materials/soil/hardening");
   minimal = without(minimal, "/materials/clay/match");
   const dda::Scene defaults = dda::parse_scene_text(minimal, "minimal.json");
-  CHECK(defaults.materials[2].dilation_angle == 0.0);
-  CHECK_FALSE(defaults.materials[2].tensile_strength.has_value());
-  CHECK(defaults.materials[2].hardening.empty());
-  CHECK(defaults.materials[0].match == dda::DruckerPragerMatch::PlaneStrain);
+  CHECK(dda::test::strength_of(defaults.materials[2].parameters).dilation_angle == 0.0);
+  CHECK_FALSE(dda::test::mohr_coulomb_of(defaults.materials[2].parameters).tensile_strength.has_value());
+  CHECK(dda::test::strength_of(defaults.materials[2].parameters).hardening.empty());
+  CHECK(dda::test::drucker_prager_of(defaults.materials[0].parameters).match ==
+        dda::DruckerPragerMatch::PlaneStrain);
   // Every match is read by its name; a tension cut-off of 0 (no tension) is allowed.
   for (const auto& [name, value] : {std::pair{"outer", dda::DruckerPragerMatch::Outer},
                                     std::pair{"inner", dda::DruckerPragerMatch::Inner},
                                     std::pair{"plane_strain", dda::DruckerPragerMatch::PlaneStrain}}) {
     INFO(name);
-    CHECK(dda::parse_scene_text(with(kPlasticScene, "/materials/clay/match", name), "m.json")
-              .materials[0]
+    CHECK(dda::test::drucker_prager_of(
+              dda::parse_scene_text(with(kPlasticScene, "/materials/clay/match", name), "m.json")
+                  .materials[0]
+                  .parameters)
               .match == value);
   }
-  CHECK(*dda::parse_scene_text(with(kPlasticScene, "/materials/soil/tensile_strength", 0), "t.json")
-             .materials[2]
+  CHECK(*dda::test::mohr_coulomb_of(
+             dda::parse_scene_text(with(kPlasticScene, "/materials/soil/tensile_strength", 0), "t.json")
+                 .materials[2]
+                 .parameters)
              .tensile_strength == 0.0);
 }
 
@@ -625,7 +631,7 @@ TEST_CASE("rigid: a block's key overrides its material's, and the world follows"
   CHECK_FALSE(world.blocks[2].rigid);
   // Six slots of d per free block, rigid or not (the solvers see fewer).
   CHECK(world.dof_count == 18);
-  CHECK(world.blocks[1].elastic == dda::Mat3::Zero());
+  CHECK(dda::elastic_of(world, world.blocks[1]) == dda::Mat3::Zero());
   // Left out, "rigid" is false.
   CHECK_FALSE(dda::parse_scene_text(kValidScene, "valid.json").materials[0].rigid);
 }

@@ -13,6 +13,7 @@
 #include "solver/run.hpp"
 #include "solver/strength_reduction.hpp"
 #include "solver/world.hpp"
+#include "material_builders.hpp"
 
 namespace {
 
@@ -90,18 +91,18 @@ TEST_CASE("strength reduction divides tan(phi), cohesion and tensile strength by
   CHECK(r.kind == JointLawKind::CoulombSlip);
 
   MaterialParameters m;
-  m.model = MaterialModel::MohrCoulomb;
-  m.cohesion = 1e6;
-  m.friction_angle = 40.0;
-  m.dilation_angle = 40.0;
-  m.tensile_strength = 2e5;
-  m.hardening = {{0.0, 1e6}, {0.01, 5e5}};
+  test::set_model(m, MaterialModel::MohrCoulomb);
+  test::strength_of(m).cohesion = 1e6;
+  test::strength_of(m).friction_angle = 40.0;
+  test::strength_of(m).dilation_angle = 40.0;
+  test::mohr_coulomb_of(m).tensile_strength = 2e5;
+  test::strength_of(m).hardening = {{0.0, 1e6}, {0.01, 5e5}};
   const MaterialParameters rm = reduced_material(m, 2.0);
-  CHECK(std::tan(deg(rm.friction_angle)) == Approx(std::tan(deg(40.0)) / 2.0).epsilon(1e-14));
-  CHECK(rm.dilation_angle == rm.friction_angle);  // associated flow stays within psi <= phi
-  CHECK(rm.cohesion == 5e5);
-  CHECK(rm.hardening[1].cohesion == 2.5e5);
-  CHECK(*rm.tensile_strength == 1e5);
+  CHECK(std::tan(deg(test::strength_of(rm).friction_angle)) == Approx(std::tan(deg(40.0)) / 2.0).epsilon(1e-14));
+  CHECK(test::strength_of(rm).dilation_angle == test::strength_of(rm).friction_angle);  // associated flow stays within psi <= phi
+  CHECK(test::strength_of(rm).cohesion == 5e5);
+  CHECK(test::strength_of(rm).hardening[1].cohesion == 2.5e5);
+  CHECK(*test::mohr_coulomb_of(rm).tensile_strength == 1e5);
 }
 
 TEST_CASE("a Coulomb slip bond slides with its cohesion and breaks only in tension", "[fos]") {
@@ -338,9 +339,9 @@ TEST_CASE("trials run on two threads give exactly what they give one at a time",
   // deterministic, so the threaded results must equal the serial ones bit for bit.
   Material rock;
   rock.name = "rock";
-  rock.density = 2500.0;
-  rock.young = 1e9;
-  rock.poisson = 0.25;
+  rock.parameters.density = 2500.0;
+  rock.parameters.young = 1e9;
+  rock.parameters.poisson = 0.25;
   Scene scene = bench::brick_wall_scene(1000, rock);
   scene.control.steps = 3;
   const Consolidation c = consolidate(scene, 1.0, [](const World&, const RunStats&) { return true; });

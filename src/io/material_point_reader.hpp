@@ -22,7 +22,7 @@ struct MaterialPointSpec {
   Vec4 initial_stress = Vec4::Zero();  // sxx, syy, szz, sxy (Pa), tension positive
   std::vector<PathSegment> path;       // at least one segment, each with steps >= 1
 
-  MaterialParameters parameters() const { return parameters_of(material, plane); }
+  const MaterialParameters& parameters() const { return material.parameters; }
 };
 
 // Reads and validates a spec file. Throws InputError.

@@ -115,40 +115,58 @@ Material read_material(const std::string& name, const Field& f, PlaneMode plane)
 
   Material m;
   m.name = name;
-  m.model = *model;
-  m.density = within_limit(f.member("density"), positive_number(f.member("density")),
+  MaterialParameters& p = m.parameters;
+  p.plane = plane;
+  p.density = within_limit(f.member("density"), positive_number(f.member("density")),
                            kLargestDensity, "kg/m^3");
-  m.young = within_limit(f.member("young"), positive_number(f.member("young")), kLargestStress, "Pa");
+  p.young = within_limit(f.member("young"), positive_number(f.member("young")), kLargestStress, "Pa");
   // The bounds keep the elastic matrix positive definite (bulk and shear moduli positive).
-  m.poisson = number_in_range(f.member("poisson"), -1.0, true, 0.5, true,
+  p.poisson = number_in_range(f.member("poisson"), -1.0, true, 0.5, true,
                               "greater than -1 and less than 0.5");
-  if (is_plastic(m.model)) {
-    // Types here; ranges and the rules between parameters are validate_material's.
-    m.cohesion = within_limit(f.member("cohesion"), f.member("cohesion").number(), kLargestStress, "Pa");
-    m.friction_angle = f.member("friction_angle").number();
+  // Types here; ranges and the rules between parameters are validate_material's.
+  auto read_strength = [&f](FrictionalStrength& s) {
+    s.cohesion = within_limit(f.member("cohesion"), f.member("cohesion").number(), kLargestStress, "Pa");
+    s.friction_angle = f.member("friction_angle").number();
     // Default 0: no plastic dilation, the usual choice for soils and rock masses, where
     // associated flow (dilation = friction) overstates the volume increase at failure.
-    if (auto g = f.optional_member("dilation_angle")) m.dilation_angle = g->number();
-    if (auto g = f.optional_member("tensile_strength")) {
-      m.tensile_strength = within_limit(*g, g->number(), kLargestStress, "Pa");
+    if (auto g = f.optional_member("dilation_angle")) s.dilation_angle = g->number();
+    if (auto g = f.optional_member("hardening")) s.hardening = read_hardening(*g);
+  };
+  switch (*model) {
+    case MaterialModel::Elastic:
+      p.model_parameters = ElasticOnly{};
+      break;
+    case MaterialModel::DruckerPrager: {
+      DruckerPragerParameters dp;
+      read_strength(dp);
+      if (auto g = f.optional_member("match")) {
+        const std::string match_text = g->string();
+        const std::optional<DruckerPragerMatch> match = parse_match(match_text);
+        if (!match) g->fail(unknown_match(match_text).message);
+        dp.match = *match;
+      }
+      p.model_parameters = std::move(dp);
+      break;
     }
-    if (auto g = f.optional_member("hardening")) m.hardening = read_hardening(*g);
-    if (auto g = f.optional_member("match")) {
-      const std::string match_text = g->string();
-      const std::optional<DruckerPragerMatch> match = parse_match(match_text);
-      if (!match) g->fail(unknown_match(match_text).message);
-      m.match = *match;
+    case MaterialModel::MohrCoulomb: {
+      MohrCoulombParameters mc;
+      read_strength(mc);
+      if (auto g = f.optional_member("tensile_strength")) {
+        mc.tensile_strength = within_limit(*g, g->number(), kLargestStress, "Pa");
+      }
+      p.model_parameters = std::move(mc);
+      break;
     }
   }
-  if (const std::optional<ParameterError> e = validate_material(parameters_of(m, plane))) {
+  if (const std::optional<ParameterError> e = validate_material(p)) {
     place_of(f, e->key).fail(e->message);
   }
   if (auto g = f.optional_member("rigid")) {
     m.rigid = g->boolean();
     // A rigid block has no strain, so a yield surface would never be reached: asking for
     // both is a contradiction, not something to ignore silently.
-    if (m.rigid && is_plastic(m.model)) {
-      g->fail("a rigid material cannot be plastic (\"" + std::string(model_name(m.model)) +
+    if (m.rigid && is_plastic(p.model())) {
+      g->fail("a rigid material cannot be plastic (\"" + std::string(model_name(p.model())) +
               "\"): a rigid block has no strain to yield; use \"model\": \"elastic\"");
     }
   }

@@ -431,7 +431,7 @@ void check_rigid_block(const Field& f, const BlockSpec& b, const Material& m) {
   if (!is_rigid(b, m)) return;
   const std::string why =
       b.rigid.has_value() ? "the block is rigid" : "its material \"" + m.name + "\" is rigid";
-  if (is_plastic(m.model)) {
+  if (is_plastic(m.parameters.model())) {
     f.member("rigid").fail("a rigid block cannot be of a plastic material (\"" + m.name +
                            "\"): it has no strain to yield; give it an elastic material");
   }
@@ -447,11 +447,11 @@ void check_rigid_block(const Field& f, const BlockSpec& b, const Material& m) {
 // to (Mohr-Coulomb). The same test as `dda material-point`'s (material_point_reader.cpp):
 // a return at zero strain from the block's start state (szz = nu (sxx + syy), as
 // make_world builds it) must stay elastic.
-void check_plastic_start(const Field& f, const BlockSpec& b, const Material& m, PlaneMode plane) {
-  if (!is_plastic(m.model) || b.fixed) return;
+void check_plastic_start(const Field& f, const BlockSpec& b, const Material& m) {
+  if (!is_plastic(m.parameters.model()) || b.fixed) return;
   const Vec3& s0 = b.initial_stress;
-  const Vec4 start(s0[0], s0[1], m.poisson * (s0[0] + s0[1]), s0[2]);
-  const MaterialResult r = integrate(parameters_of(m, plane), MaterialState{}, Vec3::Zero(), start);
+  const Vec4 start(s0[0], s0[1], m.parameters.poisson * (s0[0] + s0[1]), s0[2]);
+  const MaterialResult r = integrate(m.parameters, MaterialState{}, Vec3::Zero(), start);
   const Field place = b.initial_stress == Vec3::Zero() ? f.member("material") : f.member("initial_stress");
   if (!r.status.converged) place.fail("the material \"" + m.name + "\" cannot start here: " + r.status.reason);
   if (r.branch != Branch::Elastic) {
@@ -464,7 +464,7 @@ void check_plastic_start(const Field& f, const BlockSpec& b, const Material& m, 
   }
 }
 
-BlockSpec read_block(const Field& f, const std::vector<Material>& materials, PlaneMode plane) {
+BlockSpec read_block(const Field& f, const std::vector<Material>& materials) {
   f.expect_keys({"vertices", "material", "fixed", "velocity", "initial_stress", "rigid"});
   BlockSpec b;
   b.vertices = read_polygon(f.member("vertices"));
@@ -478,7 +478,7 @@ BlockSpec read_block(const Field& f, const std::vector<Material>& materials, Pla
   }
   if (auto g = f.optional_member("rigid")) b.rigid = g->boolean();
   check_rigid_block(f, b, materials[static_cast<std::size_t>(b.material)]);
-  check_plastic_start(f, b, materials[static_cast<std::size_t>(b.material)], plane);
+  check_plastic_start(f, b, materials[static_cast<std::size_t>(b.material)]);
   return b;
 }
 
@@ -719,7 +719,7 @@ Scene read_scene(const Field& root, const std::string& source) {
   const std::vector<Field> block_fields =
       root.member("blocks").elements(1, "list at least one block");
   for (const Field& b : block_fields) {
-    scene.blocks.push_back(read_block(b, scene.materials, scene.plane));
+    scene.blocks.push_back(read_block(b, scene.materials));
   }
   check_no_overlap(block_fields, scene.blocks);
   check_coordinate_precision(block_fields, scene.blocks, scene.control);

@@ -24,6 +24,7 @@ Mat3 elastic_matrix(double young, double poisson, PlaneMode plane) {
 ElasticModuli elastic_moduli(double young, double poisson) {
   assert(young > 0.0 && poisson > -1.0 && poisson < 0.5);
   ElasticModuli m;
+  m.young = young;
   m.shear = young / (2.0 * (1.0 + poisson));
   m.bulk = young / (3.0 * (1.0 - 2.0 * poisson));
   m.lame = young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson));

@@ -13,8 +13,10 @@ enum class PlaneMode { Strain, Stress };
 // The 3x3 matrix D with s = D e. Requires young > 0 and -1 < poisson < 0.5 (checked at input).
 Mat3 elastic_matrix(double young, double poisson, PlaneMode plane);
 
-// Shear modulus G, bulk modulus K and Lame's lambda of (young, poisson).
+// Shear modulus G, bulk modulus K and Lame's lambda of (young, poisson), and young itself
+// (the returns' floor of a stress scale).
 struct ElasticModuli {
+  double young = 0.0;
   double shear = 0.0;
   double bulk = 0.0;
   double lame = 0.0;

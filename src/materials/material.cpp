@@ -1,5 +1,9 @@
 #include "materials/material.hpp"
 
+#include <type_traits>
+#include <utility>
+#include <variant>
+
 #include "materials/plastic_return.hpp"
 #include "materials/return_drucker_prager.hpp"
 #include "materials/return_mohr_coulomb.hpp"
@@ -13,7 +17,7 @@ MaterialResult integrate_plane_stress(const MaterialParameters& params, const Ma
   MaterialResult r;
   r.state = start;
   r.tangent = elastic_matrix(params.young, params.poisson, PlaneMode::Stress);
-  if (is_plastic(params.model)) {
+  if (is_plastic(params.model())) {
     r.status = {false, "plastic models are plane strain only", 0.0};
     return r;
   }
@@ -32,18 +36,18 @@ MaterialResult integrate(const MaterialParameters& params, const MaterialState& 
   const ElasticModuli moduli = elastic_moduli(params.young, params.poisson);
   const Vec4 trial = initial_stress +
                      elastic_matrix4(moduli) * (plane_strain4(total_strain) - start.plastic_strain);
-  PlasticReturn ret;
-  switch (params.model) {
-    case MaterialModel::Elastic:
-      ret = elastic_return(trial, start.eps_p, elastic_matrix4(moduli));
-      break;
-    case MaterialModel::DruckerPrager:
-      ret = return_drucker_prager(params, moduli, trial, start.eps_p);
-      break;
-    case MaterialModel::MohrCoulomb:
-      ret = return_mohr_coulomb(params, moduli, trial, start.eps_p);
-      break;
-  }
+  // The variant's alternative is the model: each return gets its own parameters only.
+  PlasticReturn ret = std::visit(
+      [&](const auto& model) {
+        using Model = std::decay_t<decltype(model)>;
+        if constexpr (std::is_same_v<Model, DruckerPragerParameters>)
+          return return_drucker_prager(model, moduli, trial, start.eps_p);
+        else if constexpr (std::is_same_v<Model, MohrCoulombParameters>)
+          return return_mohr_coulomb(model, moduli, trial, start.eps_p);
+        else
+          return elastic_return(trial, start.eps_p, elastic_matrix4(moduli));
+      },
+      params.model_parameters);
   MaterialResult r;
   r.stress = ret.stress;
   r.tangent = in_plane(ret.tangent);

@@ -11,6 +11,9 @@
 
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "kinematics/enum_names.hpp"
@@ -35,25 +38,79 @@ inline std::string_view model_name(MaterialModel m) { return name_in(kMaterialMo
 // (yield_drucker_prager.hpp).
 enum class DruckerPragerMatch { Outer, Inner, PlaneStrain };
 
-struct MaterialParameters {
-  MaterialModel model = MaterialModel::Elastic;
-  double young = 0.0;           // Pa, > 0
-  double poisson = 0.0;         // (-1, 0.5)
-  double density = 0.0;         // kg/m^3, > 0 (not used here; carried for the scene)
+// Each model declares its own parameters, the way an MFront behaviour declares its own
+// properties; what every model has (the elastic constants, the density) lives in
+// MaterialParameters beside the model's.
+
+// The elastic model has no parameters beyond the elastic constants.
+struct ElasticOnly {};
+
+// The strength and flow the two plastic models share, in Mohr-Coulomb's terms (the
+// Drucker-Prager cone is matched to them).
+struct FrictionalStrength {
   double cohesion = 0.0;        // Pa, >= 0 (the cohesion at eps_p = 0)
   double friction_angle = 0.0;  // degrees, [0, 90)
   double dilation_angle = 0.0;  // degrees, [0, friction_angle]; = friction: associated flow
-  // Mohr-Coulomb only: the tension cut-off, a Rankine plane s_max = tensile_strength (Pa,
-  // >= 0). Absent: no cut-off (the Mohr-Coulomb surface alone, its apex at c cot phi);
-  // 0: no tension at all (s_max <= 0). It does not soften with the cohesion.
-  std::optional<double> tensile_strength;
   // Cohesion against equivalent plastic strain, piecewise linear, constant beyond the ends.
   // Empty: constant `cohesion`. Given: its value at eps_p = 0 must equal `cohesion`.
   std::vector<HardeningPoint> hardening;
-  DruckerPragerMatch match = DruckerPragerMatch::PlaneStrain;  // Drucker-Prager only
+};
+
+struct DruckerPragerParameters : FrictionalStrength {
+  DruckerPragerMatch match = DruckerPragerMatch::PlaneStrain;
+};
+
+struct MohrCoulombParameters : FrictionalStrength {
+  // The tension cut-off, a Rankine plane s_max = tensile_strength (Pa, >= 0). Absent: no
+  // cut-off (the Mohr-Coulomb surface alone, its apex at c cot phi); 0: no tension at all
+  // (s_max <= 0). It does not soften with the cohesion.
+  std::optional<double> tensile_strength;
+};
+
+// A plastic model's parameters from its strength, without hardening, cut-off or a match
+// other than the default (code-built materials and tests).
+inline MohrCoulombParameters mohr_coulomb_parameters(double cohesion, double friction_angle,
+                                                     double dilation_angle) {
+  MohrCoulombParameters p;
+  p.cohesion = cohesion;
+  p.friction_angle = friction_angle;
+  p.dilation_angle = dilation_angle;
+  return p;
+}
+inline DruckerPragerParameters drucker_prager_parameters(double cohesion, double friction_angle,
+                                                         double dilation_angle) {
+  DruckerPragerParameters p;
+  p.cohesion = cohesion;
+  p.friction_angle = friction_angle;
+  p.dilation_angle = dilation_angle;
+  return p;
+}
+
+// The alternatives in the order of MaterialModel, so a model is its index.
+using ModelParameters = std::variant<ElasticOnly, DruckerPragerParameters, MohrCoulombParameters>;
+static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(MaterialModel::DruckerPrager), ModelParameters>, DruckerPragerParameters>);
+static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(MaterialModel::MohrCoulomb), ModelParameters>, MohrCoulombParameters>);
+
+struct MaterialParameters {
+  double young = 0.0;    // Pa, > 0
+  double poisson = 0.0;  // (-1, 0.5)
+  double density = 0.0;  // kg/m^3, > 0 (not used by the returns; the blocks' mass)
+  ModelParameters model_parameters;  // ElasticOnly unless set
   // Plastic models are plane strain only (validate_material rejects plane stress).
   PlaneMode plane = PlaneMode::Strain;
+
+  MaterialModel model() const { return static_cast<MaterialModel>(model_parameters.index()); }
 };
+
+// The plastic models' shared strength and flow; nullptr for the elastic model.
+inline const FrictionalStrength* frictional_strength(const MaterialParameters& p) {
+  if (const auto* dp = std::get_if<DruckerPragerParameters>(&p.model_parameters)) return dp;
+  if (const auto* mc = std::get_if<MohrCoulombParameters>(&p.model_parameters)) return mc;
+  return nullptr;
+}
+inline FrictionalStrength* frictional_strength(MaterialParameters& p) {
+  return const_cast<FrictionalStrength*>(frictional_strength(std::as_const(p)));
+}
 
 // What a material point carries from step to step.
 //

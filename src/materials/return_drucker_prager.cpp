@@ -23,7 +23,7 @@ Mat4 deviatoric_stiffness(double shear) {
 
 }  // namespace
 
-PlasticReturn return_drucker_prager(const MaterialParameters& p, const ElasticModuli& moduli,
+PlasticReturn return_drucker_prager(const DruckerPragerParameters& p, const ElasticModuli& moduli,
                                     const Vec4& trial, double eps_p_start) {
   const double g = moduli.shear, k = moduli.bulk;
   const Mat4 elastic = elastic_matrix4(moduli);
@@ -36,7 +36,7 @@ PlasticReturn return_drucker_prager(const MaterialParameters& p, const ElasticMo
   const double p_trial = mean_stress(trial);
   const double c_start = law.value(eps_p_start);
   // Stress scale as in the Mohr-Coulomb return (return_mohr_coulomb.cpp).
-  const double scale = std::max({q, std::abs(p_trial), dp.xi * c_start, 1e-12 * p.young});
+  const double scale = std::max({q, std::abs(p_trial), dp.xi * c_start, 1e-12 * moduli.young});
   const double f_trial = q + dp.eta * p_trial - dp.xi * c_start;
   if (f_trial <= kDecisionTolerance * scale) return elastic_return(trial, eps_p_start, elastic);
 

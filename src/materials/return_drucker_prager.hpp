@@ -14,7 +14,7 @@ namespace dda {
 // Apex (when sqrt(J2_trial) - G dgamma < 0): s' = 0, p = p_trial - K dev,
 //   with eta p = xi c(eps_p_start + xi dev / eta_bar); needs eta > 0 and eta_bar > 0.
 // Each equation is solved by Newton on its one unknown (scalar_root.hpp).
-PlasticReturn return_drucker_prager(const MaterialParameters& p, const ElasticModuli& moduli,
+PlasticReturn return_drucker_prager(const DruckerPragerParameters& p, const ElasticModuli& moduli,
                                     const Vec4& trial, double eps_p_start);
 
 }  // namespace dda

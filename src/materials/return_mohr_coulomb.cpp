@@ -32,7 +32,7 @@ Branch branch_of(unsigned mask) {
 // The return conditions of one active set's result.
 bool admissible(unsigned mask, const PlanesReturn& r, std::span<const PrincipalPlane> planes,
                 const MohrCoulombAngles& angles, const CohesionLaw& law,
-                const MaterialParameters& p, const Tolerances& tol) {
+                const MohrCoulombParameters& p, const Tolerances& tol) {
   if (mask == kApex) {
     // de Souza Neto's apex: only the plastic volume change (sum of h dgamma) must be >= 0.
     double dilation = 0.0;
@@ -52,7 +52,7 @@ bool admissible(unsigned mask, const PlanesReturn& r, std::span<const PrincipalP
 
 }  // namespace
 
-PlasticReturn return_mohr_coulomb(const MaterialParameters& p, const ElasticModuli& moduli,
+PlasticReturn return_mohr_coulomb(const MohrCoulombParameters& p, const ElasticModuli& moduli,
                                   const Vec4& trial, double eps_p_start) {
   const Mat4 elastic = elastic_matrix4(moduli);
   const MohrCoulombAngles angles = mohr_coulomb_angles(p.friction_angle, p.dilation_angle);
@@ -64,7 +64,7 @@ PlasticReturn return_mohr_coulomb(const MaterialParameters& p, const ElasticModu
   // Stress scale: the trial's largest principal value or the strength, whichever is
   // larger; a floor of 1e-12 E for a material with no stress and no strength.
   const double c_start = law.value(eps_p_start);
-  const double scale = std::max({s.cwiseAbs().maxCoeff(), c_start, tension, 1e-12 * p.young});
+  const double scale = std::max({s.cwiseAbs().maxCoeff(), c_start, tension, 1e-12 * moduli.young});
   const Tolerances tol{kDecisionTolerance * scale,
                        kDecisionTolerance * scale / (2.0 * moduli.shear)};
 

@@ -26,7 +26,7 @@ namespace dda {
 // The apex needs phi > 0 and psi > 0: with psi = 0 a trial beyond it has no return (the
 // flow has no volume change), and the status fails saying so (a cut-off below the apex
 // avoids it).
-PlasticReturn return_mohr_coulomb(const MaterialParameters& p, const ElasticModuli& moduli,
+PlasticReturn return_mohr_coulomb(const MohrCoulombParameters& p, const ElasticModuli& moduli,
                                   const Vec4& trial, double eps_p_start);
 
 }  // namespace dda

@@ -33,7 +33,7 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
     k.block<3, 3>(kEx, kEx) += b.moments.area * l.tangent;
     f.segment<3>(kEx) -= b.moments.area * (l.stress - l.tangent * l.strain_increment);
   } else if (!b.rigid) {
-    k += elastic_stiffness(b.moments, b.elastic);
+    k += elastic_stiffness(b.moments, elastic_of(world, b));
     f += initial_stress_force(b.moments, b.stress);
   }
 }

@@ -7,6 +7,7 @@
 #include "kinematics/block_matrices.hpp"
 #include "kinematics/frames.hpp"
 #include "kinematics/point_maps.hpp"
+#include "materials/material.hpp"
 
 namespace dda {
 namespace {
@@ -213,7 +214,7 @@ void update_stresses(World& world) {
       // converges as it did there.
       const Vec3& strain = in_block_frame ? b.local_strain : b.strain;
       const MaterialResult r =
-          integrate(b.material_parameters, b.material_state, strain, b.initial_stress_4);
+          integrate(material_of(world, b), b.material_state, strain, initial_stress4(world, b));
       assert(r.status.converged);
       b.material_state = r.state;
       b.szz = r.stress[kZZ];
@@ -223,9 +224,9 @@ void update_stresses(World& world) {
     } else if (in_block_frame) {
       // Paper Eq. (20) in the block frame, from total strain only (never added), with the
       // initial stress held in that frame; then turned to the global frame.
-      b.stress = stress_from_turned_frame(b.initial_stress + b.elastic * b.local_strain, b.rotation);
+      b.stress = stress_from_turned_frame(b.initial_stress + elastic_of(world, b) * b.local_strain, b.rotation);
     } else {
-      b.stress = b.initial_stress + b.elastic * b.strain;
+      b.stress = b.initial_stress + elastic_of(world, b) * b.strain;
     }
   }
 }

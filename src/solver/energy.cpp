@@ -41,11 +41,11 @@ Vec4 stress4(const Block& b) { return Vec4(b.stress[0], b.stress[1], b.szz, b.st
 }  // namespace
 
 double block_strain_energy(const World& world, const Block& b) {
-  if (!b.plastic) return 0.5 * b.moments.area * b.strain.dot(b.elastic * b.strain);
+  if (!b.plastic) return 0.5 * b.moments.area * b.strain.dot(elastic_of(world, b) * b.strain);
   const Vec3 s0 = initial_stress_now(world, b);
-  const Vec4 ds = stress4(b) - Vec4(s0[0], s0[1], b.initial_stress_4[2], s0[2]);
-  return b.moments.area *
-         complementary_density(ds, b.material_parameters.young, b.material_parameters.poisson);
+  const Vec4 ds = stress4(b) - Vec4(s0[0], s0[1], initial_stress4(world, b)[2], s0[2]);
+  const MaterialParameters& m = material_of(world, b);
+  return b.moments.area * complementary_density(ds, m.young, m.poisson);
 }
 
 double contact_energy(const World& world, const std::vector<Contact>& contacts, double penalty) {
@@ -102,7 +102,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
       s.plastic_elastic_before[i] = block_strain_energy(world, b);
       s.plastic_stress_before[i] = stress4(b);
     } else {
-      s.damping_dissipation += 0.5 * area * de.dot(b.elastic * de);
+      s.damping_dissipation += 0.5 * area * de.dot(elastic_of(world, b) * de);
     }
     s.load_work -= area * initial_stress_now(world, b).dot(de);
     // The dynamic coefficient k carries k v0 into the step: (1 - k^2) of the kinetic energy
@@ -190,8 +190,8 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
     const Vec3 de = d.segment<3>(b.first_dof + kEx);
     const Vec3 s0 = initial_stress_now(world, b);
     const Vec4 ds = stress4(b) - step.plastic_stress_before[i];
-    const double implicit = b.moments.area * complementary_density(ds, b.material_parameters.young,
-                                                                   b.material_parameters.poisson);
+    const MaterialParameters& m = material_of(world, b);
+    const double implicit = b.moments.area * complementary_density(ds, m.young, m.poisson);
     led.damping_dissipation += implicit;
     led.plastic_dissipation += b.moments.area * (b.stress - s0).dot(de) -
                                (block_strain_energy(world, b) - step.plastic_elastic_before[i]) -

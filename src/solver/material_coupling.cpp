@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "kinematics/frames.hpp"
+#include "materials/material.hpp"
 
 namespace dda {
 namespace {
@@ -16,8 +17,8 @@ struct Evaluation {
 Evaluation evaluate(const World& world, const Block& b, const Vec6& db) {
   const bool in_frame = keeps_block_frame(world.control.rotation_update);
   Evaluation e;
-  e.result = integrate(b.material_parameters, b.material_state,
-                       material_strain_after(world, b, db), b.initial_stress_4);
+  e.result = integrate(material_of(world, b), b.material_state,
+                       material_strain_after(world, b, db), initial_stress4(world, b));
   const Vec3 local_stress = in_plane(e.result.stress);
   if (!in_frame) {
     e.stress = local_stress;
@@ -66,7 +67,7 @@ std::vector<MaterialLinearization> start_linearization(const World& world) {
     if (!b.plastic) continue;
     terms[i].stress = b.stress;
     // Isotropic D is the same in every frame.
-    terms[i].tangent = b.elastic;
+    terms[i].tangent = elastic_of(world, b);
   }
   return terms;
 }
@@ -97,7 +98,7 @@ MaterialFollowUp follow_materials(const World& world, const Eigen::VectorXd& d,
     MaterialLinearization& l = terms[i];
     const Vec3 increment = db.segment<3>(kEx);
     const Vec3 predicted = l.stress + l.tangent * (increment - l.strain_increment);
-    const double scale = std::max(e.stress.norm(), 1e-12 * b.material_parameters.young);
+    const double scale = std::max(e.stress.norm(), 1e-12 * material_of(world, b).young);
     if ((e.stress - predicted).norm() > kNewtonRelativeTolerance * scale) ++follow.unconverged;
     l.strain_increment = increment;
     l.stress = e.stress;

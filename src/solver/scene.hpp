@@ -15,8 +15,7 @@
 #include "kinematics/types.hpp"
 #include "solver/base_motion.hpp"
 #include "solver/joint_water.hpp"
-#include "materials/elastic.hpp"
-#include "materials/material.hpp"
+#include "materials/material_types.hpp"
 
 namespace dda {
 
@@ -77,20 +76,12 @@ inline constexpr EnumName<Inertia> kInertiaNames[] = {
     {Inertia::Shi, "shi"},
 };
 
-// A block material (issue 5): elastic, or a plastic model of src/materials. The plastic
-// parameters are read only for the plastic models (materials/material.hpp documents them).
+// A block material (issue 5): the material library's parameters (materials/
+// material_types.hpp: elastic, Drucker-Prager or Mohr-Coulomb, each with its own) under the
+// scene's name for them. Their plane mode is the scene's (the reader sets it).
 struct Material {
   std::string name;
-  double density = 0.0;  // kg/m^3, > 0
-  double young = 0.0;    // Pa, > 0
-  double poisson = 0.0;  // (-1, 0.5)
-  MaterialModel model = MaterialModel::Elastic;
-  double cohesion = 0.0;        // Pa, >= 0
-  double friction_angle = 0.0;  // degrees, [0, 90)
-  double dilation_angle = 0.0;  // degrees, [0, friction_angle]
-  std::optional<double> tensile_strength;  // Pa; Mohr-Coulomb's tension cut-off, absent: none
-  std::vector<HardeningPoint> hardening;   // [[eps_p, cohesion], ...]; empty: constant
-  DruckerPragerMatch match = DruckerPragerMatch::PlaneStrain;
+  MaterialParameters parameters;
   // Blocks of this material are rigid unless their own `rigid` says otherwise (BlockSpec).
   // Elastic models only (the reader rejects a rigid plastic material: a block without
   // strain cannot yield); young still counts towards the "auto" penalty.
@@ -102,27 +93,10 @@ inline Material elastic_material(std::string name, double density, double young,
                                  double poisson) {
   Material m;
   m.name = std::move(name);
-  m.density = density;
-  m.young = young;
-  m.poisson = poisson;
+  m.parameters.density = density;
+  m.parameters.young = young;
+  m.parameters.poisson = poisson;
   return m;
-}
-
-// The material library's parameters of a scene material in the scene's plane mode.
-inline MaterialParameters parameters_of(const Material& m, PlaneMode plane) {
-  MaterialParameters p;
-  p.model = m.model;
-  p.young = m.young;
-  p.poisson = m.poisson;
-  p.density = m.density;
-  p.cohesion = m.cohesion;
-  p.friction_angle = m.friction_angle;
-  p.dilation_angle = m.dilation_angle;
-  p.tensile_strength = m.tensile_strength;
-  p.hardening = m.hardening;
-  p.match = m.match;
-  p.plane = plane;
-  return p;
 }
 
 // Mohr-Coulomb joint between blocks (Shi 1988): friction, cohesion and tensile strength.

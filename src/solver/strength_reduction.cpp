@@ -85,11 +85,15 @@ JointLaw reduced_joint_law(const JointLaw& law, double factor) {
 MaterialParameters reduced_material(const MaterialParameters& m, double factor) {
   assert(factor > 0.0);
   MaterialParameters r = m;
-  r.cohesion = m.cohesion / factor;
-  for (HardeningPoint& p : r.hardening) p.cohesion /= factor;
-  r.friction_angle = reduced_angle_deg(m.friction_angle, factor);
-  r.dilation_angle = std::min(m.dilation_angle, r.friction_angle);
-  if (m.tensile_strength) r.tensile_strength = *m.tensile_strength / factor;
+  if (FrictionalStrength* p = frictional_strength(r)) {
+    p->cohesion /= factor;
+    for (HardeningPoint& h : p->hardening) h.cohesion /= factor;
+    p->friction_angle = reduced_angle_deg(p->friction_angle, factor);
+    p->dilation_angle = std::min(p->dilation_angle, p->friction_angle);
+  }
+  if (auto* mc = std::get_if<MohrCoulombParameters>(&r.model_parameters)) {
+    if (mc->tensile_strength) *mc->tensile_strength /= factor;
+  }
   return r;
 }
 
@@ -164,9 +168,8 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
     w.joint_laws.push_back(reduced_joint_law(law, factor));
   }
   if (s.reduce_materials) {
-    for (Block& b : w.blocks) {
-      if (b.plastic) b.material_parameters = reduced_material(b.material_parameters, factor);
-    }
+    // Only plastic blocks read their parameters; elastic materials have no strength.
+    for (WorldMaterial& m : w.materials) m.parameters = reduced_material(m.parameters, factor);
   }
   // Every block starts the trial at rest where the consolidation left it: a consolidation
   // that ended dynamic must not hand its motion to the verdict.

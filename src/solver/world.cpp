@@ -19,7 +19,7 @@ constexpr double kAutoPenaltyFactor = 50.0;
 double resolve_penalty(const Scene& scene) {
   if (scene.control.penalty) return *scene.control.penalty;
   double largest = 0.0;
-  for (const Material& mat : scene.materials) largest = std::max(largest, mat.young);
+  for (const Material& mat : scene.materials) largest = std::max(largest, mat.parameters.young);
   return kAutoPenaltyFactor * largest;
 }
 
@@ -36,6 +36,13 @@ World make_world(const Scene& scene) {
                                                                             : Inertia::Shi) ==
                        Inertia::PseudoRigid;
 
+  for (const Material& mat : scene.materials) {
+    WorldMaterial m{mat.parameters, Mat3::Zero()};
+    m.parameters.plane = scene.plane;
+    m.elastic = elastic_matrix(m.parameters.young, m.parameters.poisson, scene.plane);
+    world.materials.push_back(std::move(m));
+  }
+
   std::vector<Polygon> polygons;
   for (const BlockSpec& spec : scene.blocks) {
     const Material& mat = scene.materials.at(spec.material);
@@ -44,26 +51,17 @@ World make_world(const Scene& scene) {
     b.vertices = spec.vertices;
     b.material = spec.material;
     b.fixed = spec.fixed;
-    b.density = mat.density;
-    // A rigid block has no strain and so no stiffness and no stress: D = 0 makes every
-    // strain term (assembly, stress, strain energy) vanish even where the zero strain does
-    // not already; the reader refuses an initial stress or a plastic material for it.
+    // The reader refuses an initial stress or a plastic material for a rigid block.
     b.rigid = is_rigid(spec, mat);
-    b.elastic = b.rigid ? Mat3(Mat3::Zero()) : elastic_matrix(mat.young, mat.poisson, scene.plane);
     b.initial_stress = spec.initial_stress;
     b.stress = spec.initial_stress;
-    b.plastic = is_plastic(mat.model) && !spec.fixed && !b.rigid;
-    if (b.plastic) {
-      b.material_parameters = parameters_of(mat, scene.plane);
-      const Vec3& s0 = spec.initial_stress;
-      b.initial_stress_4 = Vec4(s0[0], s0[1], mat.poisson * (s0[0] + s0[1]), s0[2]);
-      b.szz = b.initial_stress_4[2];
-    }
+    b.plastic = is_plastic(mat.parameters.model()) && !spec.fixed && !b.rigid;
+    if (b.plastic) b.szz = initial_stress4(world, b)[2];
     b.moments = polygon_moments(b.vertices);
     b.initial_area = b.moments.area;
     b.initial_centroid = b.moments.centroid;
     b.material_inertia =
-        material_inertia(b.density, b.moments.sxx, b.moments.syy, b.moments.sxy);
+        material_inertia(mat.parameters.density, b.moments.sxx, b.moments.syy, b.moments.sxy);
     assert(b.moments.area > 0.0);
     if (!b.fixed) {
       b.first_dof = world.dof_count;

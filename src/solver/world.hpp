@@ -11,7 +11,7 @@
 #include "contact/joint_law.hpp"
 #include "kinematics/polygon.hpp"
 #include "kinematics/types.hpp"
-#include "materials/material.hpp"
+#include "materials/material_types.hpp"
 #include "solver/joint_water.hpp"
 #include "solver/scene.hpp"
 #include "solver/stages.hpp"
@@ -27,12 +27,11 @@ struct Block {
   // ---- cold: fixed at construction ----
   Polygon initial_vertices;     // X: the material points of the vertices at the start
   Vec2 initial_centroid = Vec2::Zero();  // Xc: the reference point at the start
-  int material = 0;
+  int material = 0;  // index into World::materials (material_of, elastic_of)
   bool fixed = false;
-  double density = 0.0;   // kg/m^3
-  Mat3 elastic = Mat3::Zero();  // D, s = D e (plane strain or stress)
   // Given in the global frame at the start, where the block frame is the global one; the
-  // local-frame treatments hold it in the block frame (it turns with the block).
+  // local-frame treatments hold it in the block frame (it turns with the block). A plastic
+  // block's four components: initial_stress4.
   Vec3 initial_stress = Vec3::Zero();
   double initial_area = 0.0;
   // J0 = rho int (X - Xc)(X - Xc)^T dA over the initial polygon (kg m^2 per metre): the
@@ -52,11 +51,8 @@ struct Block {
   bool rigid = false;
   // Plastic blocks (issue 5) take their stress from the material library over the strain
   // their treatment accumulates (src/solver/material_coupling.hpp); elastic blocks never
-  // touch it. Their initial stress as (sxx, syy, szz, sxy): szz = nu (sxx + syy), the
-  // plane-strain stress an elastic history would have left.
+  // touch it. A free, deformable block of a plastic model.
   bool plastic = false;
-  MaterialParameters material_parameters;
-  Vec4 initial_stress_4 = Vec4::Zero();
 
   // ---- hot: advanced every step ----
   Polygon vertices;                 // current configuration
@@ -133,7 +129,15 @@ struct EnergyLedger {
   double scale = 0.0;
 };
 
+// A material as the blocks use it (Block::material is its index).
+struct WorldMaterial {
+  MaterialParameters parameters;  // the scene's, in the scene's plane mode
+  Mat3 elastic = Mat3::Zero();    // D of `parameters`: s = D e (plane strain or stress)
+};
+
 struct World {
+  // The scene's materials, in its order; strength-reduction trials reduce them here.
+  std::vector<WorldMaterial> materials;
   std::vector<Block> blocks;
   std::vector<Pin> pins;
   std::vector<PointLoad> loads;
@@ -181,6 +185,26 @@ struct World {
 // A free block's row of 6 x 6 blocks in the global system (BlockSystem): its first slot / 6.
 inline int block_row(const Block& b) { return b.first_dof / 6; }
 
+// The block's material parameters.
+inline const MaterialParameters& material_of(const World& world, const Block& b) {
+  return world.materials[static_cast<std::size_t>(b.material)].parameters;
+}
+
+// The block's D, s = D e: its material's, and zero for a rigid block. A rigid block has no
+// strain and so no stiffness and no stress: D = 0 makes every strain term (assembly,
+// stress, strain energy) vanish even where the zero strain does not already.
+inline const Mat3& elastic_of(const World& world, const Block& b) {
+  static const Mat3 kNoStiffness = Mat3::Zero();
+  return b.rigid ? kNoStiffness : world.materials[static_cast<std::size_t>(b.material)].elastic;
+}
+
+// A plastic block's initial stress as (sxx, syy, szz, sxy) for the material library:
+// szz = nu (sxx + syy), the plane-strain stress an elastic history would have left.
+inline Vec4 initial_stress4(const World& world, const Block& b) {
+  const Vec3& s0 = b.initial_stress;
+  return Vec4(s0[0], s0[1], material_of(world, b).poisson * (s0[0] + s0[1]), s0[2]);
+}
+
 
 // Contact search distance between blocks i and j (m): 1.25 x the sum of what their vertices
 // may move in a step, so every contact the step could close is found with a quarter to
@@ -204,7 +228,8 @@ World make_world(const Scene& scene);
 // With the pseudo-rigid body's inertia the mass is kept, so the density falls as the area
 // grows (exact for a homogeneous deformation); with Shi's, it is the material's.
 inline double density_now(const World& world, const Block& b) {
-  return world.pseudo_rigid ? b.density * b.initial_area / b.moments.area : b.density;
+  const double density = material_of(world, b).density;
+  return world.pseudo_rigid ? density * b.initial_area / b.moments.area : density;
 }
 
 // Kinetic energy 1/2 v^T M v of one block (J per metre), from its velocity and mass matrix.

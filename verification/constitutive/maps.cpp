@@ -27,14 +27,16 @@ double rad(double deg) { return deg * std::numbers::pi / 180.0; }
 
 MaterialParameters material(MaterialModel model, double dilation) {
   MaterialParameters p;
-  p.model = model;
   p.young = kYoung;
   p.poisson = kPoisson;
   p.density = 2500.0;
-  p.cohesion = kCohesion;
-  p.friction_angle = kFriction;
-  p.dilation_angle = dilation;
-  p.match = DruckerPragerMatch::PlaneStrain;
+  if (model == MaterialModel::MohrCoulomb) {
+    p.model_parameters = mohr_coulomb_parameters(kCohesion, kFriction, dilation);
+  } else {
+    DruckerPragerParameters dp = drucker_prager_parameters(kCohesion, kFriction, dilation);
+    dp.match = DruckerPragerMatch::PlaneStrain;
+    p.model_parameters = dp;
+  }
   return p;
 }
 
@@ -106,11 +108,12 @@ std::vector<MapSpec> make_maps() {
   const Vec4 near_apex{a1, a3, 0.5 * (a1 + a3), 0.0};
   // On the tension cut-off T = c/2 alone (Mohr-Coulomb inside: f = -0.48 c).
   MaterialParameters mc_t = mc;
-  mc_t.tensile_strength = 0.5 * c;
+  std::get<MohrCoulombParameters>(mc_t.model_parameters).tensile_strength = 0.5 * c;
   const Vec4 tension{0.5 * c, -1.0 * c, -0.25 * c, 0.0};
   // Softening: the cohesion falls linearly to c/2 at eps_p = 10 e_y, then stays.
   MaterialParameters mc_soft = mc;
-  mc_soft.hardening = {{0.0, c}, {10.0 * yield_strain(), 0.5 * c}};
+  std::get<MohrCoulombParameters>(mc_soft.model_parameters).hardening = {
+      {0.0, c}, {10.0 * yield_strain(), 0.5 * c}};
 
   std::vector<MapSpec> maps;
   maps.push_back(map("mc_plane_assoc", "Mohr-Coulomb, main plane",
@@ -150,8 +153,8 @@ double stress_norm(const Vec4& s) {
 }
 
 double start_yield_residual(const MapSpec& spec) {
-  const MaterialParameters& p = spec.params;
-  if (p.model == MaterialModel::MohrCoulomb) {
+  if (const auto* mc = std::get_if<MohrCoulombParameters>(&spec.params.model_parameters)) {
+    const MohrCoulombParameters& p = *mc;
     const MohrCoulombAngles a = mohr_coulomb_angles(p.friction_angle, p.dilation_angle);
     const Vec3 s = principal_stress(spec.start_stress).sorted();
     double f = mohr_coulomb_yield(s, p.cohesion, a);
@@ -159,6 +162,7 @@ double start_yield_residual(const MapSpec& spec) {
     if (p.tensile_strength && f < 0.0) f = s[0] - *p.tensile_strength;
     return std::abs(f) / (p.cohesion * a.cos_phi);
   }
+  const auto& p = std::get<DruckerPragerParameters>(spec.params.model_parameters);
   const DruckerPragerCoefficients k =
       drucker_prager_coefficients(p.match, p.friction_angle, p.dilation_angle);
   return std::abs(drucker_prager_yield(spec.start_stress, p.cohesion, k)) / (k.xi * p.cohesion);

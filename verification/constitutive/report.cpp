@@ -48,7 +48,7 @@ std::string grid_value(double v) {
 
 // The cohesion table as "eps_p:cohesion;eps_p:cohesion;..." at full precision (no commas, so
 // it stays one CSV field), or "none": check_projection.py rebuilds the softening from it.
-std::string hardening_table(const MaterialParameters& p) {
+std::string hardening_table(const FrictionalStrength& p) {
   if (p.hardening.empty()) return "none";
   std::string t;
   for (const HardeningPoint& h : p.hardening) {
@@ -135,7 +135,8 @@ MapSummary summarise(const MapResult& r) {
     if (worst == nullptr || p.error > worst->error) worst = &p;
     if (p.error > 0.01) ++s.above_1pct;
     s.max_absolute =
-        std::max(s.max_absolute, stress_norm(p.one.stress - p.reference) / r.spec.params.cohesion);
+        std::max(s.max_absolute,
+                 stress_norm(p.one.stress - p.reference) / frictional_strength(r.spec.params)->cohesion);
     const double reach = std::max(std::abs(p.x), std::abs(p.y));
     if (reach <= 1.0 + 1e-12) s.max_within_1 = std::max(s.max_within_1, p.error);
     if (reach <= 0.25 + 1e-12) s.max_within_025 = std::max(s.max_within_025, p.error);
@@ -196,12 +197,16 @@ void write_summary_csv(const std::filesystem::path& dir, const std::vector<MapRe
         << ',' << r.substeps << ',' << full(r.spec.yield_strain) << ',' << full(s.max_error)
         << ',' << full(s.max_x) << ',' << full(s.max_y) << ',' << full(r.ns_per_call) << ','
         << full(r.ns_per_reference_call);
-    const MaterialParameters& p = r.spec.params;
-    out << ',' << (p.model == MaterialModel::MohrCoulomb ? "mohr_coulomb" : "drucker_prager")
-        << ',' << full(p.young) << ',' << full(p.poisson) << ',' << full(p.cohesion) << ','
-        << full(p.friction_angle) << ',' << full(p.dilation_angle) << ','
-        << (p.tensile_strength ? full(*p.tensile_strength) : std::string()) << ','
-        << hardening_table(p) << ',' << match_name(p.match);
+    // A column another model has no parameter for is left empty (tensile_strength for
+    // Drucker-Prager, match for Mohr-Coulomb).
+    const MaterialParameters& m = r.spec.params;
+    const FrictionalStrength& p = *frictional_strength(m);
+    const auto* mc = std::get_if<MohrCoulombParameters>(&m.model_parameters);
+    const auto* dp = std::get_if<DruckerPragerParameters>(&m.model_parameters);
+    out << ',' << model_name(m.model()) << ',' << full(m.young) << ',' << full(m.poisson) << ','
+        << full(p.cohesion) << ',' << full(p.friction_angle) << ',' << full(p.dilation_angle)
+        << ',' << (mc && mc->tensile_strength ? full(*mc->tensile_strength) : std::string())
+        << ',' << hardening_table(p) << ',' << (dp ? match_name(dp->match) : std::string());
     for (int k = 0; k < 4; ++k) out << ',' << full(r.spec.start_stress[k]);
     for (int k = 0; k < 3; ++k) out << ',' << full(r.spec.dir_x[k]);
     for (int k = 0; k < 3; ++k) out << ',' << full(r.spec.dir_y[k]);

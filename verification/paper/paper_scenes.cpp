@@ -213,10 +213,9 @@ Scene platen_scene(double dt, int steps) {
   // small against the blocks' stiffness (2 M / dt^2 = 4e5 N/m at dt 0.01 s against ~1e10).
   s.materials[0] = elastic_material("rock", 20.0, 1e10, 0.25);
   Material specimen = elastic_material("soil", 20.0, 1e10, 0.25);
-  specimen.model = MaterialModel::MohrCoulomb;
-  specimen.cohesion = kPlatenCohesion;
-  specimen.friction_angle = kPlatenFriction;
-  specimen.dilation_angle = kPlatenFriction;  // associated: a symmetric tangent
+  // Associated (dilation = friction): a symmetric tangent.
+  specimen.parameters.model_parameters =
+      mohr_coulomb_parameters(kPlatenCohesion, kPlatenFriction, kPlatenFriction);
   s.materials.push_back(specimen);
   const auto rectangle = [](double x0, double y0, double w, double h) {
     return Polygon{{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};

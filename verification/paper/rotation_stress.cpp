@@ -83,7 +83,7 @@ struct OctagonPendulum {
 OctagonPendulum octagon_pendulum(const World& w) {
   const Block& b = w.blocks[0];
   OctagonPendulum p;
-  p.mass = b.density * b.initial_area;
+  p.mass = material_of(w, b).density * b.initial_area;
   const Vec2 offset = b.initial_centroid - w.pins[0].anchor;
   p.arm = offset.norm();
   const double pivot_inertia = b.material_inertia.trace() + p.mass * p.arm * p.arm;
@@ -183,7 +183,7 @@ GainPoint gain_point(const Treatment& t, double dt, double penalty, double durat
   g.penalty = world.penalty;
   const Pin& pin = world.pins[0];
   const Vec2 start = world.blocks[0].moments.centroid - pin.anchor;
-  const double mgl = world.blocks[0].density * world.blocks[0].initial_area * kGravity * start.norm();
+  const double mgl = material_of(world, world.blocks[0]).density * world.blocks[0].initial_area * kGravity * start.norm();
   std::optional<double> e0;
   SwingAngle swing(pin.anchor, world.blocks[0].moments.centroid);
   g.result = run_world(world, [&](const World& w) {

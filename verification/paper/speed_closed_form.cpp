@@ -71,7 +71,7 @@ InclinePoint incline_once(double dt) {
   p.slide_acc = 2.0 * std::pow((std::sqrt(d_end) - std::sqrt(p.distance)) / (world.time - t1), 2);
   p.acc_rel_error = std::abs(p.slide_acc - acc) / acc;
   const Block& b = world.blocks.back();
-  p.omega_dt = dt * std::sqrt(2.0 * world.penalty / (b.density * b.moments.area));
+  p.omega_dt = dt * std::sqrt(2.0 * world.penalty / (material_of(world, b).density * b.moments.area));
   return p;
 }
 
@@ -146,7 +146,7 @@ ClosedFormSpeed run_closed_form_speed(const Options& opt) {
   {
     const World w = make_world(incline_scene(0.01, 1.0));
     out.incline_penalty = w.penalty;
-    out.incline_mass = w.blocks.back().density * w.blocks.back().moments.area;
+    out.incline_mass = material_of(w, w.blocks.back()).density * w.blocks.back().moments.area;
   }
   out.strength = strength_of();
   out.push_rate = kPushRate;

@@ -60,9 +60,9 @@ PendulumReference pendulum_reference_for(double duration) {
   const World w = make_world(pendulum_scene(0.01, 1, RotationUpdate::Original));
   const Block& b = w.blocks[0];
   const Vec2 pivot = w.pins[0].anchor;
-  const double mass = b.density * b.moments.area;
+  const double mass = material_of(w, b).density * b.moments.area;
   const double arm = (b.moments.centroid - pivot).norm();
-  const double inertia = b.density * (b.moments.sxx + b.moments.syy) + mass * arm * arm;
+  const double inertia = material_of(w, b).density * (b.moments.sxx + b.moments.syy) + mass * arm * arm;
   const PendulumParams params = pendulum_params(mass, kGravity, arm, inertia,
                                                 pendulum_angle(b.moments.centroid, pivot), 0.0);
   PendulumReference ref;

@@ -123,7 +123,7 @@ SwingRun run_one(const Treatment& t, int steps) {
   const EnergySample& first = run.energy.front();
   const double e0 = first.kinetic + first.potential;
   const Block& b = world.blocks[0];
-  run.mgl = b.density * b.initial_area * paper::kGravity * arm;
+  run.mgl = material_of(world, b).density * b.initial_area * paper::kGravity * arm;
   run.energy_tolerance = kEnergyRoundOff * run.mgl;
   run.max_excess = -INFINITY;
   for (const EnergySample& s : run.energy) {
