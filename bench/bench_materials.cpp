@@ -21,9 +21,9 @@ dda::MaterialParameters material(dda::MaterialModel model) {
   p.poisson = 0.3;
   p.density = 2500.0;
   if (model == dda::MaterialModel::MohrCoulomb)
-    p.model_parameters = dda::mohr_coulomb_parameters(kC, 30.0, 30.0);
+    p.model_parameters = dda::plastic_parameters<dda::MohrCoulombParameters>(kC, 30.0, 30.0);
   else if (model == dda::MaterialModel::DruckerPrager)
-    p.model_parameters = dda::drucker_prager_parameters(kC, 30.0, 30.0);
+    p.model_parameters = dda::plastic_parameters<dda::DruckerPragerParameters>(kC, 30.0, 30.0);
   return p;
 }
 

@@ -31,7 +31,7 @@ Plateau plateau(double dilation) {
   s.joint_materials.push_back(dda::JointMaterial{"default", 0.0, 0.0, 0.0});
   s.materials.push_back(dda::elastic_material("rock", 20.0, 1e10, 0.25));
   dda::Material soil = dda::elastic_material("soil", 20.0, 1e10, 0.25);
-  soil.parameters.model_parameters = dda::mohr_coulomb_parameters(1e6, 30.0, dilation);
+  soil.parameters.model_parameters = dda::plastic_parameters<dda::MohrCoulombParameters>(1e6, 30.0, dilation);
   s.materials.push_back(soil);
   dda::BlockSpec base, specimen, platen;
   base.vertices = {{-1, -1}, {2, -1}, {2, 0}, {-1, 0}};

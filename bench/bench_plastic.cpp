@@ -20,7 +20,7 @@ dda::World wall(int n, int variant) {
   dda::Material m = dda::elastic_material("rock", 2700.0, 1e9, 0.25);
   if (variant > 0) {
     m.parameters.model_parameters =
-        dda::mohr_coulomb_parameters(variant == 1 ? 1e9 : 1e4, 30.0, 30.0);
+        dda::plastic_parameters<dda::MohrCoulombParameters>(variant == 1 ? 1e9 : 1e4, 30.0, 30.0);
   }
   return dda::make_world(dda::bench::brick_wall_scene(n, m));
 }

@@ -15,9 +15,9 @@ inline MaterialParameters soil(MaterialModel model, double dilation_deg) {
   p.poisson = 0.3;
   p.density = 2000.0;
   if (model == MaterialModel::DruckerPrager)
-    p.model_parameters = drucker_prager_parameters(20e3, 30.0, dilation_deg);
+    p.model_parameters = plastic_parameters<DruckerPragerParameters>(20e3, 30.0, dilation_deg);
   else if (model == MaterialModel::MohrCoulomb)
-    p.model_parameters = mohr_coulomb_parameters(20e3, 30.0, dilation_deg);
+    p.model_parameters = plastic_parameters<MohrCoulombParameters>(20e3, 30.0, dilation_deg);
   return p;
 }
 

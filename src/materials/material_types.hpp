@@ -67,19 +67,12 @@ struct MohrCoulombParameters : FrictionalStrength {
   std::optional<double> tensile_strength;
 };
 
-// A plastic model's parameters from its strength, without hardening, cut-off or a match
-// other than the default (code-built materials and tests).
-inline MohrCoulombParameters mohr_coulomb_parameters(double cohesion, double friction_angle,
-                                                     double dilation_angle) {
-  MohrCoulombParameters p;
-  p.cohesion = cohesion;
-  p.friction_angle = friction_angle;
-  p.dilation_angle = dilation_angle;
-  return p;
-}
-inline DruckerPragerParameters drucker_prager_parameters(double cohesion, double friction_angle,
-                                                         double dilation_angle) {
-  DruckerPragerParameters p;
+// A plastic model's parameters (MohrCoulombParameters or DruckerPragerParameters) from its
+// strength, without hardening and with its other parameters at their defaults (no cut-off,
+// the plane-strain match): for code-built materials and tests.
+template <class Model>
+Model plastic_parameters(double cohesion, double friction_angle, double dilation_angle) {
+  Model p;
   p.cohesion = cohesion;
   p.friction_angle = friction_angle;
   p.dilation_angle = dilation_angle;
@@ -88,8 +81,11 @@ inline DruckerPragerParameters drucker_prager_parameters(double cohesion, double
 
 // The alternatives in the order of MaterialModel, so a model is its index.
 using ModelParameters = std::variant<ElasticOnly, DruckerPragerParameters, MohrCoulombParameters>;
-static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(MaterialModel::DruckerPrager), ModelParameters>, DruckerPragerParameters>);
-static_assert(std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(MaterialModel::MohrCoulomb), ModelParameters>, MohrCoulombParameters>);
+template <MaterialModel M>
+using ParametersOf = std::variant_alternative_t<static_cast<std::size_t>(M), ModelParameters>;
+static_assert(std::is_same_v<ParametersOf<MaterialModel::Elastic>, ElasticOnly>);
+static_assert(std::is_same_v<ParametersOf<MaterialModel::DruckerPrager>, DruckerPragerParameters>);
+static_assert(std::is_same_v<ParametersOf<MaterialModel::MohrCoulomb>, MohrCoulombParameters>);
 
 struct MaterialParameters {
   double young = 0.0;    // Pa, > 0

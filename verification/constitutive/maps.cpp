@@ -31,9 +31,9 @@ MaterialParameters material(MaterialModel model, double dilation) {
   p.poisson = kPoisson;
   p.density = 2500.0;
   if (model == MaterialModel::MohrCoulomb) {
-    p.model_parameters = mohr_coulomb_parameters(kCohesion, kFriction, dilation);
+    p.model_parameters = plastic_parameters<MohrCoulombParameters>(kCohesion, kFriction, dilation);
   } else {
-    DruckerPragerParameters dp = drucker_prager_parameters(kCohesion, kFriction, dilation);
+    DruckerPragerParameters dp = plastic_parameters<DruckerPragerParameters>(kCohesion, kFriction, dilation);
     dp.match = DruckerPragerMatch::PlaneStrain;
     p.model_parameters = dp;
   }

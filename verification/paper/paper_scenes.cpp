@@ -215,7 +215,7 @@ Scene platen_scene(double dt, int steps) {
   Material specimen = elastic_material("soil", 20.0, 1e10, 0.25);
   // Associated (dilation = friction): a symmetric tangent.
   specimen.parameters.model_parameters =
-      mohr_coulomb_parameters(kPlatenCohesion, kPlatenFriction, kPlatenFriction);
+      plastic_parameters<MohrCoulombParameters>(kPlatenCohesion, kPlatenFriction, kPlatenFriction);
   s.materials.push_back(specimen);
   const auto rectangle = [](double x0, double y0, double w, double h) {
     return Polygon{{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}};
