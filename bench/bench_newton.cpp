@@ -1,7 +1,8 @@
 // The step's Newton iteration, hand-written inside the open-close loop (solver/step.cpp)
 // against KINSOL with SUNDIALS' KLU (verification/reference/kinsol_step.hpp), on the same step: a
-// Mohr-Coulomb specimen on its plateau, pushed through a platen (tests/test_plastic_block.cpp
-// has the scene and checks that both find the same increments). Arg: dilation angle
+// Mohr-Coulomb specimen on its plateau, pushed through a platen
+// (tests/solver/test_material_coupling.cpp has the scene and checks that both find the same
+// increments). Arg: dilation angle
 // (10: non-associated, unsymmetric tangent; 30: associated). Run:
 //   build/release/dda_bench --benchmark_filter=Newton
 #include <benchmark/benchmark.h>

@@ -1,5 +1,5 @@
 // The built-in default scene (what `dda run` runs without a scene file). The same text is in
-// scenes/default.json; tests/test_scene_input.cpp checks that the two stay identical.
+// scenes/default.json; tests/io/test_scene_reader.cpp checks that the two stay identical.
 //
 // Geometry: the pendulum sweeps a disc of radius |(1.75, 0.25)| = 1.77 m about its pin at
 // (0.25, 0.25), which stays above the fixed floor (top at y = -2). The octagon starts centred

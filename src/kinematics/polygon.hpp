@@ -29,7 +29,7 @@ double signed_area(const Polygon& poly);
 bool is_self_intersecting(const Polygon& poly);
 
 // The simple reference path: every pair of edges, O(n^2). Same verdicts as the sweep
-// (tests/test_kinematics.cpp compares them on random and degenerate polygons).
+// (tests/kinematics/test_polygon.cpp compares them on random and degenerate polygons).
 bool is_self_intersecting_reference(const Polygon& poly);
 
 // The first pair of edges found that makes the polygon not simple (edge k runs from

@@ -3,9 +3,9 @@
 // Prandtl's bearing capacity q_u = (2 + pi) c. The layer is a mesh of constant-strain
 // triangular blocks bonded by joints far stronger than the soil, so the plasticity is in the
 // blocks; the footing is a rigid block held by two pins whose anchors the driver moves down
-// a fixed distance each static step (displacement control, as tests/test_plastic_block.cpp
-// does with its platen). The case library is shared by dda_verify_footing and
-// tests/test_footing.cpp.
+// a fixed distance each static step (displacement control, as
+// tests/solver/test_material_coupling.cpp does with its platen). The case library is shared by dda_verify_footing and
+// tests/verification/test_footing.cpp.
 #pragma once
 
 #include <string>

@@ -1,7 +1,8 @@
 // The cases of the slope verification (issue 11): each a scene built in code, its
 // limit-equilibrium factor from limit_equilibrium.hpp, the published value it is checked
 // against, and the resolution within which a strength-reduction search can find it (README
-// "Tolerances"). Shared by dda_verify_slope and tests/test_slope_verification.cpp.
+// "Tolerances"). Shared by dda_verify_slope and
+// tests/verification/test_slope_verification.cpp.
 #pragma once
 
 #include <string>

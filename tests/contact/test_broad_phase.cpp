@@ -1,0 +1,80 @@
+// contact/broad_phase: a polygon's grown box by hand, and the sweep's overlapping pairs
+// against brute force. (The narrow phase: test_narrow_phase.cpp.)
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "contact/broad_phase.hpp"
+#include "support/geometry_checks.hpp"
+
+using namespace dda;
+using test::check_vec;
+
+TEST_CASE("grown_box of a triangle", "[contact-geometry]") {
+  // Triangle (0,0) (4,0) (0,3): box [0,4] x [0,3], grown by 0.5: [-0.5,4.5] x [-0.5,3.5].
+  const Box b = grown_box({{0, 0}, {4, 0}, {0, 3}}, 0.5);
+  check_vec(b.min, -0.5, -0.5);
+  check_vec(b.max, 4.5, 3.5);
+}
+
+TEST_CASE("overlapping_pairs agrees with a brute-force check on 300 random boxes",
+          "[contact-geometry]") {
+  // Corners on a grid of 1/4 m (exact binary fractions), so that many boxes touch exactly
+  // (shared edges or corners) and some are zero-width or zero-height: touching counts as
+  // overlapping, decided by exact comparisons on both sides.
+  std::mt19937 rng(20261122u);
+  std::uniform_int_distribution<int> pos(0, 120);  // 0 .. 30 m in quarter metres
+  std::uniform_int_distribution<int> size(0, 8);   // 0 .. 2 m
+  std::vector<Box> boxes;
+  for (int i = 0; i < 300; ++i) {
+    const int x = pos(rng), y = pos(rng), w = size(rng), h = size(rng);
+    boxes.push_back(Box{Vec2(0.25 * x, 0.25 * y), Vec2(0.25 * (x + w), 0.25 * (y + h))});
+  }
+  // Hand-placed extra cases: two boxes sharing only a corner, two sharing an edge, and two
+  // with the same min x (ties in the sweep's sort).
+  boxes.push_back(Box{Vec2(40, 40), Vec2(41, 41)});
+  boxes.push_back(Box{Vec2(41, 41), Vec2(42, 42)});  // corner (41,41)
+  boxes.push_back(Box{Vec2(50, 40), Vec2(51, 41)});
+  boxes.push_back(Box{Vec2(51, 40.5), Vec2(52, 43)});  // edge x = 51
+  boxes.push_back(Box{Vec2(60, 40), Vec2(61, 41)});
+  boxes.push_back(Box{Vec2(60, 41), Vec2(60.5, 45)});  // same min x, touching at y = 41
+
+  std::vector<std::pair<int, int>> brute;
+  int touching = 0;
+  const int n = static_cast<int>(boxes.size());
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const Box& p = boxes[i];
+      const Box& q = boxes[j];
+      if (p.min.x() <= q.max.x() && q.min.x() <= p.max.x() && p.min.y() <= q.max.y() &&
+          q.min.y() <= p.max.y()) {
+        brute.emplace_back(i, j);  // i < j, and pushed in increasing (i, j) order
+        if (p.min.x() == q.max.x() || q.min.x() == p.max.x() || p.min.y() == q.max.y() ||
+            q.min.y() == p.max.y()) {
+          ++touching;
+        }
+      }
+    }
+  }
+  INFO(brute.size() << " overlapping pairs, " << touching << " of them touching");
+  REQUIRE(touching >= 3);  // the test does exercise touching boxes (the 3 placed ones at least)
+  REQUIRE(brute.size() > 50);  // and a good number of pairs (about 1e2 expected)
+  const std::vector<std::pair<int, int>> got = overlapping_pairs(boxes);
+  CHECK(got == brute);
+  // Its own contract, independently of the brute force: i < j, strictly increasing.
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    CHECK(got[k].first < got[k].second);
+    if (k > 0) CHECK(got[k - 1] < got[k]);
+  }
+  // The placed pairs are there.
+  CHECK(std::find(got.begin(), got.end(), std::make_pair(300, 301)) != got.end());
+  CHECK(std::find(got.begin(), got.end(), std::make_pair(302, 303)) != got.end());
+  CHECK(std::find(got.begin(), got.end(), std::make_pair(304, 305)) != got.end());
+}
+
+TEST_CASE("overlapping_pairs of no boxes and of one box is empty", "[contact-geometry]") {
+  CHECK(overlapping_pairs({}).empty());
+  CHECK(overlapping_pairs({Box{Vec2(0, 0), Vec2(1, 1)}}).empty());
+}

@@ -1,0 +1,191 @@
+// Scene energy totals against closed forms.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "support/cli_helpers.hpp"
+#include "support/contact_scenes.hpp"
+#include "io/scene_reader.hpp"
+#include "support/scene_builders.hpp"
+#include "solver/energy.hpp"
+#include "solver/run.hpp"
+#include "solver/world.hpp"
+
+using namespace dda;
+using Catch::Matchers::WithinRel;
+
+TEST_CASE("scene energy of a moving, strained block", "[energy]") {
+  Scene s = test::base_scene(1, 0.01);
+  s.blocks.push_back(test::block(test::rectangle(1.0, 2.0, 2.0, 1.0)));  // 2 m x 1 m, centroid (2, 2.5)
+  s.blocks[0].velocity = Vec3(1.0, -2.0, 3.0);
+  BlockSpec fixed = test::block(test::rectangle(-5.0, -5.0, 1.0, 1.0));
+  fixed.fixed = true;  // fixed blocks carry no energy
+  s.blocks.push_back(fixed);
+  World w = make_world(s);
+  w.blocks[0].strain = Vec3(1e-3, -2e-3, 5e-4);
+  const EnergyTotals e = scene_energy(w);
+  const double m = 2700.0 * 2.0;
+  const double inertia = m * (4.0 + 1.0) / 12.0;  // rectangle about its centroid: m (a^2 + b^2) / 12
+  // Kinetic: 1/2 m v^2 + 1/2 I omega^2 (no strain rates); potential: -m g . xc; strain:
+  // area/2 e^T D e with plane-strain D (E = 1 GPa, nu = 0.25: lambda = 0.4 GPa, G = 0.4 GPa).
+  const double lambda = 0.4e9, g = 0.4e9;
+  const double ex = 1e-3, ey = -2e-3, gxy = 5e-4;
+  const double w_strain = 0.5 * lambda * (ex + ey) * (ex + ey) + g * (ex * ex + ey * ey) + 0.5 * g * gxy * gxy;
+  // Round-off only (a few operations on O(1) values): 1e-13 relative.
+  CHECK_THAT(e.kinetic, WithinRel(0.5 * m * 5.0 + 0.5 * inertia * 9.0, 1e-13));
+  CHECK_THAT(e.potential, WithinRel(m * 9.81 * 2.5, 1e-13));
+  CHECK_THAT(e.strain_energy, WithinRel(2.0 * w_strain, 1e-13));
+}
+
+// ---- the energy account (solver/energy.hpp, docs/energy-balance.md) ----
+
+namespace {
+
+RunStats run_quietly(World& world) {
+  return run(world, [](const World&, const RunStats&) { return true; });
+}
+
+double mass_of(const World& w, const Block& b) { return material_of(w, b).density * b.moments.area; }
+
+}  // namespace
+
+TEST_CASE("energy account: a constant point load's work is the kinetic energy it gives",
+          "[energy]") {
+  // A free block (no gravity) pushed by 1 kN at its centroid for 100 steps: Shi's step is
+  // exact for a constant force (d = v0 dt + F/m dt^2/2), so K = F . x = load_work exactly.
+  Scene s = test::base_scene(100, 0.01);
+  s.gravity = Vec2::Zero();
+  s.blocks.push_back(test::block(test::rectangle(0.0, 0.0, 1.0, 0.5)));
+  s.point_loads.push_back(PointLoadSpec{{0.5, 0.25}, {1000.0, 0.0}, 0});
+  World w = make_world(s);
+  const double x0 = w.blocks[0].moments.centroid.x();
+  REQUIRE_FALSE(run_quietly(w).diverged);
+  const double work = 1000.0 * (w.blocks[0].moments.centroid.x() - x0);
+  // Round-off of sums over 100 steps of O(1e3) J: 1e-9 relative.
+  CHECK_THAT(w.energy.load_work, WithinRel(work, 1e-9));
+  CHECK_THAT(scene_energy(w).kinetic, WithinRel(work, 1e-9));
+  CHECK(std::abs(w.energy.remainder) < 1e-9 * work);
+}
+
+TEST_CASE("energy account: friction dissipates mu N times the distance slid", "[energy]") {
+  // A 1 m x 0.5 m block sliding down a 30 degree slope with 20 degree friction: the joint
+  // takes tan(20) m g cos(30) per metre slid (Coulomb), and what gravity gives beyond that
+  // is kinetic energy, to the unexplained remainder.
+  const Scene s = test::block_on_incline(30.0, 20.0, 1.0, 0.5, 0.001, 0.4);
+  World w = make_world(s);
+  const Vec2 c0 = w.blocks[1].moments.centroid;
+  const double a = 30.0 * M_PI / 180.0;
+  const Vec2 down(-std::cos(a), -std::sin(a));
+  REQUIRE_FALSE(run_quietly(w).diverged);
+  const double slid = (w.blocks[1].moments.centroid - c0).dot(down);
+  const double m = mass_of(w, w.blocks[1]);
+  const double expected = std::tan(20.0 * M_PI / 180.0) * m * 9.81 * std::cos(a) * slid;
+  INFO("slid " << slid << " m, friction " << w.energy.friction_dissipation << " J/m, expected "
+               << expected);
+  REQUIRE(slid > 0.1);  // it does slide (0.5 g (sin 30 - tan 20 cos 30) t^2 = 0.15 m)
+  // The normal force settles within the first steps from the penalty spring's initial
+  // compression, while the block has hardly moved, so the transient costs little; what
+  // remains is the block's elasticity (it squeezes and rocks on its springs): an error of
+  // the order of its strain, m g / (b E) = 1.3e-5 for this 1 m wide block at 1 GPa. Measured
+  // 9e-7 here (7.8e-6 and 8.9e-6 at dt 2 and 0.5 ms; a tenth at E = 10 GPa, the strain's
+  // 1/E): three times the strain bounds it. (1 % until 2026-11-25, 1e4 times the error.)
+  const double strain = m * 9.81 / (1.0 * 1e9);
+  CHECK_THAT(w.energy.friction_dissipation, WithinRel(expected, 3.0 * strain));
+  // Unexplained: of the order of the block's elastic energy, the stress of its weight over
+  // its width, (m g / b)^2 A / 2E = 0.044 J, 4.6e-5 of the potential energy released
+  // (m g slid sin 30); measured 0.0118 J (1.24e-5 of it at every dt from 0.5 to 2 ms, a tenth
+  // at E = 10 GPa). (1e-3 of it until 2026-11-25, 80 times the remainder.)
+  const double elastic = std::pow(m * 9.81 / 1.0, 2) * 0.5 / (2.0 * 1e9);
+  INFO("remainder " << w.energy.remainder << " J, elastic energy scale " << elastic << " J");
+  CHECK(std::abs(w.energy.remainder) < elastic);
+}
+
+TEST_CASE("energy account: a block dropped on a floor creates no energy", "[energy]") {
+  // A 0.5 m square dropped 0.1 m onto a fixed floor, friction 30 degrees, dynamic; dt over a
+  // factor 10. The impact's loss goes to damping; nothing may come out of nowhere.
+  const double dt = GENERATE(0.002, 0.0002);
+  Scene s = test::base_scene(0, dt);
+  s.control.steps.reset();
+  s.control.end_time = 0.6;
+  s.control.max_displacement_ratio = 0.01;
+  s.joint_materials[0].friction_angle = 30.0;
+  BlockSpec floor = test::block(test::rectangle(-1.0, -1.0, 3.0, 1.0));
+  floor.fixed = true;
+  s.blocks.push_back(floor);
+  s.blocks.push_back(test::block(test::rectangle(0.2, 0.1, 0.5, 0.5)));
+  World w = make_world(s);
+  const double drop = mass_of(w, w.blocks[1]) * 9.81 * 0.1;
+  const RunStats stats = run_quietly(w);
+  INFO(stats.message << " dt " << dt << ", remainder max " << w.energy.remainder_max);
+  REQUIRE_FALSE(stats.diverged);
+  // The gain never exceeds round-off, and the block comes to rest on the floor. Round-off:
+  // the account's terms are up to ~10 times the drop's energy (the potential energy from
+  // y = 0 is 3.5 times it, the damping's sum about one), and at most 3000 steps each add a
+  // few units of 1.1e-16 of them: ~1e-11 of the drop's energy if they all added up; 1e-9
+  // (measured 3.4e-12 of it at dt 2 ms, 6.9e-13 at 0.2 ms). (1e-3 of it until 2026-11-25,
+  // for the re-detection jumps docs/energy-balance.md describes; this drop shows none.)
+  CHECK(w.energy.remainder_max < 1e-9 * drop);
+  CHECK(scene_energy(w).kinetic < 1e-3 * drop);
+  CHECK(w.energy.damping_dissipation > 0.5 * drop);
+}
+
+TEST_CASE("energy account: plastic dissipation of a hardening Mohr-Coulomb soil is the integral "
+          "of c d eps_p", "[energy]") {
+  // scenes/plastic_column.json: associated Mohr-Coulomb, c = 20 kPa + 4 MPa eps_p. With
+  // f = (s1 - s3) + (s1 + s3) sin phi - 2 c cos phi and d eps_p = 2 cos phi d lambda, the
+  // dissipation s : d e_p = d lambda (f + 2 c cos phi) = c d eps_p, so over the run
+  // D = A (c0 eps_p + 2e6 eps_p^2) with the final eps_p.
+  const Scene scene = read_scene_file(std::string(DDA_SOURCE_DIR) + "/scenes/plastic_column.json");
+  World w = make_world(scene);
+  REQUIRE_FALSE(run_quietly(w).diverged);
+  const Block& soil = w.blocks[1];
+  const double ep = soil.material_state.eps_p;
+  const double expected = soil.initial_area * (2.0e4 * ep + 2.0e6 * ep * ep);
+  INFO("eps_p " << ep << ", plastic dissipation " << w.energy.plastic_dissipation);
+  REQUIRE(ep > 1e-3);
+  // The return takes c at the end of each step (backward Euler): the sum of c_end d eps_p
+  // exceeds the integral by at most the cohesion's rise per step times eps_p, 1 % here.
+  CHECK_THAT(w.energy.plastic_dissipation, WithinRel(expected, 0.02));
+  // Its elastic strain energy is A/2 s : C^-1 : s (plastic strain excluded), well below the
+  // energy of the total strain (which counted plastic strain 2.6 times too high before).
+  const Vec4 sig(soil.stress[0], soil.stress[1], soil.szz, soil.stress[2]);
+  const double e = 5.0e7, nu = 0.3;
+  const double density = (sig[0] * sig[0] + sig[1] * sig[1] + sig[2] * sig[2] -
+                          2 * nu * (sig[0] * sig[1] + sig[1] * sig[2] + sig[2] * sig[0]) +
+                          2 * (1 + nu) * sig[3] * sig[3]) / (2 * e);
+  CHECK_THAT(block_strain_energy(w, soil), WithinRel(soil.moments.area * density, 1e-12));
+}
+
+TEST_CASE("energy guard: a run that creates energy stops with exit 3 and says so", "[energy][cli]") {
+  // scenes/pendulum.json under post_adjustment (Ke; Koo and Chern): the rigid rotation of the
+  // update does not match Shi's linear T inside the step and the pinned bar gains about 2 %
+  // of its energy scale in 0.23 s (the paper reproduction shows the same gain). The guard
+  // (control.energy_tolerance, default 0.02) stops it; a larger tolerance lets it run.
+  dda::test::TempDir dir("energy_guard");
+  std::string scene = dda::test::read_file(std::string(DDA_SOURCE_DIR) + "/scenes/pendulum.json");
+  const std::string key = "\"control\": {";
+  const auto at = scene.find(key);
+  REQUIRE(at != std::string::npos);
+  scene.replace(at, key.size(), key + "\"rotation_update\": \"post_adjustment\", ");
+  // Writes the scene as NAME.json and runs it into NAME/.
+  auto run_scene = [&](const std::string& name) {
+    dda::test::write_file(dir.path / (name + ".json"), scene);
+    return dda::test::run_command(std::string(DDA_EXE) + " run " +
+                                  (dir.path / (name + ".json")).string() + " --out " +
+                                  (dir.path / name).string());
+  };
+  const dda::test::CommandResult c = run_scene("gains");
+  INFO(c.output);
+  CHECK(c.exit_code == 3);
+  CHECK(dda::test::contains(c.output, "gained without a cause"));
+  CHECK(dda::test::contains(c.output, "energy_tolerance"));
+  // What was written up to the stop is kept, and the summary says why.
+  const std::string summary = dda::test::read_file(dir.path / "gains" / "summary.json");
+  CHECK(dda::test::contains(summary, "\"diverged\": true"));
+
+  scene.replace(scene.find(key), key.size(), key + "\"energy_tolerance\": 1000, ");
+  const dda::test::CommandResult d = run_scene("allowed");
+  INFO(d.output);
+  CHECK(d.exit_code == 0);
+}

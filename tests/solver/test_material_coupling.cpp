@@ -1,0 +1,357 @@
+// Plastic blocks inside the DDA step (issue 5 item 4): a Mohr-Coulomb specimen loaded in
+// plane-strain compression through its contacts levels off at the biaxial strength
+// s1 = N s3 + 2 c sqrt(N) (docs/closed-forms.md); one that never yields gives the elastic
+// block's answer.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "io/scene_reader.hpp"
+#include "support/scene_builders.hpp"
+#include "solver/contact_detection.hpp"
+#include "kinsol_step.hpp"
+#include "solver/material_coupling.hpp"
+#include "solver/run.hpp"
+#include "solver/step.hpp"
+#include "solver/world.hpp"
+#include "material_builders.hpp"
+
+using namespace dda;
+
+namespace {
+
+constexpr double kCohesion = 1e6;   // Pa
+constexpr double kFriction = 30.0;  // degrees
+constexpr double kConfining = 1e6;  // Pa, lateral compression s3
+
+double flow_factor() {
+  const double s = std::sin(kFriction * M_PI / 180.0);
+  return (1.0 + s) / (1.0 - s);
+}
+
+// Compressive strength under confinement s3: s1 = N s3 + 2 c sqrt(N).
+double biaxial_strength() {
+  const double n = flow_factor();
+  return n * kConfining + 2.0 * kCohesion * std::sqrt(n);
+}
+
+// A fixed base, a unit-square specimen on it and a stiff elastic platen on top; no gravity,
+// frictionless joints (so that the specimen's stress is the loads' alone). The specimen is
+// confined by two opposite point loads at mid-height of its sides (a constant-strain block
+// feels them as sxx = -P / height) and compressed through the platen by a vertical point
+// load that the test grows. Static mode: every step is an equilibrium.
+struct Platen {
+  World world;
+  int specimen = 1;
+  int vertical_load = 2;  // index in world.loads
+};
+
+Platen platen_test(MaterialModel model, bool pinned = false, double dilation = kFriction) {
+  Scene s = test::base_scene(1, 0.01);
+  s.gravity = Vec2::Zero();
+  s.control.dynamic_coefficient = 0.0;
+  s.control.max_displacement_ratio = 0.01;
+  s.joint_materials[0].friction_angle = 0.0;
+  // Static mode keeps 2 M / dt^2 in the step's stiffness: each step leaves the share
+  // rho = (2 M / dt^2) / (2 M / dt^2 + k) of its load increment unbalanced. Light blocks
+  // (20 kg/m^3: 2 M/dt^2 = 4e5 N/m against k ~ 1e10 N/m) make rho ~ 4e-5.
+  s.materials[0] = elastic_material("rock", 20.0, 1e10, 0.25);
+  Material specimen = elastic_material("soil", 20.0, 1e10, 0.25);
+  test::set_model(specimen.parameters, model);
+  if (is_plastic(model)) {
+    test::strength_of(specimen.parameters).cohesion = kCohesion;
+    test::strength_of(specimen.parameters).friction_angle = kFriction;
+    // = friction: associated, a symmetric tangent
+    test::strength_of(specimen.parameters).dilation_angle = dilation;
+  }
+  s.materials.push_back(specimen);
+  BlockSpec base = test::block(test::rectangle(-1.0, -1.0, 3.0, 1.0));
+  base.fixed = true;
+  s.blocks.push_back(base);
+  BlockSpec sample = test::block(test::rectangle(0.0, 0.0, 1.0, 1.0));
+  sample.material = 1;
+  s.blocks.push_back(sample);
+  s.blocks.push_back(test::block(test::rectangle(0.0, 1.0, 1.0, 0.2)));  // the platen
+  s.point_loads.push_back(PointLoadSpec{Vec2(0.0, 0.5), Vec2(kConfining, 0.0), 1});
+  s.point_loads.push_back(PointLoadSpec{Vec2(1.0, 0.5), Vec2(-kConfining, 0.0), 1});
+  s.point_loads.push_back(PointLoadSpec{Vec2(0.5, 1.2), Vec2::Zero(), 2});
+  if (pinned) s.pins.push_back(PinSpec{Vec2(0.5, 1.2), 2});
+  return {make_world(s)};
+}
+
+// Raises the vertical load linearly to `top` (N per metre) over `steps` static steps and
+// returns the specimen's vertical stress after each, against the stress the load makes on
+// its present width (-load / width).
+struct LoadedStress {
+  std::vector<double> syy;
+  std::vector<double> expected;
+};
+LoadedStress load_up(Platen& p, double top, int steps) {
+  StepWorkspace ws;
+  RunStats stats;
+  LoadedStress out;
+  for (int k = 1; k <= steps; ++k) {
+    const double load = top * k / steps;
+    p.world.loads[p.vertical_load].force = Vec2(0.0, -load);
+    const StepOutcome outcome = advance_step(p.world, ws, stats);
+    INFO(outcome.message);
+    REQUIRE(outcome.ok);
+    const Block& b = p.world.blocks[p.specimen];
+    out.syy.push_back(b.stress[1]);
+    out.expected.push_back(-load / (b.vertices[1].x() - b.vertices[0].x()));
+  }
+  return out;
+}
+
+// Pushes the platen down by `per_step` (m) each step through a pin at its top whose anchor
+// the test moves (displacement control: past the strength a growing load has no
+// equilibrium, and the specimen would collapse); returns the specimen's vertical stress.
+std::vector<double> push_down(Platen& p, double per_step, int steps) {
+  StepWorkspace ws;
+  RunStats stats;
+  std::vector<double> syy;
+  for (int k = 1; k <= steps; ++k) {
+    p.world.pins[0].anchor.y() -= per_step;
+    const StepOutcome outcome = advance_step(p.world, ws, stats);
+    INFO(outcome.message);
+    REQUIRE(outcome.ok);
+    syy.push_back(p.world.blocks[p.specimen].stress[1]);
+  }
+  return syy;
+}
+
+// The specimen's present height (mean of its two sides; they stay parallel).
+double height_of(const Block& b) {
+  return 0.5 * (b.vertices[3].y() - b.vertices[0].y() + b.vertices[2].y() - b.vertices[1].y());
+}
+
+}  // namespace
+
+TEST_CASE("a Mohr-Coulomb block compressed through its contacts levels off at the biaxial "
+          "strength", "[plastic]") {
+  const double strength = biaxial_strength();  // 6.46 MPa
+  SECTION("load control up to 95 % of the strength: elastic, carrying the load") {
+    Platen p = platen_test(MaterialModel::MohrCoulomb);
+    REQUIRE(has_plastic_blocks(p.world));
+    const LoadedStress loaded = load_up(p, 0.95 * strength, 95);
+    // Static equilibrium through frictionless contacts: the specimen carries the platen's
+    // load, short by rho / (1 - rho) ~ 4e-5 of a ramp increment (1 % of the strength) in
+    // the steady ramp: 4e-7 of the strength; 1e-5 allows the platen and the contact springs
+    // in series (a softer chain, a larger rho) with room.
+    for (int k : {49, 94}) CHECK(std::abs(loaded.syy[k] - loaded.expected[k]) <= 1e-5 * strength);
+    CHECK(p.world.blocks[p.specimen].branch == Branch::Elastic);
+  }
+  SECTION("pushed past it: the vertical stress levels off at N s3 + 2 c sqrt(N)") {
+    Platen p = platen_test(MaterialModel::MohrCoulomb, true);
+    // Yield needs a vertical strain of about (s1 - nu/(1 - nu) s3) / E' ~ 6e-4; push to
+    // 2e-3 in 200 steps of 1e-5 m.
+    constexpr double kPush = 1e-5;
+    const std::vector<double> syy = push_down(p, kPush, 200);
+    const Block& b = p.world.blocks[p.specimen];
+    const double h = height_of(b);
+    const double n = flow_factor();
+    INFO("final syy " << syy.back() << " Pa, strength " << strength << " Pa, sxx " << b.stress[0]
+                      << ", szz " << b.szz << ", eps_p " << b.material_state.eps_p
+                      << ", height " << h);
+    // The confining loads are forces: the specimen's stress is sxx = -P / h on its present
+    // height h, which the push shortens (by 1.85e-3 here), so the closed form is
+    // s1 = N P / h + 2 c sqrt(N). The step writes equilibrium on the configuration at its
+    // start, so sxx lags one step's shortening (at most the push, 1e-5 m): |sxx + P / h| <=
+    // P kPush / h^2 (measured 0.90 of it), and s1 then N times that, 4.6e-6 of the strength
+    // (measured 4.2e-6; the lag is first order in the push per step: 1.9e-5, 9.1e-6, 4.2e-6,
+    // 1.4e-6 at 4, 2, 1, 0.5 x 1e-5 m, verification/paper's speed_plastic.csv). The return
+    // puts the stress on the yield surface to round-off (measured 1e-16 of the strength).
+    const double lag = kConfining * kPush / (h * h);
+    CHECK(std::abs(b.stress[0] + kConfining / h) <= lag);
+    CHECK(std::abs(-syy.back() - (n * kConfining / h + 2.0 * kCohesion * std::sqrt(n))) <= n * lag);
+    CHECK(std::abs(-syy.back() - (n * -b.stress[0] + 2.0 * kCohesion * std::sqrt(n))) <=
+          1e-12 * strength);
+    // Against the closed form at the nominal s3 = P (the height it started with), the
+    // shortening adds N P (1 / h - 1) <= N P 2e-3 / (1 - 2e-3) (the whole push), 9.3e-4 of the
+    // strength: 1e-3 bounds it (measured 8.6e-4). The 2 % used until 2026-11-25 was 23 times
+    // the error.
+    CHECK(std::abs(-syy.back() - strength) <= 1e-3 * strength);
+    CHECK(std::abs(b.stress[0] + kConfining) <= 2e-3 * kConfining);
+    CHECK(b.branch != Branch::Elastic);
+    CHECK(b.material_state.eps_p > 0.0);
+    // szz is the intermediate stress (the closed form's premise).
+    CHECK(b.szz < -kConfining);
+    CHECK(b.szz > -strength);
+    // Levelled off: on the plateau the specimen shortens by the push (the platen and the
+    // springs carry a constant force), so over the last 50 steps s1 rises only by the
+    // confinement's growth, N P (50 kPush) / h^2 (1500 Pa, 2.3e-4 of the strength): within
+    // 5 % of that (measured 0.3 %), where the 0.5 % of the strength used until 2026-11-25
+    // was 21 times the rise.
+    const double rise = syy[syy.size() - 50] - syy.back();
+    CHECK_THAT(rise, Catch::Matchers::WithinRel(n * kConfining * 50.0 * kPush / (h * h), 0.05));
+  }
+}
+
+TEST_CASE("a Mohr-Coulomb block that never yields gives the elastic block's results",
+          "[plastic]") {
+  // The same test at 60 % of the strength, once with the specimen elastic and once
+  // Mohr-Coulomb: the Newton iteration starts from the elastic predictor and stops after
+  // one solve, so both runs solve the same systems; 1e-10 relative leaves room for the
+  // round-off of the return's elastic branch (s0 + D (e - ep) against Shi's s + D de).
+  Platen elastic = platen_test(MaterialModel::Elastic);
+  Platen plastic = platen_test(MaterialModel::MohrCoulomb);
+  const double top = 0.6 * biaxial_strength();
+  load_up(elastic, top, 60);
+  load_up(plastic, top, 60);
+  for (std::size_t i = 0; i < elastic.world.blocks.size(); ++i) {
+    const Block& e = elastic.world.blocks[i];
+    const Block& q = plastic.world.blocks[i];
+    INFO("block " << i);
+    CHECK((e.stress - q.stress).norm() <= 1e-10 * e.stress.norm() + 1e-300);
+    for (std::size_t k = 0; k < e.vertices.size(); ++k) {
+      CHECK((e.vertices[k] - q.vertices[k]).norm() <= 1e-10 * (e.vertices[k] - e.initial_vertices[k]).norm() + 1e-15);
+    }
+  }
+  CHECK(plastic.world.blocks[1].branch == Branch::Elastic);
+}
+
+TEST_CASE("a Mohr-Coulomb block that never yields swings like the elastic block",
+          "[plastic]") {
+  // A block pinned off its centroid swinging under gravity (finite_rotation, turning through
+  // radians), once elastic and once Mohr-Coulomb with a cohesion it never reaches. The step
+  // sees a plastic block's stress in the frame of the step's start, as it sees an elastic
+  // block's, so the two runs solve the same equations: 1e-10 relative again.
+  auto swing = [](MaterialModel model) {
+    Scene s = test::base_scene(400, 0.01);
+    Material m = elastic_material("rock", 2700.0, 1e9, 0.25);
+    test::set_model(m.parameters, model);
+    if (is_plastic(model)) {
+      test::strength_of(m.parameters).cohesion = 1e9;
+      test::strength_of(m.parameters).friction_angle = 30.0;
+    }
+    s.materials[0] = m;
+    s.blocks.push_back(test::block(test::rectangle(0.0, 0.0, 2.0, 0.5)));
+    s.blocks[0].initial_stress = Vec3(2e5, -1e5, 5e4);
+    s.pins.push_back(PinSpec{Vec2(0.1, 0.25), 0});
+    World w = make_world(s);
+    const RunStats stats = run(w, [](const World&, const RunStats&) { return true; });
+    REQUIRE_FALSE(stats.diverged);
+    return w;
+  };
+  const World elastic = swing(MaterialModel::Elastic);
+  const World plastic = swing(MaterialModel::MohrCoulomb);
+  const Block& e = elastic.blocks[0];
+  const Block& q = plastic.blocks[0];
+  INFO("rotation " << e.rotation << " rad");
+  CHECK(std::abs(e.rotation) > 1.0);  // it really turned
+  CHECK(std::abs(q.rotation - e.rotation) <= 1e-10 * std::abs(e.rotation));
+  // Relative to the run's stress scale |s0|: the final stress (~600 Pa) is what is left of
+  // an oscillation that started at |s0| = 2.3e5 Pa, whose round-off it carries.
+  CHECK((q.stress - e.stress).norm() <= 1e-10 * Vec3(2e5, -1e5, 5e4).norm());
+  for (std::size_t k = 0; k < e.vertices.size(); ++k) {
+    CHECK((q.vertices[k] - e.vertices[k]).norm() <= 1e-10 * 2.0);
+  }
+  CHECK(q.branch == Branch::Elastic);
+}
+
+TEST_CASE("scenes/plastic_column.json: the soil hardens until it carries its load",
+          "[plastic]") {
+  // Unconfined plane-strain Mohr-Coulomb (sxx = 0: frictionless joints, no lateral support)
+  // holds |syy| = 2 c sqrt(N) (docs/closed-forms.md, s3 = 0). The load (98.1 kPa) exceeds
+  // the initial 2 c0 sqrt(N) = 69.3 kPa, so the soil yields and hardens along its table
+  // c = c0 + 4e6 eps_p until 2 c sqrt(N) = |syy|: eps_p = (|syy| / (2 sqrt N) - c0) / 4e6.
+  const Scene scene = read_scene_file(std::string(DDA_SOURCE_DIR) + "/scenes/plastic_column.json");
+  World world = make_world(scene);
+  const RunStats stats = run(world, [](const World&, const RunStats&) { return true; });
+  REQUIRE_FALSE(stats.diverged);
+  const Block& soil = world.blocks[1];
+  REQUIRE(soil.plastic);
+  const double n = flow_factor();
+  const double syy = soil.stress[1];
+  const double width = soil.vertices[1].x() - soil.vertices[0].x();
+  const double load = 0.5 * 20000.0 * 9.81;  // the weight block, N per metre
+  INFO("syy " << syy << " Pa, eps_p " << soil.material_state.eps_p << ", width " << width);
+  // Static mode: each step leaves rho = (2 M/dt^2) / (2 M/dt^2 + k) ~ 2 M/dt^2 / (E_soil)
+  // = 2e4 x 0.5 x 2 / 1e-4 / 5e7 ~ 4e-3 of the last change unbalanced; after 300 steps the
+  // settlement has stopped, and 1e-3 of the load covers what is left.
+  CHECK(std::abs(-syy - load / width) <= 1e-3 * load);
+  CHECK(std::abs(soil.stress[0]) <= 1e-9 * load);  // unconfined
+  // The hardening law at the stress the soil carries: the return puts the stress on the
+  // surface of the current cohesion to ~1e-12; the slack is the solve's round-off.
+  const double expected_eps_p = (-syy / (2.0 * std::sqrt(n)) - 2e4) / 4e6;
+  CHECK(std::abs(soil.material_state.eps_p - expected_eps_p) <= 1e-6 * expected_eps_p);
+  CHECK(soil.material_state.eps_p > 1e-3);  // it really yielded and hardened
+}
+
+TEST_CASE("a non-associated Mohr-Coulomb block: Newton with the unsymmetric tangent (KLU)",
+          "[plastic]") {
+  // Dilation 10 degrees: the consistent tangent is unsymmetric, the step is solved by KLU.
+  // Pushed as above, the vertical stress levels off at the same N s3 + 2 c sqrt(N) (the
+  // strength does not depend on psi), the plastic strain increments keep the ratio
+  // -(1 + sin psi)/(1 - sin psi) (docs/closed-forms.md), and each step's Newton iteration
+  // converges quadratically: the elastic predictor, one correction with the consistent
+  // tangent, and the solve that confirms it (3 solves; the symmetric part alone took 12).
+  const double psi = 10.0;
+  Platen p = platen_test(MaterialModel::MohrCoulomb, true, psi);
+  StepWorkspace ws;
+  RunStats stats;
+  Vec4 plastic_before = Vec4::Zero();
+  long solves_last_step = 0;
+  for (int k = 1; k <= 200; ++k) {
+    if (k == 150) plastic_before = p.world.blocks[p.specimen].material_state.plastic_strain;
+    p.world.pins[0].anchor.y() -= 1e-5;
+    const long before = stats.iterations;
+    const StepOutcome outcome = advance_step(p.world, ws, stats);
+    INFO(outcome.message);
+    REQUIRE(outcome.ok);
+    solves_last_step = stats.iterations - before;
+  }
+  const Block& b = p.world.blocks[p.specimen];
+  const double strength = biaxial_strength();
+  INFO("syy " << b.stress[1] << ", eps_p " << b.material_state.eps_p);
+  REQUIRE(b.branch == Branch::Plane);
+  // As in the associated test above: the shortening's N P (1 / h - 1) <= 9.3e-4 of the
+  // strength against the nominal s3 (measured 8.6e-4; 2 % until 2026-11-25), and within one
+  // step's lag N P 1e-5 / h^2 of the closed form on the present height.
+  const double h = height_of(b), n = flow_factor();
+  CHECK(std::abs(-b.stress[1] - strength) <= 1e-3 * strength);
+  CHECK(std::abs(-b.stress[1] - (n * kConfining / h + 2.0 * kCohesion * std::sqrt(n))) <=
+        n * kConfining * 1e-5 / (h * h));
+  CHECK(solves_last_step <= 3);
+  // Plastic strain increments over the last 50 steps, in the principal axes x (minor
+  // compression, s3) and y (major, s1): de_p,x / de_p,y = -(1 + sin psi)/(1 - sin psi). The
+  // return is exact for these linear surfaces (1e-9 covers round-off of the increments).
+  const Vec4 dp = b.material_state.plastic_strain - plastic_before;
+  const double sp = std::sin(psi * M_PI / 180.0);
+  CHECK_THAT(dp[0] / dp[1], Catch::Matchers::WithinRel(-(1.0 + sp) / (1.0 - sp), 1e-9));
+}
+
+TEST_CASE("KINSOL's Newton finds the step the hand-written Newton finds", "[plastic]") {
+  // The issue's alternative (KINSOL + sparse direct solve, verification/reference/kinsol_step.hpp) on one
+  // step of the non-associated platen test on its plateau, contacts in their carried
+  // modes. Static mode makes the step's increments d = v dt / 2 of the hand-written step.
+  // KINSOL stops at a residual of 1e-3 N (against forces of 6e6 N and stiffnesses of
+  // 1e10 N/m: 1e-13 m), the hand-written loop at 1e-9 of the stress: 1e-7 of |d| covers both.
+  for (const double psi : {10.0, kFriction}) {
+    Platen p = platen_test(MaterialModel::MohrCoulomb, true, psi);
+    p.world.control.rotation_update = RotationUpdate::LocalFrame;  // Shi's T in both
+    StepWorkspace ws;
+    RunStats stats;
+    for (int k = 1; k <= 150; ++k) {
+      p.world.pins[0].anchor.y() -= 1e-5;
+      REQUIRE(advance_step(p.world, ws, stats).ok);
+    }
+    REQUIRE(p.world.blocks[p.specimen].branch == Branch::Plane);
+    p.world.pins[0].anchor.y() -= 1e-5;
+    std::vector<Contact> contacts = p.world.contacts;
+    detect_contacts(p.world, contacts);
+    StepContext ctx;
+    ctx.dt = 0.01;
+    ctx.penalty = p.world.penalty;
+    ctx.dynamic_coefficient = 0.0;
+    const KinsolStepResult k = solve_step_with_kinsol(p.world, contacts, ctx, 1e-3);
+    INFO("psi " << psi << ": " << k.message << ", " << k.iterations << " iterations");
+    REQUIRE(k.ok);
+    CHECK(k.iterations <= 4);  // quadratic: the plastic correction and a confirmation
+    REQUIRE(advance_step(p.world, ws, stats).ok);
+    Eigen::VectorXd hand(p.world.dof_count);
+    for (const Block& b : p.world.blocks) {
+      if (!b.fixed) hand.segment<6>(b.first_dof) = 0.5 * ctx.dt * b.velocity;
+    }
+    CHECK((k.d - hand).norm() <= 1e-7 * hand.norm());
+  }
+}
