@@ -19,7 +19,7 @@
 #include "io/scene_reader.hpp"
 #include "kinematics/polygon.hpp"
 #include "solver/world.hpp"
-#include "material_builders.hpp"
+#include "support/material_builders.hpp"
 
 namespace fs = std::filesystem;
 

@@ -9,7 +9,7 @@
 #include "materials/finite_difference.hpp"
 #include "materials/material.hpp"
 #include "materials/yield_mohr_coulomb.hpp"
-#include "material_builders.hpp"
+#include "support/material_builders.hpp"
 
 using namespace dda;
 

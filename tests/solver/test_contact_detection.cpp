@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "../bench/brick_wall.hpp"
+#include "../../bench/brick_wall.hpp"
 #include "contact/broad_phase.hpp"
 #include "contact/carried_pairs.hpp"
 #include "support/contact_scenes.hpp"

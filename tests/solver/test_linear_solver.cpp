@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 #include <random>
 
-#include "../bench/brick_wall.hpp"
+#include "../../bench/brick_wall.hpp"
 #include "kinematics/block_matrices.hpp"
 #include "support/scene_builders.hpp"
 #include "solver/assembly.hpp"

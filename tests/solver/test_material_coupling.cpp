@@ -13,7 +13,7 @@
 #include "solver/run.hpp"
 #include "solver/step.hpp"
 #include "solver/world.hpp"
-#include "material_builders.hpp"
+#include "support/material_builders.hpp"
 
 using namespace dda;
 

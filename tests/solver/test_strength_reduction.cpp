@@ -6,14 +6,14 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "../bench/brick_wall.hpp"
+#include "../../bench/brick_wall.hpp"
 #include "support/cli_helpers.hpp"
 #include "contact/joint_law.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
 #include "solver/strength_reduction.hpp"
 #include "solver/world.hpp"
-#include "material_builders.hpp"
+#include "support/material_builders.hpp"
 
 namespace {
 

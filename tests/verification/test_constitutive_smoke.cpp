@@ -3,7 +3,7 @@
 // and one CSV per map with every grid point, no failed return, and the start on the surface
 // (error 0 at the zero increment and at every elastic point); bad arguments exit 2. It guards
 // the one-command run; the maps' numbers themselves are held by
-// tests/test_constitutive_numbers.cpp, and check_projection.py (ctest constitutive_smoke_plot)
+// tests/verification/test_constitutive_numbers.cpp, and check_projection.py (ctest constitutive_smoke_plot)
 // recomputes the smoke run's plastic points independently.
 #include <catch2/catch.hpp>
 #include <cmath>
