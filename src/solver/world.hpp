@@ -1,5 +1,7 @@
-// The world the step loop advances: blocks (each one struct, its fields marked cold, fixed at
-// construction, and hot, advanced every step), pins, point loads, time. Built once from a validated Scene (make_world), then owned by the step loop.
+// The world the step loop advances: the materials' table, blocks (each one struct, its
+// fields marked cold, fixed at construction, and hot, advanced every step; a block names its
+// material by index), pins, point loads, time. Built once from a validated Scene
+// (make_world), then owned by the step loop.
 #pragma once
 
 #include <cstdint>
