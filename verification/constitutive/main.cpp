@@ -9,6 +9,7 @@
 #include <iostream>
 #include <string>
 
+#include "../common/arguments.hpp"
 #include "report.hpp"
 
 namespace {
@@ -23,24 +24,11 @@ constexpr const char* kUsage =
 int main(int argc, char** argv) {
   using namespace dda::constitutive;
   Options opt;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--smoke") {
-      opt.smoke = true;
-    } else if (arg == "--out" && i + 1 < argc) {
-      opt.out = argv[++i];
-    } else if (arg == "--help" || arg == "-h") {
-      std::cout << kUsage;
-      return 0;
-    } else {
-      std::cerr << "dda_verify_constitutive: unexpected argument \"" << arg << "\"\n" << kUsage;
-      return 2;
-    }
-  }
-  if (opt.out.empty()) {
-    std::cerr << "dda_verify_constitutive: --out DIR is required\n" << kUsage;
-    return 2;
-  }
+  std::string out;
+  if (const auto stop = dda::verification::parse_arguments(argc, argv, "dda_verify_constitutive", kUsage, out,
+                                                           {{"--smoke", &opt.smoke}}))
+    return *stop;
+  opt.out = out;
   if (opt.smoke) {
     opt.n = 5;
     opt.min_timing_s = 0.0;

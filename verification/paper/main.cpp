@@ -10,6 +10,7 @@
 #include <iostream>
 #include <string>
 
+#include "../common/arguments.hpp"
 #include "report.hpp"
 
 namespace {
@@ -26,26 +27,11 @@ constexpr const char* kUsage =
 int main(int argc, char** argv) {
   using namespace dda::paper;
   Options opt;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--smoke") {
-      opt.smoke = true;
-    } else if (arg == "--closed-form-only") {
-      opt.closed_form_only = true;
-    } else if (arg == "--out" && i + 1 < argc) {
-      opt.out = argv[++i];
-    } else if (arg == "--help" || arg == "-h") {
-      std::cout << kUsage;
-      return 0;
-    } else {
-      std::cerr << "dda_verify_paper: unexpected argument \"" << arg << "\"\n" << kUsage;
-      return 2;
-    }
-  }
-  if (opt.out.empty()) {
-    std::cerr << "dda_verify_paper: --out DIR is required\n" << kUsage;
-    return 2;
-  }
+  std::string out;
+  if (const auto stop = dda::verification::parse_arguments(argc, argv, "dda_verify_paper", kUsage, out,
+                                                           {{"--smoke", &opt.smoke}, {"--closed-form-only", &opt.closed_form_only}}))
+    return *stop;
+  opt.out = out;
   const auto start = std::chrono::steady_clock::now();
   try {
     std::filesystem::create_directories(opt.out);
