@@ -17,3 +17,17 @@ verification_program() {
   fi
   printf '%s\n' "$exe"
 }
+
+#   out="$(verification_out_dir "$0" "[--smoke] ..." "$@")" || exit 2; shift
+#
+# prints the script's first argument, OUT_DIR, when it is one (given, not an option), and
+# otherwise prints the usage, with the script's own options, on stderr and fails.
+verification_out_dir() {
+  local script="$1" options="$2"
+  shift 2
+  if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then
+    echo "usage: $script OUT_DIR $options   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
+    return 1
+  fi
+  printf '%s\n' "$1"
+}

@@ -12,14 +12,10 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then
-  echo "usage: $0 OUT_DIR [--smoke]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
-  exit 2
-fi
-out="$1"
-shift
 # shellcheck source=../common/program.sh
 source "$root/verification/common/program.sh"
+out="$(verification_out_dir "$0" "[--smoke]" "$@")" || exit 2
+shift
 exe="$(verification_program "$0" dda_verify_paper)" || exit 2
 "$exe" --out "$out" "$@"
 /usr/bin/python3 "$here/plot_paper.py" "$out"
