@@ -138,15 +138,23 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
   for (const Contact& c : contacts) {
     if (c.state.mode == ContactMode::Open) continue;
     // The normal spring's force is taken at the step's end, -k g_end, over the whole step:
-    // its work -k g_end (g_end - g_start) falls short of the rise of the stored energy
-    // (k/2 g^2 while penetrating) by what the scheme removes: k/2 (g_end - g_start)^2 for
+    // its work -k g_end (g_end - g_start) falls short of the rise of the stored energy by
+    // what the scheme removes: k/2 (g_end - g_start)^2 for
     // a contact closed throughout, k/2 g_end^2 + k |g_end| g_start for one that closed
     // during the step from a gap g_start > 0 (the impact's loss). An augmented contact adds
     // the multiplier's force p s (ContactState::rest_shift), constant over the step; its work
     // on the blocks, p s (g_end - g_start), is multiplier_work.
     const double g0 = c.gap, g1 = c.iterate.new_gap;
     s.multiplier_work += kn * c.state.rest_shift * (g1 - g0);
-    const double stored_start = 0.5 * kn * std::min(g0, 0.0) * std::min(g0, 0.0);
+    // What the spring held at the start is what contact_energy() booked at the last step's
+    // end: k/2 g^2 for a contact closed then, at either sign of g (a closed spring is linear:
+    // a bonded contact in tension, g > 0, holds k/2 g^2 too), and for an open one that
+    // penetrated. Counting only penetration (min(g, 0)) lost k/2 g^2 a step from every
+    // contact held in tension (until 2026-11-25).
+    const ContactMode start_mode =
+        c.iterate.mode_changes > 0 ? c.iterate.start_mode : c.state.mode;
+    const double stored_start =
+        start_mode != ContactMode::Open || g0 < 0.0 ? 0.5 * kn * g0 * g0 : 0.0;
     s.damping_dissipation += kn * g1 * (g1 - g0) - (0.5 * kn * g1 * g1 - stored_start);
     double brought = stored_start;
     if (c.state.mode == ContactMode::Lock) {

@@ -60,7 +60,9 @@ const char* mesh_name(Mesh m) {
 
 std::string FootingCase::label() const {
   char buf[96];
-  if (penalty_factor != 50.0) {
+  if (!rotation_update.empty()) {
+    std::snprintf(buf, sizeof buf, "%s_h%g_n%d_%s", mesh_name(mesh), cell, steps, rotation_update.c_str());
+  } else if (penalty_factor != 50.0) {
     std::snprintf(buf, sizeof buf, "%s_h%g_n%d_p%g", mesh_name(mesh), cell, steps, penalty_factor);
   } else if (friction_angle == 0.0) {
     std::snprintf(buf, sizeof buf, "%s_h%g_n%d", mesh_name(mesh), cell, steps);
@@ -159,6 +161,7 @@ Scene footing_scene(const FootingCase& c) {
       {"pins", Json::array({{{"point", point(0.25 * c.half_width, 0.5 * tf)}},
                             {{"point", point(0.75 * c.half_width, 0.5 * tf)}}})},
   };
+  if (!c.rotation_update.empty()) scene["control"]["rotation_update"] = c.rotation_update;
   return parse_scene_text(scene.dump(), "footing " + c.label());
 }
 

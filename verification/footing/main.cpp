@@ -29,7 +29,7 @@ using namespace dda::footing;
 namespace fmt = dda::verification;
 
 constexpr const char* kUsage =
-    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|uniform|both|all] [--phi DEG] [--penalty F] [--jobs N]\n"
+    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|uniform|both|all] [--phi DEG] [--penalty F] [--rotation R] [--jobs N]\n"
     "  --out DIR     write curves.csv, runs.csv, zone_*.csv and report.md into DIR\n"
     "  --smoke       the coarsest crossed mesh (h = 0.5 m) at 150 steps only\n"
     "  --cells LIST  cell sides h (m), default 0.5,0.25,0.125,0.0625\n"
@@ -38,6 +38,7 @@ constexpr const char* kUsage =
     "                uniform (one, all the same way), both (crossed and diagonal) or all\n"
     "  --phi DEG     the soil's friction angle (= dilation angle: associated), default 0 (Tresca)\n"
     "  --penalty F   contact and pin penalty F x E (default 50, Shi's auto)\n"
+    "  --rotation R  control.rotation_update (default the scene's, finite_rotation)\n"
     "  --jobs N      runs at once (default 1)\n";
 
 std::vector<double> numbers(const std::string& text) {
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
   int jobs = 1;
   double friction = 0.0;
   double penalty = 50.0;
+  std::string rotation;
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -84,6 +86,8 @@ int main(int argc, char** argv) {
         penalty = std::stod(argv[++i]);
       } else if (arg == "--phi" && i + 1 < argc) {
         friction = std::stod(argv[++i]);
+      } else if (arg == "--rotation" && i + 1 < argc) {
+        rotation = argv[++i];
       } else if (arg == "--jobs" && i + 1 < argc) {
         jobs = std::max(1, std::atoi(argv[++i]));
       } else if (arg == "--help" || arg == "-h") {
@@ -118,6 +122,7 @@ int main(int argc, char** argv) {
           c.steps = static_cast<int>(n);
           c.friction_angle = friction;
           c.penalty_factor = penalty;
+          c.rotation_update = rotation;
           cases.push_back(c);
         }
       }
