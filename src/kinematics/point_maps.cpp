@@ -51,4 +51,18 @@ Mat2 frame_map_as_printed(double r, const Vec3& local_strain) {
   return rot + rot * strain_tensor(local_strain) * rot.transpose();
 }
 
+PolarDecomposition polar_decomposition(const Mat2& f, double near) {
+  // In 2D the rotation of F = R U is the angle of (F00 + F11, F10 - F01): R^T F symmetric
+  // means its antisymmetric part, cos t (F10 - F01) - sin t (F00 + F11), vanishes; with
+  // det F > 0 the sign that makes U positive definite is the one with trace(R^T F) > 0.
+  const double principal = std::atan2(f(1, 0) - f(0, 1), f(0, 0) + f(1, 1));
+  const double two_pi = 2.0 * M_PI;
+  PolarDecomposition p;
+  p.angle = principal + two_pi * std::round((near - principal) / two_pi);
+  const Mat2 u = rotation_matrix(-principal) * f;
+  const double off = 0.5 * (u(0, 1) + u(1, 0));  // symmetric to round-off
+  p.strain = Vec3(u(0, 0) - 1.0, u(1, 1) - 1.0, 2.0 * off);
+  return p;
+}
+
 }  // namespace dda

@@ -34,4 +34,13 @@ Vec2 finite_rotation_displacement(const Vec2& offset, const Vec6& db);
 Mat2 frame_map(double r, const Vec3& local_strain);
 Mat2 frame_map_as_printed(double r, const Vec3& local_strain);
 
+// The polar decomposition of a 2x2 map with positive determinant, F = R(angle) U, U
+// symmetric positive definite. `angle` is the branch nearest `near` (continuous with it);
+// `strain` is U - I as [e^x, e^y, g^xy] (Biot strain, engineering shear g^xy = 2 U_xy).
+struct PolarDecomposition {
+  double angle = 0.0;
+  Vec3 strain = Vec3::Zero();
+};
+PolarDecomposition polar_decomposition(const Mat2& f, double near);
+
 }  // namespace dda

@@ -70,6 +70,28 @@ Vec3 local_increment(const Block& b, const Vec6& db) {
   return strain_in_turned_frame(db.segment<3>(kEx), mid_step_frame_angle(b, db));
 }
 
+// finite_rotation_polar, a free deformable block: its rotation, block-frame strain and map
+// after the step. The step's T moved the present shape x - xc = F (X - Xc), F = R(r)(I + E^),
+// by (R(r0) + dE) (the secant column at the step's own r0 is exactly R(r0) - I; the strain
+// columns carry the global-frame increment dE), so F' = (R(r0) + dE) F; then F' = R(r') U',
+// r' nearest r + r0, E^' = U' - I.
+struct PolarStep {
+  double rotation = 0.0;
+  Vec3 local_strain = Vec3::Zero();
+  Mat2 map = Mat2::Identity();
+};
+
+PolarStep polar_step(const Block& b, const Vec6& db) {
+  const Mat2 f = frame_map(b.rotation, b.local_strain);
+  const Mat2 after = (rotation_matrix(db[kR0]) + strain_tensor(db.segment<3>(kEx))) * f;
+  const PolarDecomposition p = polar_decomposition(after, b.rotation + db[kR0]);
+  return {p.angle, p.strain, after};
+}
+
+bool places_by_polar(RotationUpdate treatment, const Block& b) {
+  return treatment == RotationUpdate::FiniteRotationPolar && !b.fixed && !b.rigid;
+}
+
 // x = xc + A (X - Xc): the block's map from its initial configuration.
 Vec2 place(const Block& b, const Mat2& a, const Vec2& material_point) {
   return b.initial_centroid + b.translation + a * (material_point - b.initial_centroid);
@@ -83,15 +105,26 @@ Vec2 place(const Block& b, const Mat2& a, const Vec2& material_point) {
 template <class FrameMap>
 void rebuild_in_frame(World& world, const Eigen::VectorXd& d, FrameMap frame_map) {
   std::vector<Mat2> maps(world.blocks.size(), Mat2::Identity());
+  const RotationUpdate treatment = world.control.rotation_update;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     Block& b = world.blocks[i];
     if (b.fixed) continue;
     const Vec6 db = increments_of(b, d);
     b.translation += db.head<2>();
-    b.rotation += db[kR0];
-    b.local_strain += local_increment(b, db);
-    b.strain = strain_from_turned_frame(b.local_strain, b.rotation);
-    maps[i] = frame_map(b.rotation, b.local_strain);
+    if (places_by_polar(treatment, b)) {
+      const PolarStep p = polar_step(b, db);
+      b.last_local_increment = p.local_strain - b.local_strain;
+      b.rotation = p.rotation;
+      b.local_strain = p.local_strain;
+      b.strain = strain_from_turned_frame(b.local_strain, b.rotation);
+      maps[i] = p.map;
+    } else {
+      b.rotation += db[kR0];
+      b.last_local_increment = local_increment(b, db);
+      b.local_strain += b.last_local_increment;
+      b.strain = strain_from_turned_frame(b.local_strain, b.rotation);
+      maps[i] = frame_map(b.rotation, b.local_strain);
+    }
     for (std::size_t k = 0; k < b.vertices.size(); ++k) {
       b.vertices[k] = place(b, maps[i], b.initial_vertices[k]);
     }
@@ -148,6 +181,7 @@ void move_blocks(World& world, const Eigen::VectorXd& d) {
       move_by_increments(world, d, sine_column_displacement);
       return;
     case RotationUpdate::FiniteRotation:  // local_frame's map; the step used the secant T
+    case RotationUpdate::FiniteRotationPolar:  // deformable blocks: the step's own map, polar
       rebuild_in_frame(world, d, frame_map);
       return;
   }
@@ -159,8 +193,17 @@ Vec3 block_frame_increment(const Block& b, const Vec6& db) {
   return strain_in_turned_frame(db.segment<3>(kEx), b.rotation + 0.5 * db[kR0]);
 }
 
+Vec3 block_frame_increment(RotationUpdate treatment, const Block& b, const Vec6& db) {
+  if (places_by_polar(treatment, b)) return polar_step(b, db).local_strain - b.local_strain;
+  return block_frame_increment(b, db);
+}
+
 Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db) {
   if (b.fixed) return b.vertices[k];
+  if (places_by_polar(treatment, b)) {
+    return b.initial_centroid + b.translation + db.head<2>() +
+           polar_step(b, db).map * (b.initial_vertices[k] - b.initial_centroid);
+  }
   const Vec2 offset = b.vertices[k] - b.moments.centroid;
   switch (treatment) {
     case RotationUpdate::Original: return b.vertices[k] + shi_t().at(offset) * db;
@@ -170,7 +213,8 @@ Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const
     case RotationUpdate::SinVariable: return b.vertices[k] + sine_column_displacement(b, offset, db);
     case RotationUpdate::LocalFrame:
     case RotationUpdate::LocalFrameAsPrinted:
-    case RotationUpdate::FiniteRotation: {
+    case RotationUpdate::FiniteRotation:
+    case RotationUpdate::FiniteRotationPolar: {  // (its rigid blocks)
       // rebuild_in_frame's rule: the step's r0 and strain increment (turned by the
       // mid-step angle) added, then x = xc + A (X - Xc).
       const double rotation = b.rotation + db[kR0];
@@ -242,7 +286,7 @@ void update_velocities(World& world, const Eigen::VectorXd& d, const StepContext
       // Paper Section 4, steps 6 and 7: the strain rates advance in the block frame with the
       // local increment; step 8: turned to the global frame for the next step's inertia term.
       b.local_strain_rate =
-          2.0 / ctx.dt * local_increment(b, db) - ctx.dynamic_coefficient * b.local_strain_rate;
+          2.0 / ctx.dt * b.last_local_increment - ctx.dynamic_coefficient * b.local_strain_rate;
       b.velocity.segment<3>(kEx) = strain_from_turned_frame(b.local_strain_rate, b.rotation);
     } else {
       b.local_strain_rate = strain_in_turned_frame(b.velocity.segment<3>(kEx), b.rotation);

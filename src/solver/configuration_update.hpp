@@ -32,6 +32,9 @@ void update_configuration(World& world, const Eigen::VectorXd& d);
 // the mid-step angle b.rotation + r0 / 2, for a block not yet updated (the update takes the
 // same angle from its updated rotation). The local-frame treatments accumulate it.
 Vec3 block_frame_increment(const Block& b, const Vec6& db);
+// The same for the given treatment: finite_rotation_polar's deformable blocks take the change
+// of the polar decomposition's strain over the step instead.
+Vec3 block_frame_increment(RotationUpdate treatment, const Block& b, const Vec6& db);
 
 // Where vertex k of block b will be after update_configuration with the block's increments
 // db, without moving anything (the same rule per treatment; tests check that the two agree).

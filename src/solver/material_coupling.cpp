@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "kinematics/frames.hpp"
+#include "solver/configuration_update.hpp"
 #include "materials/material.hpp"
 
 namespace dda {
@@ -75,6 +76,11 @@ std::vector<MaterialLinearization> start_linearization(const World& world) {
 Vec3 material_strain_after(const World& world, const Block& b, const Vec6& db) {
   const Vec3 increment = db.segment<3>(kEx);
   if (!keeps_block_frame(world.control.rotation_update)) return b.strain + increment;
+  // finite_rotation_polar: the strain its update will commit (the tangent in evaluate()
+  // still takes the start-angle turn, an approximation of this strain's derivative).
+  if (world.control.rotation_update == RotationUpdate::FiniteRotationPolar) {
+    return b.local_strain + block_frame_increment(world.control.rotation_update, b, db);
+  }
   // The start angle, as in evaluate(); the update adds the same increment at the mid-step
   // angle, a difference of r0/2 of the increment's turn, second order in the step.
   return b.local_strain + strain_in_turned_frame(increment, b.rotation);

@@ -30,6 +30,10 @@ enum class RotationUpdate {
   LocalFrame,           // Jiang and Zheng Sections 3-4, x = xc + R(r)(I + E^)(X - Xc)
   LocalFrameAsPrinted,  // the same with Eq. 19 as printed (global strain on X - Xc)
   FiniteRotation,       // local frame plus the secant rotation column in T (the default)
+  // finite_rotation's step, but each deformable block placed by the map the step's T
+  // applied, F' = (R(r0) + dE) F, and its rotation and block-frame (Biot) strain taken from
+  // the polar decomposition F' = R(r) U (docs/polar-placement-prototype.md). A prototype.
+  FiniteRotationPolar,
 };
 
 using RotationUpdateName = EnumName<RotationUpdate>;
@@ -43,6 +47,7 @@ inline constexpr RotationUpdateName kRotationUpdateNames[] = {
     {RotationUpdate::LocalFrame, "local_frame"},
     {RotationUpdate::LocalFrameAsPrinted, "local_frame_as_printed"},
     {RotationUpdate::FiniteRotation, "finite_rotation"},
+    {RotationUpdate::FiniteRotationPolar, "finite_rotation_polar"},
 };
 
 inline std::string_view rotation_update_name(RotationUpdate u) {
@@ -53,7 +58,7 @@ inline std::string_view rotation_update_name(RotationUpdate u) {
 // (paper Section 3) rather than adding strain increments in the global frame (Eq. 13).
 inline bool keeps_block_frame(RotationUpdate u) {
   return u == RotationUpdate::LocalFrame || u == RotationUpdate::LocalFrameAsPrinted ||
-         u == RotationUpdate::FiniteRotation;
+         u == RotationUpdate::FiniteRotation || u == RotationUpdate::FiniteRotationPolar;
 }
 
 // How a deformable block's inertia is taken (control.inertia; docs/rotating-inertia.md).

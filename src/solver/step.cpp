@@ -82,7 +82,8 @@ StepContext make_step_context(const World& world, double dt) {
 // with the last step's r0 (paper Eq. 11); finite_rotation the secant column at r* (starting
 // from the last step's r0, then following the step's own). The rest keep Shi's column.
 bool changes_t(RotationUpdate u) {
-  return u == RotationUpdate::SinVariable || u == RotationUpdate::FiniteRotation;
+  return u == RotationUpdate::SinVariable || u == RotationUpdate::FiniteRotation ||
+         u == RotationUpdate::FiniteRotationPolar;
 }
 
 void set_rotation_columns(const World& world, const std::vector<double>& angles,
@@ -149,7 +150,8 @@ void follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx
     const Block& b = world.blocks[i];
     if (b.fixed || b.rigid) continue;
     const Vec6 db = d.segment<6>(b.first_dof);
-    ctx.spins[i] = Spin{db[kR0] / ctx.dt, block_frame_increment(b, db) / ctx.dt};
+    ctx.spins[i] = Spin{db[kR0] / ctx.dt,
+                        block_frame_increment(world.control.rotation_update, b, db) / ctx.dt};
   }
 }
 
@@ -296,7 +298,8 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     }
     r.d = *solved;
     contacts = update_contact_modes(world, world.contacts, r.d, ctx);
-    if (treatment == RotationUpdate::FiniteRotation) {
+    if (treatment == RotationUpdate::FiniteRotation ||
+        treatment == RotationUpdate::FiniteRotationPolar) {
       secants_moved = follow_secant_angles(world, r.d, angles);
       if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
       if (spinning) follow_spins(world, r.d, ctx);

@@ -77,6 +77,9 @@ struct Block {
   // The last step's rotation increment r0 (rad): sin_variable builds T' from it (Cheng and
   // Zhang), finite_rotation starts its secant iteration from it.
   double last_rotation_increment = 0.0;
+  // finite_rotation_polar: the last step's block-frame strain increment, the change of the
+  // polar decomposition's strain (the strain rate's increment).
+  Vec3 last_local_increment = Vec3::Zero();
   // Plastic blocks: the material state (plastic strain, eps_p) at the end of the last step,
   // the out-of-plane stress and the return branch it took.
   MaterialState material_state;

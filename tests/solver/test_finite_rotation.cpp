@@ -268,3 +268,140 @@ TEST_CASE("finite_rotation places a strained block off the step's T by the incre
   // Tens of microns, beside contact gaps F / k of a few microns (penalty 50 E).
   CHECK(largest > 6e-5);
 }
+
+namespace {
+
+// A triangle in the shear-band state of the test above, turned by `turned` as well, with the
+// state finite_rotation_polar keeps (rotation, Biot strain) and its vertices placed by it.
+World strained_triangle(RotationUpdate treatment, double turned, const Vec3& total) {
+  Scene s = test::base_scene(1, 0.01);
+  s.control.rotation_update = treatment;
+  s.blocks.push_back(test::block({{0.0, 0.0}, {0.0625, 0.0}, {0.03125, 0.03125}}));
+  World w = make_world(s);
+  Block& b = w.blocks[0];
+  b.rotation = turned;
+  b.local_strain = total;
+  b.strain = strain_from_turned_frame(total, turned);
+  const Mat2 f = frame_map(turned, total);
+  for (std::size_t k = 0; k < b.vertices.size(); ++k) {
+    b.vertices[k] = b.initial_centroid + f * (b.initial_vertices[k] - b.initial_centroid);
+  }
+  b.moments = polygon_moments(b.vertices);
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("finite_rotation_polar places a strained block where the step's T puts it",
+          "[rotation][energy][polar]") {
+  // The defect measured above (finite_rotation off by -dE E (X - Xc), 6.6e-5 m here) is gone:
+  // the polar treatment places every vertex by the map T applied, x + T (x - xc) d, with T's
+  // secant column at the step's own r0. Checked unturned (the test above) and turned by 0.4
+  // rad with r0 = 0.02 (the global-frame dE then acts on a turned, strained shape).
+  const Vec3 total(0.05, -0.05, 0.6);
+  const Vec3 increment(0.001, -0.001, 0.013);
+  for (const double turned : {0.0, 0.4}) {
+    for (const double r0 : {0.0, 0.02}) {
+      World w = strained_triangle(RotationUpdate::FiniteRotationPolar, turned, total);
+      const Block& b = w.blocks[0];
+      Vec6 db = Vec6::Zero();
+      db.head<2>() = Vec2(1e-4, -2e-4);
+      db[kR0] = r0;
+      db.segment<3>(kEx) = increment;
+      const LinearT t = t_with_rotation_column(secant_rotation_column(r0));
+      std::vector<Vec2> linear;
+      for (std::size_t k = 0; k < b.vertices.size(); ++k) {
+        linear.push_back(b.vertices[k] + t.at(b.vertices[k] - b.moments.centroid) * db);
+        const Vec2 placed = vertex_after(RotationUpdate::FiniteRotationPolar, b, k, db);
+        INFO("turned " << turned << ", r0 " << r0 << ", vertex " << k << ", offset "
+                       << (placed - linear.back()).norm());
+        // Round-off of positions of 0.06 m (ulp 7e-18) through a dozen operations, and of
+        // the centroid xc (of the shoelace formula) against initial_centroid + translation:
+        // 1e-15 m, 60 times below finite_rotation's 6.6e-5 m offset.
+        CHECK((placed - linear.back()).norm() < 1e-15);
+      }
+      // The update itself places them there, and keeps a state that rebuilds the same map.
+      Eigen::VectorXd d = db;
+      update_configuration(w, d);
+      const Block& after = w.blocks[0];
+      for (std::size_t k = 0; k < after.vertices.size(); ++k) {
+        CHECK((after.vertices[k] - linear[k]).norm() < 1e-15);
+        const Vec2 rebuilt = after.initial_centroid + after.translation +
+                             frame_map(after.rotation, after.local_strain) *
+                                 (after.initial_vertices[k] - after.initial_centroid);
+        // F' = R(r') U' to round-off of O(1) matrix entries times offsets of 0.03 m.
+        CHECK((rebuilt - linear[k]).norm() < 1e-15);
+      }
+      // The rotation is continuous: near r + r0, off it only by the strain's spin.
+      CHECK(std::abs(after.rotation - (turned + r0)) < 0.05);
+    }
+  }
+}
+
+TEST_CASE("finite_rotation_polar: a block that only turns moves as under finite_rotation",
+          "[rotation][polar]") {
+  // The spinning octagon of the finite_rotation test above: no strain but round-off, so
+  // F' = R(r0) R(r) = R(r + r0) and the polar decomposition returns r + r0 and U = I. The two
+  // treatments differ only by round-off: the total angle, 60 rad at the end (ulp 7e-15), is
+  // rounded each step in both (r + r0 there, atan2 + 2 pi k here), at most an ulp apart per
+  // step: 2000 x 7e-15 = 1.4e-11 rad, and as much in metres on vertices 1 m from the centre
+  // (measured: 1.4e-12). A strain-coupled drift would be orders larger.
+  const auto spin = [](RotationUpdate treatment) {
+    Scene s = test::base_scene(2000, 0.01);
+    s.gravity = Vec2::Zero();
+    s.control.rotation_update = treatment;
+    s.control.inertia = Inertia::Shi;
+    BlockSpec b = test::block(test::regular_polygon(8, 1.0));
+    b.velocity = Vec3(0.0, 0.0, 3.0);
+    s.blocks.push_back(b);
+    World world = make_world(s);
+    const RunStats stats = run(world, [](const World&, const RunStats&) { return true; });
+    REQUIRE_FALSE(stats.diverged);
+    return world;
+  };
+  const World plain = spin(RotationUpdate::FiniteRotation);
+  const World polar = spin(RotationUpdate::FiniteRotationPolar);
+  const Block& a = plain.blocks[0];
+  const Block& b = polar.blocks[0];
+  INFO("rotation " << a.rotation << " vs " << b.rotation << ", difference "
+                    << std::scientific << a.rotation - b.rotation);
+  CHECK(std::abs(a.rotation - b.rotation) <= 2e-11);
+  // Round-off strain: ulps of O(1) entries of U, not accumulated (F is rebuilt from it).
+  CHECK(b.local_strain.cwiseAbs().maxCoeff() <= 1e-12);
+  for (std::size_t k = 0; k < a.vertices.size(); ++k) {
+    CHECK((a.vertices[k] - b.vertices[k]).norm() <= 2e-11);
+  }
+}
+
+TEST_CASE("finite_rotation_polar: the area is A0 det(U) after every step", "[rotation][polar]") {
+  // local_frame's area test (test_configuration_update.cpp) under the polar treatment: the
+  // block is placed by F' = R(r) U, so its area is A0 det U with no false expansion.
+  Scene s = test::base_scene(2000, 0.005);
+  s.control.rotation_update = RotationUpdate::FiniteRotationPolar;
+  s.control.penalty = 1e10;
+  s.blocks.push_back(test::block(test::l_shape()));
+  s.blocks[0].initial_stress = Vec3(2e6, -1e6, 5e5);
+  s.blocks[0].velocity = Vec3(0.0, 0.0, 2.0);
+  s.pins.push_back(PinSpec{{0.25, 0.25}, 0});
+  World world = make_world(s);
+  const double a0 = world.blocks[0].initial_area;
+  double worst = 0.0;
+  double largest_strain = 0.0;
+  double largest_rotation = 0.0;
+  const RunStats stats = run(world, [&](const World& w, const RunStats&) {
+    const Block& b = w.blocks[0];
+    const Mat2 stretch = Mat2::Identity() + strain_tensor(b.local_strain);
+    worst = std::max(worst, std::abs(b.moments.area - a0 * stretch.determinant()) / a0);
+    largest_strain = std::max(largest_strain, b.local_strain.cwiseAbs().maxCoeff());
+    largest_rotation = std::max(largest_rotation, std::abs(b.rotation));
+    return true;
+  });
+  REQUIRE_FALSE(stats.diverged);
+  CHECK(largest_strain >= 1e-4);
+  CHECK(largest_rotation >= 1.0);
+  // As in local_frame's test: shoelace round-off on coordinates of ~2 m, a few 1e-16
+  // relative, not accumulated (the polygon is rebuilt from (r, U) each step); U' is
+  // symmetric only to round-off (its antisymmetric remainder, ~1e-16, is dropped): 1e-14.
+  INFO("worst relative area error " << worst);
+  CHECK(worst <= 1e-14);
+}
