@@ -35,6 +35,14 @@ double shear_spring_energy(const Contact& c, double ks) {
   return f * f / (2.0 * ks);
 }
 
+// A contact's normal spring energy k/2 g^2 in `mode` at gap g: a closed spring is linear,
+// so it holds it at either sign of g (a bonded contact in tension, g > 0, too); an open
+// contact that penetrates (g < 0) holds it as well, and the next step's spring gives it back
+// although no work put it there (the account then shows it).
+double normal_spring_energy(ContactMode mode, double gap, double kn) {
+  return mode != ContactMode::Open || gap < 0.0 ? 0.5 * kn * gap * gap : 0.0;
+}
+
 // A plastic block's stress with its out-of-plane component, (xx, yy, zz, xy).
 Vec4 stress4(const Block& b) { return Vec4(b.stress[0], b.stress[1], b.szz, b.stress[2]); }
 
@@ -52,12 +60,9 @@ double contact_energy(const World& world, const std::vector<Contact>& contacts, 
   const double ks = kShearSpringRatio * penalty;
   double e = 0.0;
   for (const Contact& c : contacts) {
-    // An open contact that ends penetrating holds that energy too: the next step's spring
-    // gives it back although no work put it there (the account then shows it).
     // (An augmented contact's multiplier force p s is not a spring: its work is a term of
     // its own, multiplier_work.)
-    const double g = c.iterate.new_gap;
-    if (c.state.mode != ContactMode::Open || g < 0.0) e += 0.5 * penalty * g * g;
+    e += normal_spring_energy(c.state.mode, c.iterate.new_gap, penalty);
     e += shear_spring_energy(c, ks);
   }
   for (const Pin& pin : world.pins) {
@@ -147,14 +152,12 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     const double g0 = c.gap, g1 = c.iterate.new_gap;
     s.multiplier_work += kn * c.state.rest_shift * (g1 - g0);
     // What the spring held at the start is what contact_energy() booked at the last step's
-    // end: k/2 g^2 for a contact closed then, at either sign of g (a closed spring is linear:
-    // a bonded contact in tension, g > 0, holds k/2 g^2 too), and for an open one that
-    // penetrated. Counting only penetration (min(g, 0)) lost k/2 g^2 a step from every
-    // contact held in tension (until 2026-11-25).
+    // end, by the same rule in the mode the contact started the step in. Counting only
+    // penetration (min(g, 0)) lost k/2 g^2 a step from every contact held in tension (until
+    // 2026-11-25).
     const ContactMode start_mode =
         c.iterate.mode_changes > 0 ? c.iterate.start_mode : c.state.mode;
-    const double stored_start =
-        start_mode != ContactMode::Open || g0 < 0.0 ? 0.5 * kn * g0 * g0 : 0.0;
+    const double stored_start = normal_spring_energy(start_mode, g0, kn);
     s.damping_dissipation += kn * g1 * (g1 - g0) - (0.5 * kn * g1 * g1 - stored_start);
     double brought = stored_start;
     if (c.state.mode == ContactMode::Lock) {
