@@ -61,6 +61,12 @@ inline bool keeps_block_frame(RotationUpdate u) {
          u == RotationUpdate::FiniteRotation || u == RotationUpdate::FiniteRotationPolar;
 }
 
+// Treatments whose T carries the secant rotation column at the step's own r0, iterated with
+// the open-close loop (docs/paper-errata.md, item 6): finite_rotation and its polar variant.
+inline bool uses_secant_rotation(RotationUpdate u) {
+  return u == RotationUpdate::FiniteRotation || u == RotationUpdate::FiniteRotationPolar;
+}
+
 // How a deformable block's inertia is taken (control.inertia; docs/rotating-inertia.md).
 enum class Inertia {
   // Shi's: the mass matrix int rho T^T T over the current polygon at the given density, and

@@ -82,8 +82,7 @@ StepContext make_step_context(const World& world, double dt) {
 // with the last step's r0 (paper Eq. 11); finite_rotation the secant column at r* (starting
 // from the last step's r0, then following the step's own). The rest keep Shi's column.
 bool changes_t(RotationUpdate u) {
-  return u == RotationUpdate::SinVariable || u == RotationUpdate::FiniteRotation ||
-         u == RotationUpdate::FiniteRotationPolar;
+  return u == RotationUpdate::SinVariable || uses_secant_rotation(u);
 }
 
 void set_rotation_columns(const World& world, const std::vector<double>& angles,
@@ -298,8 +297,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     }
     r.d = *solved;
     contacts = update_contact_modes(world, world.contacts, r.d, ctx);
-    if (treatment == RotationUpdate::FiniteRotation ||
-        treatment == RotationUpdate::FiniteRotationPolar) {
+    if (uses_secant_rotation(treatment)) {
       secants_moved = follow_secant_angles(world, r.d, angles);
       if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
       if (spinning) follow_spins(world, r.d, ctx);
