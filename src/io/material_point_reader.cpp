@@ -62,7 +62,7 @@ PathSegment read_segment(const Field& f) {
 // The start must be a state the material can be in: a stress outside the yield surface would
 // be returned onto it at step 0, before any of the path, with plastic strain from nowhere.
 void check_initial_stress(const Field& f, const MaterialPointSpec& spec) {
-  if (spec.plane == PlaneMode::Stress && spec.initial_stress[kZZ] != 0.0) {
+  if (spec.parameters().plane == PlaneMode::Stress && spec.initial_stress[kZZ] != 0.0) {
     f.fail("szz must be 0 in plane stress, got " + format_number(spec.initial_stress[kZZ]));
   }
   const MaterialResult at_start =
@@ -83,8 +83,9 @@ MaterialPointSpec read_spec(const Field& root, const std::string& source) {
   MaterialPointSpec spec;
   spec.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
-  if (auto g = root.optional_member("plane")) spec.plane = input::read_plane(*g);
-  spec.material = input::read_material("material", root.member("material"), spec.plane);
+  PlaneMode plane = PlaneMode::Strain;
+  if (auto g = root.optional_member("plane")) plane = input::read_plane(*g);
+  spec.material = input::read_material("material", root.member("material"), plane);
   if (spec.material.rigid) {
     // The key belongs to scenes (blocks of the material get no strain); a point of a
     // rigid material would have no strain path to follow.

@@ -17,8 +17,7 @@ namespace dda {
 
 struct MaterialPointSpec {
   std::string source;  // file name
-  Material material;   // named "material"
-  PlaneMode plane = PlaneMode::Strain;
+  Material material;   // named "material"; its parameters carry the spec's plane mode
   Vec4 initial_stress = Vec4::Zero();  // sxx, syy, szz, sxy (Pa), tension positive
   std::vector<PathSegment> path;       // at least one segment, each with steps >= 1
 
