@@ -577,7 +577,8 @@ TEST_CASE("plastic materials land in the Material struct, defaults where left ou
   minimal = without(minimal, "/materials/clay/match");
   const dda::Scene defaults = dda::parse_scene_text(minimal, "minimal.json");
   CHECK(dda::test::strength_of(defaults.materials[2].parameters).dilation_angle == 0.0);
-  CHECK_FALSE(dda::test::mohr_coulomb_of(defaults.materials[2].parameters).tensile_strength.has_value());
+  CHECK_FALSE(
+      dda::test::mohr_coulomb_of(defaults.materials[2].parameters).tensile_strength.has_value());
   CHECK(dda::test::strength_of(defaults.materials[2].parameters).hardening.empty());
   CHECK(dda::test::drucker_prager_of(defaults.materials[0].parameters).match ==
         dda::DruckerPragerMatch::PlaneStrain);

@@ -93,7 +93,8 @@ TEST_CASE("Drucker-Prager cone return: the catalogue's closed form", "[materials
       const double q =
           std::sqrt(0.5 * (dev[0] * dev[0] + dev[1] * dev[1] + dev[2] * dev[2]) + dev[3] * dev[3]);
       const DruckerPragerCoefficients dp = drucker_prager_coefficients(m, 30.0, psi);
-      const double dgamma = (q + dp.eta * pt - dp.xi * test::strength_of(p).cohesion) / (g + k * dp.eta * dp.eta_bar);
+      const double dgamma =
+          (q + dp.eta * pt - dp.xi * test::strength_of(p).cohesion) / (g + k * dp.eta * dp.eta_bar);
       const double factor = 1.0 - g * dgamma / q;
       const double pn = pt - k * dp.eta_bar * dgamma;
       // A handful of flops each way: 1e-12 relative to the stress scale (|trial| ~ 2e5).
@@ -101,7 +102,8 @@ TEST_CASE("Drucker-Prager cone return: the catalogue's closed form", "[materials
       for (int i = 0; i < 3; ++i) CHECK_THAT(r.stress[i], WithinAbs(factor * dev[i] + pn, tol));
       CHECK_THAT(r.stress[kXY], WithinAbs(factor * dev[3], tol));
       CHECK_THAT(r.state.eps_p, WithinRel(dp.xi * dgamma, 1e-12));  // d eps_p = xi d gamma
-      CHECK_THAT(drucker_prager_yield(r.stress, test::strength_of(p).cohesion, dp), WithinAbs(0.0, tol));
+      CHECK_THAT(drucker_prager_yield(r.stress, test::strength_of(p).cohesion, dp),
+                 WithinAbs(0.0, tol));
     }
   }
 }
@@ -121,7 +123,8 @@ TEST_CASE("Drucker-Prager plane-strain match: the Mohr-Coulomb biaxial limit loa
   const double n = (1.0 + std::sin(rad(30.0))) / (1.0 - std::sin(rad(30.0)));
   const MaterialPointRow& end = r.rows.back();
   CHECK(end.branch == Branch::Cone);
-  CHECK_THAT(-end.stress[kYY], WithinRel(n * p0 + 2.0 * test::strength_of(p).cohesion * std::sqrt(n), kDriverTol));
+  CHECK_THAT(-end.stress[kYY],
+             WithinRel(n * p0 + 2.0 * test::strength_of(p).cohesion * std::sqrt(n), kDriverTol));
   // The last increments add no plastic zz strain (1e-12 of the 5e-4 strain increment).
   const MaterialPointRow& before = r.rows[r.rows.size() - 2];
   CHECK_THAT(end.state.plastic_strain[kZZ] - before.state.plastic_strain[kZZ],
@@ -132,7 +135,8 @@ TEST_CASE("Drucker-Prager plane-strain match: the Mohr-Coulomb biaxial limit loa
   double limits[2] = {0.0, 0.0};
   for (const int i : {0, 1}) {
     MaterialParameters q = p;
-    test::drucker_prager_of(q).match = i == 0 ? DruckerPragerMatch::Outer : DruckerPragerMatch::Inner;
+    test::drucker_prager_of(q).match =
+        i == 0 ? DruckerPragerMatch::Outer : DruckerPragerMatch::Inner;
     const MaterialPointRun other =
         run_material_point(q, {-p0, -p0, -2.0 * p.poisson * p0, 0.0}, path);
     REQUIRE(other.ok);
@@ -177,7 +181,8 @@ TEST_CASE("Drucker-Prager cohesion softening and hardening follow the table", "[
                                                    ComponentTarget{Control::Strain, 0.0})};
     const MaterialPointRun r = run_material_point(p, {-p0, -p0, -2.0 * p.poisson * p0, 0.0}, path);
     REQUIRE(r.ok);
-    const DruckerPragerCoefficients k = drucker_prager_coefficients(test::drucker_prager_of(p).match, 30.0, 10.0);
+    const DruckerPragerCoefficients k =
+        drucker_prager_coefficients(test::drucker_prager_of(p).match, 30.0, 10.0);
     int plastic = 0;
     for (const MaterialPointRow& row : r.rows) {
       if (row.branch != Branch::Cone) continue;

@@ -129,7 +129,8 @@ TEST_CASE("Mohr-Coulomb uniaxial strengths 2 c cos(phi) / (1 -+ sin phi)", "[mat
     if (cutoff) {
       CHECK(end.branch == Branch::Tension);
       CHECK(end.active_planes == kTension1);
-      CHECK_THAT(end.stress[kYY], WithinRel(*test::mohr_coulomb_of(p).tensile_strength, kDriverTol));
+      CHECK_THAT(end.stress[kYY],
+                 WithinRel(*test::mohr_coulomb_of(p).tensile_strength, kDriverTol));
     } else {
       CHECK(end.branch == Branch::Plane);
       CHECK_THAT(end.stress[kYY], WithinRel(tensile, kDriverTol));
@@ -144,7 +145,8 @@ TEST_CASE("Mohr-Coulomb simple shear at zero mean stress with psi = 0 plateaus a
   // Free normal stresses (sxx = syy = 0 held), gxy pushed to 2 %.
   const MaterialPointRun r =
       run(p, Vec4::Zero(), {segment(200, stress(0.0), stress(0.0), strain(0.02))});
-  const double tau = test::strength_of(p).cohesion * std::cos(rad(test::strength_of(p).friction_angle));
+  const double tau =
+      test::strength_of(p).cohesion * std::cos(rad(test::strength_of(p).friction_angle));
   const MaterialPointRow& end = r.rows.back();
   CHECK(end.branch == Branch::Plane);
   CHECK_THAT(end.stress[kXY], WithinRel(tau, kDriverTol));
@@ -166,7 +168,8 @@ TEST_CASE("Mohr-Coulomb apex under hydrostatic tension at c cot(phi)", "[materia
   CHECK(saw_edge);
   const MaterialPointRow& end = r.rows.back();
   CHECK(end.branch == Branch::Apex);
-  const double apex = test::strength_of(p).cohesion / std::tan(rad(test::strength_of(p).friction_angle));
+  const double apex =
+      test::strength_of(p).cohesion / std::tan(rad(test::strength_of(p).friction_angle));
   // The apex stress is set directly from c, so it is exact to round-off (1e-14).
   CHECK_THAT(end.stress[kXX], WithinRel(apex, 1e-14));
   CHECK_THAT(end.stress[kYY], WithinRel(apex, 1e-14));
@@ -201,7 +204,8 @@ TEST_CASE("Mohr-Coulomb oedometric compression runs on the left edge, on both pl
   p.poisson = 0.2;
   const MaterialPointRun r =
       run(p, {-kP0, -kP0, -kP0, 0.0}, {segment(100, strain(0.0), strain(-0.1), strain(0.0))});
-  const MohrCoulombAngles a = mohr_coulomb_angles(test::strength_of(p).friction_angle, test::strength_of(p).dilation_angle);
+  const MohrCoulombAngles a =
+      mohr_coulomb_angles(test::strength_of(p).friction_angle, test::strength_of(p).dilation_angle);
   int on_edge = 0;
   for (const MaterialPointRow& row : r.rows) {
     if (row.branch != Branch::Edge) continue;
@@ -225,7 +229,8 @@ TEST_CASE("Mohr-Coulomb cohesion softening follows the table", "[materials]") {
   test::strength_of(p).hardening = {{0.0, 20e3}, {0.01, 10e3}, {0.02, 5e3}};
   const MaterialPointRun r = biaxial(p, 400, -0.06);
   const CohesionLaw law(test::strength_of(p).hardening, test::strength_of(p).cohesion);
-  const MohrCoulombAngles a = mohr_coulomb_angles(test::strength_of(p).friction_angle, test::strength_of(p).dilation_angle);
+  const MohrCoulombAngles a =
+      mohr_coulomb_angles(test::strength_of(p).friction_angle, test::strength_of(p).dilation_angle);
   const double n = flow_factor(test::strength_of(p).friction_angle);
   int plastic = 0;
   for (const MaterialPointRow& row : r.rows) {
@@ -255,7 +260,8 @@ TEST_CASE("Mohr-Coulomb cohesion hardening follows the table", "[materials]") {
   MaterialParameters p = soil(20.0);
   test::strength_of(p).hardening = {{0.0, 20e3}, {0.005, 30e3}, {0.05, 35e3}};
   const MaterialPointRun r = biaxial(p, 200, -0.04);
-  const MohrCoulombAngles a = mohr_coulomb_angles(test::strength_of(p).friction_angle, test::strength_of(p).dilation_angle);
+  const MohrCoulombAngles a =
+      mohr_coulomb_angles(test::strength_of(p).friction_angle, test::strength_of(p).dilation_angle);
   const double n = flow_factor(test::strength_of(p).friction_angle);
   int plastic = 0;
   for (const MaterialPointRow& row : r.rows) {

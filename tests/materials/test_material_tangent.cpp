@@ -222,7 +222,8 @@ TEST_CASE("Tangents against finite differences over random states", "[materials]
     MaterialParameters p = rock(s.model);
     test::strength_of(p).dilation_angle = s.dilation;
     if (s.tension) test::mohr_coulomb_of(p).tensile_strength = s.tension;  // Mohr-Coulomb only
-    test::strength_of(p).hardening = {{0.0, 1e6}, {0.02, 2e6}, {0.05, 1.5e6}};  // hardening, then softening
+    test::strength_of(p).hardening = {
+        {0.0, 1e6}, {0.02, 2e6}, {0.05, 1.5e6}};  // hardening, then softening
     const double floor = 1e-3 * elastic_scale(p);
     // A wider spread of szz with a cut-off reaches its corners with the edges more often.
     const double zz_spread = s.tension ? 5e6 : 2e6;

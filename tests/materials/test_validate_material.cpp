@@ -51,7 +51,8 @@ TEST_CASE("material validation rejects bad parameters, naming the key", "[materi
   CHECK(key_of(p) == "cohesion");
 
   p = good_mc();
-  test::strength_of(p).hardening = {{0.0, 20e3}, {0.02, 10e3}, {0.01, 5e3}};  // not increasing in eps_p
+  test::strength_of(p).hardening = {
+      {0.0, 20e3}, {0.02, 10e3}, {0.01, 5e3}};  // not increasing in eps_p
   CHECK(key_of(p) == "hardening[2]");
   test::strength_of(p).hardening = {{0.0, 20e3}, {0.0, 10e3}};  // repeated eps_p
   CHECK(key_of(p) == "hardening[1]");

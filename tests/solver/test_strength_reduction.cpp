@@ -98,8 +98,10 @@ TEST_CASE("strength reduction divides tan(phi), cohesion and tensile strength by
   test::mohr_coulomb_of(m).tensile_strength = 2e5;
   test::strength_of(m).hardening = {{0.0, 1e6}, {0.01, 5e5}};
   const MaterialParameters rm = reduced_material(m, 2.0);
-  CHECK(std::tan(deg(test::strength_of(rm).friction_angle)) == Approx(std::tan(deg(40.0)) / 2.0).epsilon(1e-14));
-  CHECK(test::strength_of(rm).dilation_angle == test::strength_of(rm).friction_angle);  // associated flow stays within psi <= phi
+  CHECK(std::tan(deg(test::strength_of(rm).friction_angle)) ==
+        Approx(std::tan(deg(40.0)) / 2.0).epsilon(1e-14));
+  CHECK(test::strength_of(rm).dilation_angle ==
+        test::strength_of(rm).friction_angle);  // associated flow stays within psi <= phi
   CHECK(test::strength_of(rm).cohesion == 5e5);
   CHECK(test::strength_of(rm).hardening[1].cohesion == 2.5e5);
   CHECK(*test::mohr_coulomb_of(rm).tensile_strength == 1e5);
