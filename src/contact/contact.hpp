@@ -116,9 +116,10 @@ struct Contact {
   }
   double t_behind(double stretch) const { return t - stretch / (edge_end - edge_start).norm(); }
   // Where the normal gap and the friction are measured (see ContactState::predicted_slip;
-  // only a sliding contact moves it).
+  // only a contact that slid in the last step has one: every rule that ends a slide sets it
+  // to zero, so the point stays put while a solver changes modes within a step).
   Vec2 measure_point() const {
-    if (state.mode != ContactMode::Slide) return edge_point(t);
+    if (state.predicted_slip == 0.0) return edge_point(t);
     return edge_point(t + state.predicted_slip / (edge_end - edge_start).norm());
   }
 };

@@ -102,7 +102,7 @@ ControlSettings read_control(const Field& f, bool staged) {
   f.expect_keys({"time_step", "steps", "end_time", "max_displacement_ratio",
                  "dynamic_coefficient", "rotation_update", "penalty", "output_every",
                  "max_open_close", "max_augmentations", "allowed_penetration",
-                 "energy_tolerance", "linear_solver", "inertia"});
+                 "energy_tolerance", "linear_solver", "inertia", "contact_solver"});
   ControlSettings c;
   c.time_steps = read_time_steps(f.member("time_step"));
   read_run_length(f, c, staged);
@@ -141,6 +141,15 @@ ControlSettings read_control(const Field& f, bool staged) {
       g->fail("unknown linear solver \"" + name + "\" (known: \"reuse\", \"factorise\")");
     }
     c.reuse_factor = name == "reuse";
+  }
+  if (auto g = f.optional_member("contact_solver")) {
+    const std::string name = g->string();
+    const auto solver = value_in(kContactSolverNames, name);
+    if (!solver) {
+      g->fail("unknown contact solver \"" + name + "\" (known: " +
+              quoted_names(kContactSolverNames) + ")");
+    }
+    c.contact_solver = *solver;
   }
   if (auto g = f.optional_member("inertia")) {
     const std::string name = g->string();

@@ -10,6 +10,11 @@
 namespace dda {
 namespace {
 
+Mat26 t_at(const World& w, const StepContext& ctx, int block, const Vec2& x) {
+  return step_t(ctx, block).at(x - w.blocks[static_cast<std::size_t>(block)].moments.centroid);
+}
+
+
 // Slips below this share of the allowed penetration count as no slip (round-off), and a
 // closed contact opens only beyond kOpenToleranceShare of it (see
 // ContactTrial::open_tolerance). A coarser slip tolerance was tried and not kept
@@ -40,36 +45,6 @@ constexpr double kHeldTensionShare = 1e-3;
 // forward over delta, and a lock held past the friction limit stores at most (ks delta)^2 /
 // 2 ks more (conservatively); the energy account shows them.
 constexpr double kDeferShare = 1e-5;
-
-// How a contact sees the unknowns: a scalar measure g = g0 + a.d_v + b.d_e, with d_v the
-// vertex block's increments and d_e the edge block's.
-struct Measure {
-  Vec6 on_vertex_block = Vec6::Zero();
-  Vec6 on_edge_block = Vec6::Zero();
-};
-
-Mat26 t_at(const World& w, const StepContext& ctx, int block, const Vec2& x) {
-  return step_t(ctx, block).at(x - w.blocks[static_cast<std::size_t>(block)].moments.centroid);
-}
-
-// Relative displacement of the vertex against a material point `x` of the edge block,
-// projected on `dir`.
-Measure relative_along(const World& w, const StepContext& ctx, const Contact& c, const Vec2& x,
-                       const Vec2& dir) {
-  Measure m;
-  m.on_vertex_block = t_at(w, ctx, c.key.vertex_block, c.vertex).transpose() * dir;
-  m.on_edge_block = -(t_at(w, ctx, c.key.edge_block, x).transpose() * dir);
-  return m;
-}
-
-double evaluate(const World& w, const Contact& c, const Measure& m, const Eigen::VectorXd& d) {
-  double value = 0.0;
-  const Block& bv = w.blocks[c.key.vertex_block];
-  const Block& be = w.blocks[c.key.edge_block];
-  if (!bv.fixed) value += m.on_vertex_block.dot(d.segment<6>(bv.first_dof));
-  if (!be.fixed) value += m.on_edge_block.dot(d.segment<6>(be.first_dof));
-  return value;
-}
 
 // Adds the terms of the energy k/2 (g0 + m.d)^2 (and so the stiffness k m m^T and the
 // force -k g0 m) to the system; fixed blocks carry no unknowns and are left out.
@@ -162,6 +137,23 @@ double relock_anchor(const World& world, const Contact& c, double slide_offset, 
 }
 
 }  // namespace
+
+Measure relative_along(const World& w, const StepContext& ctx, const Contact& c, const Vec2& x,
+                       const Vec2& dir) {
+  Measure m;
+  m.on_vertex_block = t_at(w, ctx, c.key.vertex_block, c.vertex).transpose() * dir;
+  m.on_edge_block = -(t_at(w, ctx, c.key.edge_block, x).transpose() * dir);
+  return m;
+}
+
+double evaluate(const World& w, const Contact& c, const Measure& m, const Eigen::VectorXd& d) {
+  double value = 0.0;
+  const Block& bv = w.blocks[c.key.vertex_block];
+  const Block& be = w.blocks[c.key.edge_block];
+  if (!bv.fixed) value += m.on_vertex_block.dot(d.segment<6>(bv.first_dof));
+  if (!be.fixed) value += m.on_edge_block.dot(d.segment<6>(be.first_dof));
+  return value;
+}
 
 void contact_spring_terms(const World& world, const Contact& c, const StepContext& ctx,
                           std::vector<RankOneTerm>& out) {

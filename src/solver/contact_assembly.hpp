@@ -16,6 +16,21 @@ namespace dda {
 // Shi's shear spring is the normal penalty divided by 2.5 (Shi 1988; docs/contacts.md).
 inline constexpr double kShearSpringRatio = 1.0 / 2.5;
 
+// How a contact sees the unknowns: a scalar measure g = g0 + a.d_v + b.d_e, with d_v the
+// vertex block's increments and d_e the edge block's.
+struct Measure {
+  Vec6 on_vertex_block = Vec6::Zero();
+  Vec6 on_edge_block = Vec6::Zero();
+};
+
+// Relative displacement of the vertex against a material point `x` of the edge block,
+// projected on `dir`, as a measure of the step's increments (T of this iteration).
+Measure relative_along(const World& world, const StepContext& ctx, const Contact& c,
+                       const Vec2& x, const Vec2& dir);
+
+// The measure's value a.d_v + b.d_e at increments d (fixed blocks carry none).
+double evaluate(const World& world, const Contact& c, const Measure& m, const Eigen::VectorXd& d);
+
 // Normal spring (stiffness p) on closed contacts, shear spring (p / 2.5, Shi's usual ratio)
 // on locked ones, Coulomb friction tan(phi) N against the slip on sliding ones.
 void add_contact_terms(const World& world, std::vector<Contact>& contacts,

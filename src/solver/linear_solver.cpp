@@ -145,6 +145,77 @@ std::optional<Eigen::VectorXd> CholmodSolver::conjugate_gradients(const BlockSys
   return std::nullopt;
 }
 
+std::optional<Eigen::VectorXd> CholmodSolver::solve_low_rank_coupled(
+    const BlockSystem& system, const Eigen::VectorXd& b, const std::vector<RankOneTerm>& u,
+    const std::vector<RankOneTerm>& v) {
+  const auto dot = [](const RankOneTerm& t, const Eigen::VectorXd& x) {
+    double sum = 0.0;
+    for (const auto& [i, value] : t.entries) sum += value * x[i];
+    return sum;
+  };
+  const auto apply = [&](const Eigen::VectorXd& x) {
+    Eigen::VectorXd y = multiply(system, x);
+    for (std::size_t j = 0; j < u.size(); ++j) {
+      const double s = dot(v[j], x);
+      if (s != 0.0) {
+        for (const auto& [i, value] : u[j].entries) y[i] += value * s;
+      }
+    }
+    return y;
+  };
+  const double b_norm = b.norm();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  if (b_norm == 0.0) return x;
+  const int cap = std::min<int>(kGmresMaxIterations, static_cast<int>(b.size()));
+  // Arnoldi with modified Gram-Schmidt on A F^-1; Givens rotations keep the least-squares
+  // problem triangular.
+  std::vector<Eigen::VectorXd> basis;
+  basis.reserve(static_cast<std::size_t>(cap) + 1);
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(cap + 1, cap);
+  Eigen::VectorXd cs = Eigen::VectorXd::Zero(cap), sn = Eigen::VectorXd::Zero(cap);
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(cap + 1);
+  g[0] = b_norm;
+  basis.push_back(b / b_norm);
+  int k = 0;
+  for (; k < cap; ++k) {
+    ++stats_.cg_iterations;
+    Eigen::VectorXd w = apply(factor_.solve(basis[static_cast<std::size_t>(k)]));
+    for (int i = 0; i <= k; ++i) {
+      h(i, k) = w.dot(basis[static_cast<std::size_t>(i)]);
+      w -= h(i, k) * basis[static_cast<std::size_t>(i)];
+    }
+    const double w_norm = w.norm();
+    h(k + 1, k) = w_norm;
+    for (int i = 0; i < k; ++i) {
+      const double t = cs[i] * h(i, k) + sn[i] * h(i + 1, k);
+      h(i + 1, k) = -sn[i] * h(i, k) + cs[i] * h(i + 1, k);
+      h(i, k) = t;
+    }
+    const double r = std::hypot(h(k, k), h(k + 1, k));
+    if (!(r > 0.0)) return std::nullopt;
+    cs[k] = h(k, k) / r;
+    sn[k] = h(k + 1, k) / r;
+    h(k, k) = r;
+    h(k + 1, k) = 0.0;
+    g[k + 1] = -sn[k] * g[k];
+    g[k] = cs[k] * g[k];
+    // (w_norm 0: the Krylov space holds the answer, and g[k + 1] is 0.)
+    if (std::abs(g[k + 1]) <= kGmresTolerance * b_norm || w_norm == 0.0 || k + 1 == cap) {
+      ++k;
+      break;
+    }
+    basis.push_back(w / w_norm);
+  }
+  if (std::abs(g[k]) > kGmresTolerance * b_norm) return std::nullopt;
+  const Eigen::VectorXd y =
+      h.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(b.size());
+  for (int i = 0; i < k; ++i) z += y[i] * basis[static_cast<std::size_t>(i)];
+  x = factor_.solve(z);
+  if (!x.allFinite()) return std::nullopt;
+  return x;
+}
+
 void CholmodSolver::compare_with_plain(const BlockSystem& system, const Eigen::VectorXd& x) {
   Eigen::SparseMatrix<double> k = system.lower_triangle();
   k.makeCompressed();

@@ -64,6 +64,21 @@ class CholmodSolver {
                                                 const std::vector<RankOneTerm>& added,
                                                 const std::vector<RankOneTerm>& removed);
 
+  // The unsymmetric system (K + sum_j u_j v_j^T) x = b, with K = `system` (symmetric, and
+  // the matrix of the last answer: the factor is the one that answer was found with) and the
+  // pairs (u_j, v_j) in the solvers' layout: GMRES preconditioned on the right by the kept
+  // factor (Saad, Iterative Methods for Sparse Linear Systems, 2003, alg. 9.5). A low-rank
+  // term costs about one iteration a term, as CG's changed springs do. nullopt when it has
+  // not converged within kGmresMaxIterations.
+  std::optional<Eigen::VectorXd> solve_low_rank_coupled(const BlockSystem& system,
+                                                        const Eigen::VectorXd& b,
+                                                        const std::vector<RankOneTerm>& u,
+                                                        const std::vector<RankOneTerm>& v);
+  // GMRES stops when the residual has fallen below this share of b (the CG tolerance's
+  // energy-norm share, as a plain norm) or after kGmresMaxIterations.
+  static constexpr double kGmresTolerance = 1e-12;
+  static constexpr int kGmresMaxIterations = 120;
+
   void set_reuse(bool reuse) { reuse_ = reuse; }
   // Verification: every answer not from a fresh factorisation is compared with one (a second
   // factor, so the fast path's own state is untouched); the largest relative difference is

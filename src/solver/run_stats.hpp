@@ -47,6 +47,11 @@ struct RunStats {
   // Augmented-Lagrangian rounds (solver/step.cpp, control.max_augmentations): solves spent pushing
   // contacts deeper than allowed_penetration back out at the fixed penalty.
   long augmentations = 0;
+  // The converged contact solver (control.contact_solver "newton"): solves whose answer was
+  // taken only in part by the line search, and the largest mismatch (as a share of the
+  // contact resolution) of an attempt cut because it did not converge (0: none was).
+  long line_searches_shortened = 0;
+  double newton_unconverged_mismatch = 0.0;
   StageTimes stage_times;
   bool diverged = false;
   std::string message;     // why the run stopped early, empty otherwise

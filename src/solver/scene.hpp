@@ -67,6 +67,23 @@ inline bool uses_secant_rotation(RotationUpdate u) {
   return u == RotationUpdate::FiniteRotation || u == RotationUpdate::FiniteRotationPolar;
 }
 
+// How each step's frictional contact problem is solved (control.contact_solver;
+// docs/contact-solver.md).
+enum class ContactSolver {
+  // Shi's open-close iteration (1988): every solve taken whole, each contact choosing its
+  // next mode from its history; a step whose modes still change after max_open_close solves
+  // is cut. The reference path.
+  OpenClose,
+  // A semismooth Newton iteration with a line search over the regularised Coulomb law
+  // (solver/contact_newton.hpp): modes read off the iterate, never cycling.
+  Newton,
+};
+
+inline constexpr EnumName<ContactSolver> kContactSolverNames[] = {
+    {ContactSolver::OpenClose, "open_close"},
+    {ContactSolver::Newton, "newton"},
+};
+
 // How a deformable block's inertia is taken (control.inertia; docs/rotating-inertia.md).
 enum class Inertia {
   // Shi's: the mass matrix int rho T^T T over the current polygon at the given density, and
@@ -215,6 +232,8 @@ struct ControlSettings {
   // default 0.02 is four times the largest gain of the hard cases (verification/hard-cases)
   // at their coarsest time step and far below the gains of the faults it exists for.
   double energy_tolerance = 0.02;
+  // The contact solver of every step (see ContactSolver).
+  ContactSolver contact_solver = ContactSolver::OpenClose;
   // Block inertia (docs/rotating-inertia.md). nullopt means "auto": PseudoRigid for the
   // treatments that keep a block frame (local_frame, local_frame_as_printed,
   // finite_rotation), Shi for the others, which have no block-frame strain to carry it.

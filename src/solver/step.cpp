@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "contact/narrow_phase.hpp"
@@ -12,6 +14,7 @@
 #include "solver/contact_assembly.hpp"
 #include "solver/base_motion.hpp"
 #include "solver/contact_detection.hpp"
+#include "solver/contact_newton.hpp"
 #include "solver/energy.hpp"
 #include "solver/material_coupling.hpp"
 #include "solver/step_solve.hpp"
@@ -66,6 +69,10 @@ constexpr double kAugmentTargetShare = 0.5;
 // loop is then also the Newton iteration of the blocks' material equilibrium (quadratic
 // with associated flow, linear with non-associated; solver/material_coupling.hpp).
 constexpr int kExtraNewtonIterations = 20;
+// The converged contact solver's iterations a step before it is cut (at least
+// max_open_close): a semismooth Newton iteration with a line search does not cycle, but a
+// box of 150 tumbling blocks may need more than Shi's 8 solves to find every contact's mode.
+constexpr int kNewtonIterations = 30;
 
 StepContext make_step_context(const World& world, double dt) {
   StepContext ctx;
@@ -332,6 +339,147 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   return r;
 }
 
+// 3'. The converged contact solver (control.contact_solver "newton"; solver/contact_newton.hpp):
+//    the modes read off the iterate, a solve with them, a line search towards its answer,
+//    until the contacts' responses at the answer agree with the modes it was solved with
+//    (and, as in the open-close loop, the secant angles and the plastic blocks' Newton have
+//    converged). Bonds break and multipliers grow only on a converged iterate.
+LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ctx,
+                                RunStats& stats, StageClock& clock) {
+  StageTimes& times = stats.stage_times;
+  const RotationUpdate treatment = world.control.rotation_update;
+  std::vector<double> angles;
+  if (changes_t(treatment)) {
+    angles = last_rotation_increments(world);
+    set_rotation_columns(world, angles, ctx);
+  }
+  const bool plastic = has_plastic_blocks(world);
+  if (plastic) ctx.material_terms = start_linearization(world);
+  const bool spinning = has_rotating_inertia(world, ctx);
+  if (spinning) start_spins(world, ctx);
+  const int iteration_limit =
+      std::max(world.control.max_open_close, kNewtonIterations) + (plastic ? kExtraNewtonIterations : 0);
+
+  ContactNewton newton(world, world.contacts, ctx.penalty);
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(6 * static_cast<Eigen::Index>(world.blocks.size()));
+  newton.respond(world, world.contacts, ctx, d);
+  assemble(world, ctx, ws.block_terms);
+  clock.lap(times.contact_update);
+  LoopResult r;
+  int extra_rounds = 0;  // bond breaks and augmentations: each earns one more iteration
+  for (;;) {
+    ws.system = ws.block_terms;
+    add_contact_terms(world, world.contacts, ctx, ws.system);
+    clock.lap(times.assemble);
+    const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
+    std::optional<Eigen::VectorXd> solved;
+    if (unsymmetric) {
+      solved = solve_system(ws, SolvePath::Klu);
+    } else {
+      ws.factor_springs.differences(world, world.contacts, ctx, ws.springs_added, ws.springs_removed);
+      solved = solve_system(ws, SolvePath::Modify);
+      if (solved) follow_factor(world, ws);
+    }
+    clock.lap(times.solve);
+    ++stats.iterations;
+    ++r.iterations;
+    if (!solved || !solved->allFinite()) {
+      r.solved = false;
+      return r;
+    }
+    Eigen::VectorXd d_hat = *solved;
+    // The Newton step proper: the sliding contacts' friction follows the normal force it is
+    // proportional to (an unsymmetric low-rank term on the kept factor; with KLU, the
+    // friction stays held at the iterate's normal force).
+    bool friction_follows = false;
+    if (!unsymmetric &&
+        newton.friction_coupling(world, world.contacts, ctx, d_hat, ws.coupling_u,
+                                 ws.coupling_v, ws.coupling_residual)) {
+      reduce_terms(ws.system, ws.coupling_u);
+      reduce_terms(ws.system, ws.coupling_v);
+      const std::optional<Eigen::VectorXd> correction = ws.solver.solve_low_rank_coupled(
+          ws.system, ws.system.reduce(ws.coupling_residual), ws.coupling_u, ws.coupling_v);
+      if (correction) {
+        d_hat += ws.system.expand(*correction);
+        friction_follows = true;
+      }
+    }
+    const NewtonCheck check = newton.check(world, world.contacts, ctx, d_hat, friction_follows);
+    // The contacts first, on the present T and material linearisation; once they agree with
+    // the solve, the secant angles and the plastic blocks follow it (an outer fixed point:
+    // moved with every line-searched iterate, a turning block's T kept a contact at its
+    // kink flipping open and closed).
+    int secants_moved = 0;
+    MaterialFollowUp materials;
+    if (check.mismatched > 0 && check.modes_mismatched == 0) {
+      // Every mode as solved: only friction strengths to follow their normal forces.
+      d = d_hat;
+      newton.respond(world, world.contacts, ctx, d);
+      newton.accelerate_strengths(world, world.contacts);
+    } else if (check.mismatched > 0) {
+      const double step_length =
+          newton.line_search(world, world.contacts, ctx, ws.block_terms, d, d_hat);
+      if (step_length < 1.0) ++stats.line_searches_shortened;
+      d += step_length * (d_hat - d);
+      newton.respond(world, world.contacts, ctx, d);
+      newton.reset_acceleration();
+    } else {
+      d = d_hat;
+      // The modes at the answer, on the T it was solved with (they agree with the solve),
+      // are kept while T and the materials follow it: read again on the new T, a contact
+      // at its kink (a corner just landed) would flip open and cost two more solves.
+      newton.respond(world, world.contacts, ctx, d);
+      if (uses_secant_rotation(treatment)) {
+        secants_moved = follow_secant_angles(world, d, angles);
+        if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
+        if (spinning) follow_spins(world, d, ctx);
+      }
+      if (plastic) {
+        materials = follow_materials(world, d, ctx.material_terms);
+        if (materials.failed) {
+          r.d = d;
+          r.unsettled = CutReason::Material;
+          r.material_fraction = materials.suggested_fraction;
+          return r;
+        }
+      }
+      if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
+    }
+    if (std::getenv("DDA_NEWTON_TRACE")) {
+      std::fprintf(stderr, "step %d it %d: mismatched %d largest %.3g secants %d\n", world.step,
+                   r.iterations, check.mismatched, check.largest_mismatch, secants_moved);
+    }
+    clock.lap(times.contact_update);
+    if (check.mismatched == 0 && secants_moved == 0 && materials.unconverged == 0) {
+      // Converged: bonds the answer breaks break now, and contacts deeper than allowed grow
+      // their multipliers (penetration control, as in the open-close loop); either way the
+      // step is solved again.
+      int more = newton.break_bonds(world, world.contacts, ctx, d);
+      if (more == 0 && r.augmentations < world.control.max_augmentations &&
+          max_penetration(world.contacts) > world.allowed_penetration) {
+        more = augment_multipliers(world.contacts, kAugmentTargetShare * world.allowed_penetration);
+        if (more > 0) ++r.augmentations;
+      }
+      if (more == 0) {
+        newton.finish(world, world.contacts, ctx, d);
+        break;
+      }
+      ++extra_rounds;
+      newton.respond(world, world.contacts, ctx, d);
+    }
+    if (r.iterations >= iteration_limit + extra_rounds) {
+      newton.finish(world, world.contacts, ctx, d);
+      r.unsettled = CutReason::OpenClose;
+      stats.newton_unconverged_mismatch =
+          std::max(stats.newton_unconverged_mismatch, check.largest_mismatch);
+      break;
+    }
+  }
+  if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, d);
+  r.d = d;
+  return r;
+}
+
 // How deep the vertex of the open contact c ends the step inside the edge's block, by the
 // configuration update's own placement (0 if outside, or if it passes the edge's ends).
 double overshoot(const World& world, const Contact& c, const Eigen::VectorXd& d) {
@@ -460,7 +608,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     StepContext ctx = make_step_context(world, dt);
     world.contacts = contacts_at_start;  // states as they entered the step, no changes counted
     // 3. The open-close loop.
-    const LoopResult loop = solve_open_close(world, ws, ctx, stats, clock);
+    const LoopResult loop = world.control.contact_solver == ContactSolver::Newton
+                                ? solve_contact_newton(world, ws, ctx, stats, clock)
+                                : solve_open_close(world, ws, ctx, stats, clock);
     stats.augmentations += loop.augmentations;
     if (!loop.solved) {
       return {false, describe_failure(world, "the global system could not be solved "

@@ -27,6 +27,9 @@ struct StepWorkspace {
   FactorSprings factor_springs;              // the contact springs in the solver's factor
   std::vector<RankOneTerm> springs_added;    // contact springs to put into the factor,
   std::vector<RankOneTerm> springs_removed;  // and those to take out (scratch)
+  // The converged contact solver's friction coupling (ContactNewton::friction_coupling).
+  std::vector<RankOneTerm> coupling_u, coupling_v;
+  Eigen::VectorXd coupling_residual;
 };
 
 // Why an attempt of a step is thrown away and redone with a shorter dt (one cut rule,

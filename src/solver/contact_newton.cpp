@@ -1,0 +1,354 @@
+#include "solver/contact_newton.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "solver/contact_assembly.hpp"
+#include "solver/linear_solver.hpp"
+
+namespace dda {
+namespace {
+
+// The contact resolution of the converged solver, as a share of the allowed penetration: a
+// response that differs from the mode a contact was solved with by no more than a spring
+// force over this length (a gap or penetration this small, a shear this close to the
+// strength) is converged. The open-close loop defers changes up to 1e-5 of it
+// (kDeferShare); the Newton iteration converges fast enough near the solution to ask for
+// 100 times less, where a change left behind carries k x 6e-11 m in a 1.5 m scene (3 N at
+// the hard cases' penalty, 0.2 % of a 0.25 m square's weight).
+constexpr double kNewtonResolutionShare = 1e-5;
+// A sliding contact whose friction was taken at a normal force within this share of its
+// answer's is converged (the friction follows the iterate's normal force, a fixed point that
+// converges linearly, about 3x a solve on a tumbling square). The accepted step keeps the
+// friction it was solved with (ContactNewton::finish), so the energy account books the force
+// that acted: the step's friction is within 1 % of tan(phi) N at its end, and it still
+// opposes the slip. (Shi's open-close loop takes it at the last iteration's N, unchecked.)
+constexpr double kStrengthShare = 1e-2;
+// The line search stops when the work rate along the line is this share of its value at
+// the iterate (a root to 0.1 %), or after kLineSearchEvaluations evaluations. It is
+// piecewise linear in the step length, so regula falsi takes a few.
+constexpr double kLineSearchShare = 1e-3;
+constexpr int kLineSearchEvaluations = 40;
+// The friction strengths' Anderson mixing keeps this many differences.
+constexpr std::size_t kAccelerationMemory = 5;
+
+}  // namespace
+
+ContactNewton::ContactNewton(const World& world, const std::vector<Contact>& contacts,
+                             double penalty)
+    : kn_(penalty), ks_(kShearSpringRatio * penalty) {
+  (void)world;
+  start_.resize(contacts.size());
+  solved_strength_.assign(contacts.size(), 0.0);
+  solved_mode_.assign(contacts.size(), {ContactMode::Open, 0});
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    Start& s = start_[i];
+    s.mode = c.state.mode;
+    switch (c.state.mode) {
+      case ContactMode::Open: s.anchor = c.t; break;
+      case ContactMode::Lock: s.anchor = c.state.t_lock; break;
+      case ContactMode::Slide: {
+        // The spring in series with the slider holds the friction the contact carried at
+        // the last step's end, as the energy account booked it (ContactState::spring_energy).
+        const double stretch = c.state.slide_sign * std::sqrt(2.0 * c.state.spring_energy / ks_);
+        s.anchor = c.t_behind(stretch);
+        break;
+      }
+    }
+  }
+}
+
+ContactSprings ContactNewton::springs_of(const Contact& c) const {
+  return ContactSprings{kn_, ks_, c.state.rest_shift, c.state.bonded, c.length};
+}
+
+ContactNewton::Trial ContactNewton::trial_at(const World& world, const Contact& c, std::size_t i,
+                                             const StepContext& ctx,
+                                             const Eigen::VectorXd& d) const {
+  Trial t;
+  t.gap = c.gap + evaluate(world, c, relative_along(world, ctx, c, c.measure_point(), c.normal), d);
+  const double anchor = start_[i].anchor;
+  t.stretch = c.stretch_from(anchor) +
+              evaluate(world, c, relative_along(world, ctx, c, c.edge_point(anchor), c.tangent), d);
+  t.response = contact_response(world.joint_laws[c.joint], springs_of(c), t.gap, t.stretch);
+  return t;
+}
+
+void ContactNewton::respond(const World& world, std::vector<Contact>& contacts,
+                            const StepContext& ctx, const Eigen::VectorXd& d) const {
+  set_responses(world, contacts, ctx, d, true);
+}
+
+void ContactNewton::set_responses(const World& world, std::vector<Contact>& contacts,
+                                  const StepContext& ctx, const Eigen::VectorXd& d,
+                                  bool reversal_locks) const {
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact& c = contacts[i];
+    const Trial t = trial_at(world, c, i, ctx, d);
+    // A contact solved as sliding one way whose iterate slides the other way has passed the
+    // whole elastic branch of its friction law in one solve (a resting block's side contact:
+    // a friction of a hundred newtons moves a 170 kg square microns at dt 0.002 s, while its
+    // spring's elastic range is nanometres). Its next solve takes the elastic branch between
+    // the two, the spring (Shi's rule: a slide whose slip reverses locks); the response at
+    // that answer then says whether it holds.
+    const bool reversed = reversal_locks && c.state.mode == ContactMode::Slide &&
+                          t.response.mode == ContactMode::Slide &&
+                          t.response.slide_sign != c.state.slide_sign;
+    c.state.mode = reversed ? ContactMode::Lock : t.response.mode;
+    c.state.slide_sign = reversed ? 0 : t.response.slide_sign;
+    c.state.t_lock = start_[i].anchor;
+    c.state.normal_force = std::max(t.response.normal_force, 0.0);
+    c.iterate.new_gap = t.gap;
+    c.iterate.shear_force = t.response.shear_force;
+  }
+}
+
+NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>& contacts,
+                                 const StepContext& ctx, const Eigen::VectorXd& d_hat,
+                                 bool friction_follows) {
+  NewtonCheck out;
+  const double resolution = kNewtonResolutionShare * world.allowed_penetration;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    const Trial t = trial_at(world, c, i, ctx, d_hat);
+    // The forces the solve gave this contact at d_hat, in the mode it was solved with.
+    double normal = 0.0, shear = 0.0;
+    if (c.state.mode != ContactMode::Open) normal = kn_ * (c.state.rest_shift - t.gap);
+    if (c.state.mode == ContactMode::Lock) shear = -ks_ * t.stretch;
+    solved_strength_[i] = 0.0;
+    if (c.state.mode == ContactMode::Slide) {
+      const double held = friction_follows ? std::max(0.0, kn_ * (c.state.rest_shift - t.gap))
+                                           : c.state.normal_force;
+      solved_strength_[i] = sliding_resistance(c, world.joint_laws[c.joint], held);
+      shear = -c.state.slide_sign * solved_strength_[i];
+    }
+    solved_mode_[i] = {c.state.mode, c.state.slide_sign};
+    double shear_difference = std::abs(t.response.shear_force - shear);
+    const bool strength_only = c.state.mode == ContactMode::Slide &&
+                               t.response.mode == ContactMode::Slide &&
+                               t.response.slide_sign == c.state.slide_sign;
+    if (strength_only) {
+      // Still sliding the same way: only its strength followed the normal force (the
+      // friction is taken at the iterate's N, a fixed point that converges linearly).
+      shear_difference = std::max(0.0, shear_difference - kStrengthShare * t.response.strength);
+    }
+    const double share = std::max(std::abs(t.response.normal_force - normal) / kn_,
+                                  shear_difference / ks_) /
+                         resolution;
+    if (share > 1.0 && std::getenv("DDA_NEWTON_TRACE") && std::getenv("DDA_NEWTON_TRACE")[0] == '2') {
+      std::fprintf(stderr, "  contact %zu (v%d b%d e%d b%d) mode %d sign %d gap0 %.3g gap %.3g stretch %.3g -> mode %d N %.4g F %.4g (model N %.4g F %.4g) start %d\n",
+                   i, c.key.vertex, c.key.vertex_block, c.key.edge, c.key.edge_block,
+                   static_cast<int>(c.state.mode), c.state.slide_sign, c.gap, t.gap, t.stretch,
+                   static_cast<int>(t.response.mode), t.response.normal_force,
+                   t.response.shear_force, normal, shear, static_cast<int>(start_[i].mode));
+    }
+    out.largest_mismatch = std::max(out.largest_mismatch, share);
+    if (share > 1.0) ++out.mismatched;
+    if (share > 1.0 && !strength_only) ++out.modes_mismatched;
+  }
+  return out;
+}
+
+bool ContactNewton::friction_coupling(const World& world, const std::vector<Contact>& contacts,
+                                      const StepContext& ctx, const Eigen::VectorXd& d_hat,
+                                      std::vector<RankOneTerm>& u, std::vector<RankOneTerm>& v,
+                                      Eigen::VectorXd& residual) const {
+  u.clear();
+  v.clear();
+  residual = Eigen::VectorXd::Zero(d_hat.size());
+  const auto term = [&world](const Contact& c, const Measure& m, double scale) {
+    RankOneTerm t;
+    const Block& bv = world.blocks[static_cast<std::size_t>(c.key.vertex_block)];
+    const Block& be = world.blocks[static_cast<std::size_t>(c.key.edge_block)];
+    for (int k = 0; k < 6; ++k) {
+      if (!bv.fixed) t.entries.emplace_back(bv.first_dof + k, scale * m.on_vertex_block[k]);
+      if (!be.fixed) t.entries.emplace_back(be.first_dof + k, scale * m.on_edge_block[k]);
+    }
+    return t;
+  };
+  for (const Contact& c : contacts) {
+    if (c.state.mode != ContactMode::Slide) continue;
+    const JointLaw& law = world.joint_laws[c.joint];
+    if (law.tan_phi == 0.0) continue;
+    const Measure mn = relative_along(world, ctx, c, c.measure_point(), c.normal);
+    const Measure mt = relative_along(world, ctx, c, c.measure_point(), c.tangent);
+    const double normal = kn_ * (c.state.rest_shift - c.gap - evaluate(world, c, mn, d_hat));
+    const double change = -c.state.slide_sign * law.tan_phi * (normal - c.state.normal_force);
+    const RankOneTerm ut = term(c, mt, -c.state.slide_sign * law.tan_phi * kn_);
+    for (const auto& [i, value] : term(c, mt, change).entries) residual[i] += value;
+    u.push_back(ut);
+    v.push_back(term(c, mn, 1.0));
+  }
+  return !u.empty();
+}
+
+void ContactNewton::accelerate_strengths(const World& world, std::vector<Contact>& contacts) {
+  // The slides that persist from the solve to its answer, with a friction that depends on N.
+  std::vector<std::size_t> slides;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    if (solved_mode_[i].first == ContactMode::Slide && c.state.mode == ContactMode::Slide &&
+        solved_mode_[i].second == c.state.slide_sign && world.joint_laws[c.joint].tan_phi > 0.0) {
+      slides.push_back(i);
+    }
+  }
+  if (slides != accelerated_) {
+    accelerated_ = slides;
+    history_.clear();
+  }
+  if (slides.empty()) return;
+  const auto n = static_cast<Eigen::Index>(slides.size());
+  Eigen::VectorXd used(n), answer(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const Contact& c = contacts[slides[static_cast<std::size_t>(j)]];
+    used[j] = solved_strength_[slides[static_cast<std::size_t>(j)]];
+    answer[j] = sliding_resistance(c, world.joint_laws[c.joint], c.state.normal_force);
+  }
+  history_.push_back({used, answer});
+  if (history_.size() > kAccelerationMemory + 1) history_.pop_front();
+  if (history_.size() < 2) return;  // the plain update (the answer's strengths) stands
+  // Anderson's mixing (type II; Walker and Ni 2011): the combination of the last answers
+  // whose residual (answer - used) is least; for an affine map, as the strengths are while
+  // the modes stay, it is GMRES on the fixed point.
+  const auto m = static_cast<Eigen::Index>(history_.size() - 1);
+  Eigen::MatrixXd df(n, m), dg(n, m);
+  for (Eigen::Index k = 0; k < m; ++k) {
+    const auto& [u0, a0] = history_[static_cast<std::size_t>(k)];
+    const auto& [u1, a1] = history_[static_cast<std::size_t>(k) + 1];
+    df.col(k) = (a1 - u1) - (a0 - u0);
+    dg.col(k) = a1 - a0;
+  }
+  const Eigen::VectorXd gamma = df.colPivHouseholderQr().solve(answer - used);
+  if (!gamma.allFinite()) return;
+  const Eigen::VectorXd next = answer - dg * gamma;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    Contact& c = contacts[slides[static_cast<std::size_t>(j)]];
+    const JointLaw& law = world.joint_laws[c.joint];
+    const double base = sliding_resistance(c, law, 0.0);  // a Coulomb slip bond's cohesion
+    c.state.normal_force = std::max(0.0, (next[j] - base) / law.tan_phi);
+  }
+}
+
+void ContactNewton::reset_acceleration() {
+  accelerated_.clear();
+  history_.clear();
+}
+
+double ContactNewton::line_search(const World& world, const std::vector<Contact>& contacts,
+                                  const StepContext& ctx, const BlockSystem& block_terms,
+                                  const Eigen::VectorXd& d, const Eigen::VectorXd& d_hat) const {
+  const Eigen::VectorXd step = d_hat - d;
+  // Blocks: the work rate of their terms, linear in the step length a: lin + a quad.
+  const Eigen::VectorXd sr = block_terms.reduce(step);
+  const Eigen::VectorXd residual =
+      multiply(block_terms, block_terms.reduce(d)) - block_terms.reduce(block_terms.rhs);
+  const double lin = sr.dot(residual);
+  const double quad = sr.dot(multiply(block_terms, sr));
+  // Contacts: gap and stretch along the line, and their responses there.
+  struct Line {
+    double gap = 0.0, dgap = 0.0, stretch = 0.0, dstretch = 0.0;
+    ContactSprings springs;
+    const JointLaw* law = nullptr;
+  };
+  std::vector<Line> lines;
+  lines.reserve(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    const Measure mn = relative_along(world, ctx, c, c.measure_point(), c.normal);
+    const double anchor = start_[i].anchor;
+    const Measure ms = relative_along(world, ctx, c, c.edge_point(anchor), c.tangent);
+    Line l;
+    l.gap = c.gap + evaluate(world, c, mn, d);
+    l.dgap = evaluate(world, c, mn, step);
+    l.stretch = c.stretch_from(anchor) + evaluate(world, c, ms, d);
+    l.dstretch = evaluate(world, c, ms, step);
+    if (l.dgap == 0.0 && l.dstretch == 0.0) continue;
+    l.springs = springs_of(c);
+    l.law = &world.joint_laws[c.joint];
+    lines.push_back(l);
+  }
+  const auto rate = [&](double a) {
+    double r = lin + a * quad;
+    for (const Line& l : lines) {
+      const ContactResponse resp =
+          contact_response(*l.law, l.springs, l.gap + a * l.dgap, l.stretch + a * l.dstretch);
+      r -= resp.normal_force * l.dgap + resp.shear_force * l.dstretch;
+    }
+    return r;
+  };
+  const double r0 = rate(0.0);
+  if (!(r0 < 0.0)) return 1.0;  // not a descent direction (friction's fixed point): take it whole
+  double r1 = rate(1.0);
+  if (r1 <= 0.0) return 1.0;
+  // Illinois regula falsi on [lo, hi] with rate(lo) < 0 < rate(hi).
+  double lo = 0.0, hi = 1.0, rlo = r0, rhi = r1;
+  int side = 0;
+  double a = 1.0;
+  for (int k = 0; k < kLineSearchEvaluations; ++k) {
+    a = (lo * rhi - hi * rlo) / (rhi - rlo);
+    const double r = rate(a);
+    if (std::abs(r) <= kLineSearchShare * std::abs(r0)) break;
+    if (r < 0.0) {
+      lo = a;
+      rlo = r;
+      if (side == -1) rhi *= 0.5;
+      side = -1;
+    } else {
+      hi = a;
+      rhi = r;
+      if (side == 1) rlo *= 0.5;
+      side = 1;
+    }
+  }
+  return a;
+}
+
+int ContactNewton::break_bonds(const World& world, std::vector<Contact>& contacts,
+                               const StepContext& ctx, const Eigen::VectorXd& d) const {
+  int broken = 0;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact& c = contacts[i];
+    if (!c.state.bonded) continue;
+    if (trial_at(world, c, i, ctx, d).response.breaks) {
+      c.state.bonded = false;
+      ++broken;
+    }
+  }
+  return broken;
+}
+
+void ContactNewton::finish(const World& world, std::vector<Contact>& contacts,
+                           const StepContext& ctx, const Eigen::VectorXd& d) const {
+  set_responses(world, contacts, ctx, d, false);
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact& c = contacts[i];
+    // Still sliding the way it was solved: the friction that acted (kStrengthShare).
+    if (c.state.mode == ContactMode::Slide && solved_mode_[i].first == ContactMode::Slide &&
+        solved_mode_[i].second == c.state.slide_sign) {
+      c.iterate.shear_force = -c.state.slide_sign * solved_strength_[i];
+    }
+    c.iterate.slip =
+        evaluate(world, c, relative_along(world, ctx, c, c.measure_point(), c.tangent), d);
+    c.iterate.start_mode = start_[i].mode;
+    c.iterate.start_t_lock = start_[i].anchor;
+    c.iterate.mode_changes = 1;  // the energy account reads the start mode
+    c.state.deferred.reset();
+    // The next step measures a sliding contact where this step's slip takes it (bounded by
+    // the step's displacement limit, as the open-close loop does).
+    const double reach =
+        2.0 * std::max(world.blocks[static_cast<std::size_t>(c.key.vertex_block)].step_limit,
+                       world.blocks[static_cast<std::size_t>(c.key.edge_block)].step_limit);
+    c.state.predicted_slip =
+        c.state.mode == ContactMode::Slide ? std::clamp(c.iterate.slip, -reach, reach) : 0.0;
+    if (c.state.mode == ContactMode::Open) {
+      c.state.rest_shift = 0.0;
+      c.state.normal_force = 0.0;
+      c.iterate.shear_force = 0.0;
+    }
+  }
+}
+
+}  // namespace dda
