@@ -103,6 +103,10 @@ struct Contact {
   double gap = 0.0;             // signed normal distance, > 0 open, < 0 penetrating (m)
   double t = 0.0;               // projection of the vertex on the edge, 0..1 along it
   double length = 0.0;          // share of a face-to-face contact this vertex carries (m)
+  // How deep it may penetrate after a step (m): the scene's allowed_penetration, or with the
+  // converged contact solver and "auto", a share of the smaller free block's size
+  // (contact_allowance, solver/world.hpp).
+  double allowed_penetration = 0.0;
 
   ContactState state;
   ContactIterate iterate;

@@ -302,15 +302,23 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
   return result;
 }
 
-int augment_multipliers(std::vector<Contact>& contacts, double target) {
+int augment_multipliers(std::vector<Contact>& contacts, double target_share) {
   int grown = 0;
   for (Contact& c : contacts) {
-    const double excess = -c.iterate.new_gap - target;
+    const double excess = -c.iterate.new_gap - target_share * c.allowed_penetration;
     if (c.state.mode == ContactMode::Open || excess <= 0.0) continue;
     c.state.rest_shift += excess;
     ++grown;
   }
   return grown;
+}
+
+double deepest_penetration_share(const std::vector<Contact>& contacts) {
+  double deepest = 0.0;
+  for (const Contact& c : contacts) {
+    if (c.allowed_penetration > 0.0) deepest = std::max(deepest, -c.iterate.new_gap / c.allowed_penetration);
+  }
+  return deepest;
 }
 
 double max_penetration(const std::vector<Contact>& contacts) {

@@ -55,10 +55,14 @@ void contact_spring_terms(const World& world, const Contact& c, const StepContex
                           std::vector<RankOneTerm>& out);
 
 // One augmented-Lagrangian update (Lin, Amadei et al. 1996): every closed contact that
-// penetrates deeper than `target` (m) adds the excess to its multiplier
+// penetrates deeper than `target_share` of its allowed penetration adds the excess to its multiplier
 // (ContactState::rest_shift; lambda += p (|g| - target), as a length), so the next solve,
 // with the same matrix, pushes it back to about `target`. Returns how many grew.
-int augment_multipliers(std::vector<Contact>& contacts, double target);
+int augment_multipliers(std::vector<Contact>& contacts, double target_share);
+
+// The deepest penetration of any contact after the step, as a share of that contact's
+// allowed penetration (> 1: deeper than allowed); 0 if none.
+double deepest_penetration_share(const std::vector<Contact>& contacts);
 
 // The deepest penetration of any contact after the step (m); 0 if none.
 double max_penetration(const std::vector<Contact>& contacts);

@@ -38,6 +38,7 @@ Contact make_contact(const World& world, const ContactCandidate& c, const EdgeFr
   // the spring stretched by the overhang: a box of tumbling blocks gained 9 MJ/m that way).
   k.t = proj.t;
   k.length = contact_length(vp, c.vertex, frame.normal);
+  k.allowed_penetration = contact_allowance(world, c.vertex_block, c.edge_block);
   return k;
 }
 

@@ -11,14 +11,16 @@
 namespace dda {
 namespace {
 
-// The contact resolution of the converged solver, as a share of the allowed penetration: a
-// response that differs from the mode a contact was solved with by no more than a spring
-// force over this length (a gap or penetration this small, a shear this close to the
-// strength) is converged. The open-close loop defers changes up to 1e-5 of it
-// (kDeferShare); the Newton iteration converges fast enough near the solution to ask for
-// 100 times less, where a change left behind carries k x 6e-11 m in a 1.5 m scene (3 N at
-// the hard cases' penalty, 0.2 % of a 0.25 m square's weight).
-constexpr double kNewtonResolutionShare = 1e-5;
+// The contact resolution of the converged solver, as a share of the contact's allowed
+// penetration: a response that differs from the mode a contact was solved with by no more
+// than a spring force over this length (a gap or penetration this small, a shear this close
+// to the strength) is converged. The open-close loop defers changes up to 1e-5 of the
+// scene's allowance (kDeferShare). Here 1e-6 of the contact's own allowance (4e-4 of the
+// smaller block's size): for a 0.25 m square at the hard cases' penalty, a force of
+// 5e10 x 5e-11 m = 2.5 N, 0.15 % of its weight, so a contact that would hold a block by
+// tension (a 0.1 m square hanging under a ceiling: its weight 265 N, 20 times the
+// resolution) is a mismatch, never converged.
+constexpr double kNewtonResolutionShare = 1e-6;
 // A sliding contact whose friction was taken at a normal force within this share of its
 // answer's is converged (the friction follows the iterate's normal force, a fixed point that
 // converges linearly, about 3x a solve on a tumbling square). The accepted step keeps the
@@ -31,15 +33,12 @@ constexpr double kStrengthShare = 1e-2;
 // piecewise linear in the step length, so regula falsi takes a few.
 constexpr double kLineSearchShare = 1e-3;
 constexpr int kLineSearchEvaluations = 40;
-// The friction strengths' Anderson mixing keeps this many differences.
-constexpr std::size_t kAccelerationMemory = 5;
 
 }  // namespace
 
 ContactNewton::ContactNewton(const World& world, const std::vector<Contact>& contacts,
-                             double penalty)
-    : kn_(penalty), ks_(kShearSpringRatio * penalty) {
-  (void)world;
+                             const StepContext& ctx)
+    : kn_(ctx.penalty), ks_(kShearSpringRatio * ctx.penalty) {
   start_.resize(contacts.size());
   solved_strength_.assign(contacts.size(), 0.0);
   solved_mode_.assign(contacts.size(), {ContactMode::Open, 0});
@@ -59,6 +58,7 @@ ContactNewton::ContactNewton(const World& world, const std::vector<Contact>& con
       }
     }
   }
+  measure(world, contacts, ctx);
 }
 
 ContactSprings ContactNewton::springs_of(const Contact& c) const {
@@ -66,15 +66,26 @@ ContactSprings ContactNewton::springs_of(const Contact& c) const {
 }
 
 ContactNewton::Trial ContactNewton::trial_at(const World& world, const Contact& c, std::size_t i,
-                                             const StepContext& ctx,
+                                             const StepContext&,
                                              const Eigen::VectorXd& d) const {
   Trial t;
-  t.gap = c.gap + evaluate(world, c, relative_along(world, ctx, c, c.measure_point(), c.normal), d);
-  const double anchor = start_[i].anchor;
-  t.stretch = c.stretch_from(anchor) +
-              evaluate(world, c, relative_along(world, ctx, c, c.edge_point(anchor), c.tangent), d);
+  const Measures& m = measures_[i];
+  t.gap = c.gap + evaluate(world, c, m.normal, d);
+  t.stretch = c.stretch_from(start_[i].anchor) + evaluate(world, c, m.shear, d);
   t.response = contact_response(world.joint_laws[c.joint], springs_of(c), t.gap, t.stretch);
   return t;
+}
+
+void ContactNewton::measure(const World& world, const std::vector<Contact>& contacts,
+                            const StepContext& ctx) {
+  measures_.resize(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    Measures& m = measures_[i];
+    m.normal = relative_along(world, ctx, c, c.measure_point(), c.normal);
+    m.tangent = relative_along(world, ctx, c, c.measure_point(), c.tangent);
+    m.shear = relative_along(world, ctx, c, c.edge_point(start_[i].anchor), c.tangent);
+  }
 }
 
 void ContactNewton::respond(const World& world, std::vector<Contact>& contacts,
@@ -110,9 +121,9 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
                                  const StepContext& ctx, const Eigen::VectorXd& d_hat,
                                  bool friction_follows) {
   NewtonCheck out;
-  const double resolution = kNewtonResolutionShare * world.allowed_penetration;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& c = contacts[i];
+    const double resolution = kNewtonResolutionShare * c.allowed_penetration;
     const Trial t = trial_at(world, c, i, ctx, d_hat);
     // The forces the solve gave this contact at d_hat, in the mode it was solved with.
     double normal = 0.0, shear = 0.0;
@@ -148,12 +159,14 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
     out.largest_mismatch = std::max(out.largest_mismatch, share);
     if (share > 1.0) ++out.mismatched;
     if (share > 1.0 && !strength_only) ++out.modes_mismatched;
+    if (share > 1.0 && strength_only) ++out.strengths_mismatched;
+    if (std::abs(t.response.normal_force - normal) / kn_ > resolution) ++out.normal_mismatched;
   }
   return out;
 }
 
 bool ContactNewton::friction_coupling(const World& world, const std::vector<Contact>& contacts,
-                                      const StepContext& ctx, const Eigen::VectorXd& d_hat,
+                                      const StepContext&, const Eigen::VectorXd& d_hat,
                                       std::vector<RankOneTerm>& u, std::vector<RankOneTerm>& v,
                                       Eigen::VectorXd& residual) const {
   u.clear();
@@ -169,76 +182,26 @@ bool ContactNewton::friction_coupling(const World& world, const std::vector<Cont
     }
     return t;
   };
-  for (const Contact& c : contacts) {
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
     if (c.state.mode != ContactMode::Slide) continue;
     const JointLaw& law = world.joint_laws[c.joint];
     if (law.tan_phi == 0.0) continue;
-    const Measure mn = relative_along(world, ctx, c, c.measure_point(), c.normal);
-    const Measure mt = relative_along(world, ctx, c, c.measure_point(), c.tangent);
+    const Measure& mn = measures_[i].normal;
+    const Measure& mt = measures_[i].tangent;
     const double normal = kn_ * (c.state.rest_shift - c.gap - evaluate(world, c, mn, d_hat));
     const double change = -c.state.slide_sign * law.tan_phi * (normal - c.state.normal_force);
     const RankOneTerm ut = term(c, mt, -c.state.slide_sign * law.tan_phi * kn_);
-    for (const auto& [i, value] : term(c, mt, change).entries) residual[i] += value;
+    for (const auto& [k, value] : term(c, mt, change).entries) residual[k] += value;
     u.push_back(ut);
     v.push_back(term(c, mn, 1.0));
   }
   return !u.empty();
 }
 
-void ContactNewton::accelerate_strengths(const World& world, std::vector<Contact>& contacts) {
-  // The slides that persist from the solve to its answer, with a friction that depends on N.
-  std::vector<std::size_t> slides;
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const Contact& c = contacts[i];
-    if (solved_mode_[i].first == ContactMode::Slide && c.state.mode == ContactMode::Slide &&
-        solved_mode_[i].second == c.state.slide_sign && world.joint_laws[c.joint].tan_phi > 0.0) {
-      slides.push_back(i);
-    }
-  }
-  if (slides != accelerated_) {
-    accelerated_ = slides;
-    history_.clear();
-  }
-  if (slides.empty()) return;
-  const auto n = static_cast<Eigen::Index>(slides.size());
-  Eigen::VectorXd used(n), answer(n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const Contact& c = contacts[slides[static_cast<std::size_t>(j)]];
-    used[j] = solved_strength_[slides[static_cast<std::size_t>(j)]];
-    answer[j] = sliding_resistance(c, world.joint_laws[c.joint], c.state.normal_force);
-  }
-  history_.push_back({used, answer});
-  if (history_.size() > kAccelerationMemory + 1) history_.pop_front();
-  if (history_.size() < 2) return;  // the plain update (the answer's strengths) stands
-  // Anderson's mixing (type II; Walker and Ni 2011): the combination of the last answers
-  // whose residual (answer - used) is least; for an affine map, as the strengths are while
-  // the modes stay, it is GMRES on the fixed point.
-  const auto m = static_cast<Eigen::Index>(history_.size() - 1);
-  Eigen::MatrixXd df(n, m), dg(n, m);
-  for (Eigen::Index k = 0; k < m; ++k) {
-    const auto& [u0, a0] = history_[static_cast<std::size_t>(k)];
-    const auto& [u1, a1] = history_[static_cast<std::size_t>(k) + 1];
-    df.col(k) = (a1 - u1) - (a0 - u0);
-    dg.col(k) = a1 - a0;
-  }
-  const Eigen::VectorXd gamma = df.colPivHouseholderQr().solve(answer - used);
-  if (!gamma.allFinite()) return;
-  const Eigen::VectorXd next = answer - dg * gamma;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    Contact& c = contacts[slides[static_cast<std::size_t>(j)]];
-    const JointLaw& law = world.joint_laws[c.joint];
-    const double base = sliding_resistance(c, law, 0.0);  // a Coulomb slip bond's cohesion
-    c.state.normal_force = std::max(0.0, (next[j] - base) / law.tan_phi);
-  }
-}
-
-void ContactNewton::reset_acceleration() {
-  accelerated_.clear();
-  history_.clear();
-}
 
 double ContactNewton::line_search(const World& world, const std::vector<Contact>& contacts,
-                                  const StepContext& ctx, const BlockSystem& block_terms,
+                                  const StepContext&, const BlockSystem& block_terms,
                                   const Eigen::VectorXd& d, const Eigen::VectorXd& d_hat) const {
   const Eigen::VectorXd step = d_hat - d;
   // Blocks: the work rate of their terms, linear in the step length a: lin + a quad.
@@ -257,9 +220,9 @@ double ContactNewton::line_search(const World& world, const std::vector<Contact>
   lines.reserve(contacts.size());
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& c = contacts[i];
-    const Measure mn = relative_along(world, ctx, c, c.measure_point(), c.normal);
+    const Measure& mn = measures_[i].normal;
     const double anchor = start_[i].anchor;
-    const Measure ms = relative_along(world, ctx, c, c.edge_point(anchor), c.tangent);
+    const Measure& ms = measures_[i].shear;
     Line l;
     l.gap = c.gap + evaluate(world, c, mn, d);
     l.dgap = evaluate(world, c, mn, step);
@@ -320,6 +283,26 @@ int ContactNewton::break_bonds(const World& world, std::vector<Contact>& contact
   return broken;
 }
 
+void ContactNewton::finish_as_solved(const World& world, std::vector<Contact>& contacts,
+                                     const Eigen::VectorXd& d_hat) const {
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact& c = contacts[i];
+    const Measures& m = measures_[i];
+    c.iterate.new_gap = c.gap + evaluate(world, c, m.normal, d_hat);
+    c.iterate.slip = evaluate(world, c, m.tangent, d_hat);
+    const double stretch = c.stretch_from(start_[i].anchor) + evaluate(world, c, m.shear, d_hat);
+    switch (c.state.mode) {
+      case ContactMode::Open: c.iterate.shear_force = 0.0; break;
+      case ContactMode::Lock: c.iterate.shear_force = -ks_ * stretch; break;
+      case ContactMode::Slide: c.iterate.shear_force = -c.state.slide_sign * solved_strength_[i]; break;
+    }
+    if (c.state.mode != ContactMode::Open) {
+      c.state.normal_force = std::max(0.0, kn_ * (c.state.rest_shift - c.iterate.new_gap));
+    }
+  }
+  finish_bookkeeping(world, contacts);
+}
+
 void ContactNewton::finish(const World& world, std::vector<Contact>& contacts,
                            const StepContext& ctx, const Eigen::VectorXd& d) const {
   set_responses(world, contacts, ctx, d, false);
@@ -330,8 +313,14 @@ void ContactNewton::finish(const World& world, std::vector<Contact>& contacts,
         solved_mode_[i].second == c.state.slide_sign) {
       c.iterate.shear_force = -c.state.slide_sign * solved_strength_[i];
     }
-    c.iterate.slip =
-        evaluate(world, c, relative_along(world, ctx, c, c.measure_point(), c.tangent), d);
+    c.iterate.slip = evaluate(world, c, measures_[i].tangent, d);
+  }
+  finish_bookkeeping(world, contacts);
+}
+
+void ContactNewton::finish_bookkeeping(const World& world, std::vector<Contact>& contacts) const {
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact& c = contacts[i];
     c.iterate.start_mode = start_[i].mode;
     c.iterate.start_t_lock = start_[i].anchor;
     c.iterate.mode_changes = 1;  // the energy account reads the start mode

@@ -22,13 +22,13 @@
 #pragma once
 
 #include <Eigen/Dense>
-#include <deque>
 #include <utility>
 #include <vector>
 
 #include "contact/contact.hpp"
 #include "contact/contact_response.hpp"
 #include "solver/block_system.hpp"
+#include "solver/contact_assembly.hpp"
 #include "solver/sparse_cholesky.hpp"
 #include "solver/step_context.hpp"
 #include "solver/world.hpp"
@@ -42,6 +42,8 @@ struct NewtonCheck {
   // Of those, the ones whose mode or slip direction differs (the rest slide on as solved,
   // their friction strength following the normal force).
   int modes_mismatched = 0;
+  int strengths_mismatched = 0;
+  int normal_mismatched = 0;  // whose normal force differs (open against closed, or its gap)
   double largest_mismatch = 0.0;  // the largest force difference, as a share of k x resolution
 };
 
@@ -50,7 +52,12 @@ class ContactNewton {
   // At an attempt's start (contacts as they entered the step): where each contact's shear
   // spring is anchored for the step (a locked contact's anchor, a sliding one's behind the
   // vertex by the friction it carried, an open one's where the vertex is).
-  ContactNewton(const World& world, const std::vector<Contact>& contacts, double penalty);
+  ContactNewton(const World& world, const std::vector<Contact>& contacts, const StepContext& ctx);
+
+  // How each contact sees the increments under the step's present T (its normal gap and
+  // slip at the measure point, its shear spring's stretch at the anchor): again whenever T
+  // changes (finite_rotation's secant columns).
+  void measure(const World& world, const std::vector<Contact>& contacts, const StepContext& ctx);
 
   // Every contact takes its response at increments d: mode, slip direction, anchor and
   // forces, the fields the assembly reads (add_contact_terms).
@@ -74,13 +81,6 @@ class ContactNewton {
   NewtonCheck check(const World& world, const std::vector<Contact>& contacts,
                     const StepContext& ctx, const Eigen::VectorXd& d_hat, bool friction_follows);
 
-  // After a check whose mismatches are all friction strengths (modes_mismatched 0) and a
-  // respond at its answer: the sliding contacts' strengths for the next solve, by Anderson
-  // mixing over the last solves (the friction follows N as a fixed point, linearly
-  // convergent on its own). reset_acceleration forgets the history (the modes changed).
-  void accelerate_strengths(const World& world, std::vector<Contact>& contacts);
-  void reset_acceleration();
-
   // How far to move from d towards d_hat: the root in (0, 1] of the work rate of all forces
   // along the line (blocks: `block_terms`, the assembled terms without contacts; contacts:
   // their responses), 1 when the forces still oppose the motion at d_hat.
@@ -98,6 +98,11 @@ class ContactNewton {
   // contact started with, the measure point of the next step.
   void finish(const World& world, std::vector<Contact>& contacts, const StepContext& ctx,
               const Eigen::VectorXd& d) const;
+  // The same for an attempt accepted before it converged, as Shi's code accepts one: the
+  // states as they were solved (the modes the answer d_hat was solved with and their forces
+  // there), so that the energy account books the forces that acted.
+  void finish_as_solved(const World& world, std::vector<Contact>& contacts,
+                        const Eigen::VectorXd& d_hat) const;
 
  private:
   struct Start {
@@ -112,19 +117,22 @@ class ContactNewton {
   Trial trial_at(const World& world, const Contact& c, std::size_t i, const StepContext& ctx,
                  const Eigen::VectorXd& d) const;
   ContactSprings springs_of(const Contact& c) const;
+  void finish_bookkeeping(const World& world, std::vector<Contact>& contacts) const;
   void set_responses(const World& world, std::vector<Contact>& contacts, const StepContext& ctx,
                      const Eigen::VectorXd& d, bool reversal_locks) const;
 
   std::vector<Start> start_;
+  struct Measures {
+    Measure normal;   // the gap, at the measure point
+    Measure tangent;  // the slip, at the measure point
+    Measure shear;    // the shear spring's stretch, at the anchor
+  };
+  std::vector<Measures> measures_;
   // What the last checked solve gave each contact: its mode and slip direction, and a
   // sliding one's friction strength (taken at the normal force of the iterate before).
   std::vector<double> solved_strength_;
   std::vector<std::pair<ContactMode, int>> solved_mode_;
-  // Anderson mixing: the contacts it mixes, and (strengths used, strengths answered) of the
-  // last solves.
-  std::vector<std::size_t> accelerated_;
-  std::deque<std::pair<Eigen::VectorXd, Eigen::VectorXd>> history_;
-  double kn_ = 0.0;
+  double kn_ = 0.0;  // the normal spring (the penalty) and the shear spring (N/m)
   double ks_ = 0.0;
 };
 

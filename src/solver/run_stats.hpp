@@ -52,6 +52,9 @@ struct RunStats {
   // contact resolution) of an attempt cut because it did not converge (0: none was).
   long line_searches_shortened = 0;
   double newton_unconverged_mismatch = 0.0;
+  // Attempts it accepted unconverged (a cycle or its limit with only shear modes left,
+  // solver/step.cpp), as Shi's code accepts a step after its loop's cap.
+  long newton_accepted_unconverged = 0;
   StageTimes stage_times;
   bool diverged = false;
   std::string message;     // why the run stopped early, empty otherwise

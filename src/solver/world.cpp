@@ -80,7 +80,8 @@ World make_world(const Scene& scene) {
   for (Block& b : world.blocks) {
     if (b.fixed) continue;
     const Box own = bounding_box(b.initial_vertices);
-    b.step_limit = scene.control.max_displacement_ratio * 0.5 * (own.max - own.min).maxCoeff();
+    b.size = 0.5 * (own.max - own.min).maxCoeff();
+    b.step_limit = scene.control.max_displacement_ratio * b.size;
     largest_limit = std::max(largest_limit, b.step_limit);
   }
   world.search_distance = kSearchDistanceFactor * largest_limit + world.allowed_penetration;

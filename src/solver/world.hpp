@@ -47,6 +47,7 @@ struct Block {
   // pair by pair: contact_detection.hpp) stays as local as the blocks (docs/contacts.md,
   // "Search distance").
   double step_limit = 0.0;
+  double size = 0.0;  // half the larger side of its bounding box at the start (m), as w0
   // A rigid block (issue 10, item 7) keeps the six slots of d like any block, but the
   // linear system solves only its u0, v0, r0 (BlockSystem's dof map): its strain increments
   // are exactly zero, it has no elastic matrix (D = 0) and no initial stress.
@@ -239,5 +240,23 @@ inline double density_now(const World& world, const Block& b) {
 
 // Kinetic energy 1/2 v^T M v of one block (J per metre), from its velocity and mass matrix.
 double kinetic_energy(const World& world, const Block& block);
+
+// The allowed penetration of a contact between blocks i and j (m): the scene's
+// allowed_penetration when the scene gives one, or with Shi's open-close loop (his rule,
+// kAutoPenetrationShare x w0, one value for the whole scene); with the converged contact
+// solver and "auto", kAutoPenetrationShare x the size of the smaller free block of the two,
+// so that a fixed block far away does not loosen every contact (one unrelated block 1000 km
+// off made a scene's allowance 200 m), and a pebble on a 50 m base is held to its own scale.
+inline double contact_allowance(const World& world, int i, int j) {
+  if (world.control.allowed_penetration || world.control.contact_solver != ContactSolver::Newton) {
+    return world.allowed_penetration;
+  }
+  double size = INFINITY;
+  for (const int k : {i, j}) {
+    const Block& b = world.blocks[static_cast<std::size_t>(k)];
+    if (!b.fixed) size = std::min(size, b.size);
+  }
+  return std::isfinite(size) ? kAutoPenetrationShare * size : world.allowed_penetration;
+}
 
 }  // namespace dda

@@ -1,0 +1,147 @@
+// The converged contact solver (control.contact_solver "newton", solver/contact_newton.hpp)
+// beside Shi's open-close loop: the same closed forms where the loop converges, and what the
+// loop gets wrong (a contact that pulls, steps cut because its modes cycle).
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "support/contact_scenes.hpp"
+#include "solver/energy.hpp"
+#include "solver/run.hpp"
+#include "solver/world.hpp"
+
+using namespace dda;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+constexpr double kG = 9.81;
+
+const char* name_of(ContactSolver s) { return s == ContactSolver::Newton ? "newton" : "open_close"; }
+
+RunStats run_quietly(World& world) {
+  return run(world, [](const World&, const RunStats&) { return true; });
+}
+
+}  // namespace
+
+TEST_CASE("both contact solvers slide a block down an incline at the closed-form acceleration",
+          "[contact][newton]") {
+  const ContactSolver solver = GENERATE(ContactSolver::OpenClose, ContactSolver::Newton);
+  INFO("contact solver " << name_of(solver));
+  const double dt = 0.002, slope = M_PI / 6.0;
+  Scene s = test::block_on_incline(30.0, 20.0, 1.0, 0.5, dt, 2.0);
+  s.control.contact_solver = solver;
+  World world = make_world(s);
+  const Vec2 down(-std::cos(slope), -std::sin(slope));
+  const Vec2 start = world.blocks[1].moments.centroid;
+  double d1 = 0.0;
+  const RunStats stats = run(world, [&](const World& w, const RunStats&) {
+    if (std::abs(w.time - 1.0) < 1e-9) d1 = (w.blocks[1].moments.centroid - start).dot(down);
+    return true;
+  });
+  REQUIRE_FALSE(stats.diverged);
+  const double d2 = (world.blocks[1].moments.centroid - start).dot(down);
+  const double acc = kG * (std::sin(slope) - std::cos(slope) * std::tan(20.0 * M_PI / 180.0));
+  // As in tests/contact/test_contact_physics.cpp: once sliding, Shi's step moves the block
+  // exactly at the closed form's acceleration; the start's lag (the springs loading up) is
+  // within dt, so the travel is within 2 dt / t of acc t^2 / 2, and the acceleration from the
+  // travel between 1 s and 2 s within 1e-5 (the start's elastic oscillation left in the
+  // positions, 6.6e-6 m against 1.8 m).
+  CHECK_THAT(d1, WithinRel(acc * 0.5, 2.0 * dt / 1.0));
+  CHECK_THAT(d2, WithinRel(acc * 2.0, 2.0 * dt / 2.0));
+  CHECK_THAT(2.0 * std::pow(std::sqrt(d2) - std::sqrt(d1), 2), WithinRel(acc, 1e-5));
+  CHECK(stats.cuts_for_open_close == 0);
+}
+
+TEST_CASE("both contact solvers hold a block on an incline below its friction angle",
+          "[contact][newton]") {
+  const ContactSolver solver = GENERATE(ContactSolver::OpenClose, ContactSolver::Newton);
+  INFO("contact solver " << name_of(solver));
+  Scene s = test::block_on_incline(30.0, 35.0, 1.0, 0.5, 0.002, 2.0);
+  s.control.contact_solver = solver;
+  World world = make_world(s);
+  const Vec2 start = world.blocks[1].moments.centroid;
+  Vec2 at_1s = start;
+  const RunStats stats = run(world, [&](const World& w, const RunStats&) {
+    if (std::abs(w.time - 1.0) < 1e-9) at_1s = w.blocks[1].moments.centroid;
+    return true;
+  });
+  REQUIRE_FALSE(stats.diverged);
+  // The creep of its settling on elastic supports stays below the compliance scale
+  // m g sin a / E (6.6e-6 m), and from 1 s on it does not move (round-off, 1e-10 m).
+  const double compliance = 2700.0 * kG * 0.5 * std::sin(M_PI / 6.0) / 1e9;
+  CHECK((world.blocks[1].moments.centroid - start).norm() < compliance);
+  CHECK((world.blocks[1].moments.centroid - at_1s).norm() < 1e-10);
+}
+
+TEST_CASE("both contact solvers carry a stack's weight down to the base", "[contact][newton]") {
+  const ContactSolver solver = GENERATE(ContactSolver::OpenClose, ContactSolver::Newton);
+  INFO("contact solver " << name_of(solver));
+  Scene s = test::base_scene(400, 0.01);
+  s.control.max_displacement_ratio = 0.01;
+  s.control.contact_solver = solver;
+  s.joint_materials[0].friction_angle = 30.0;
+  BlockSpec base = test::block(test::rectangle(-1.5, -1.0, 3.0, 1.0));
+  base.fixed = true;
+  s.blocks.push_back(base);
+  for (int k = 0; k < 5; ++k) s.blocks.push_back(test::block(test::rectangle(-0.5, k, 1.0, 1.0)));
+  World world = make_world(s);
+  const RunStats stats = run_quietly(world);
+  INFO(stats.message);
+  REQUIRE_FALSE(stats.diverged);
+  // The rigid stack's mean stress in block k from the top, -rho g h (k - 1/2), within the
+  // blocks' own strain rho g H / E = 1.3e-4 (as tests/contact/test_contact_physics.cpp).
+  const double strain = 2700.0 * kG * 5.0 / 1e9;
+  for (int k = 1; k <= 5; ++k) {
+    const Block& b = world.blocks[static_cast<std::size_t>(6 - k)];
+    CHECK_THAT(b.stress[1], WithinRel(-2700.0 * kG * (k - 0.5), strain));
+  }
+  CHECK(stats.cuts_for_open_close == 0);
+}
+
+TEST_CASE("a block touching a ceiling without a bond falls at g", "[contact][newton]") {
+  // A 0.1 m square whose top edge lies on the underside of a 20 m fixed ceiling, no
+  // cohesion, no tensile strength: nothing holds it. Shi's step moves a free body under a
+  // constant force by exactly v dt + g dt^2 / 2, so after 0.5 s its centroid has dropped
+  // g t^2 / 2 = 1.226 m to round-off of the positions (1e-12 m over 250 steps).
+  Scene s = test::base_scene(250, 0.002);
+  s.control.contact_solver = ContactSolver::Newton;
+  BlockSpec ceiling = test::block(test::rectangle(-10.0, 0.0, 20.0, 1.0));
+  ceiling.fixed = true;
+  s.blocks.push_back(ceiling);
+  s.blocks.push_back(test::block(test::rectangle(-0.05, -0.1, 0.1, 0.1)));
+  World world = make_world(s);
+  const double y0 = world.blocks[1].moments.centroid.y();
+  const RunStats stats = run_quietly(world);
+  REQUIRE_FALSE(stats.diverged);
+  const double t = world.time;
+  CHECK_THAT(y0 - world.blocks[1].moments.centroid.y(), WithinAbs(0.5 * kG * t * t, 1e-9));
+}
+
+TEST_CASE("the converged solver settles a box of tumbling squares without open-close cuts or "
+          "an energy gain", "[contact][newton]") {
+  // Ten squares dropped into the hard cases' box (tests/support/contact_scenes.hpp), 1 s:
+  // landings on corners, tumbling, sliding and settling, the cases Shi's loop cycles on.
+  Scene s = test::blocks_into_box(10);
+  s.control.end_time = 1.0;
+  s.control.penalty = 5e10;
+  s.control.contact_solver = ContactSolver::Newton;
+  World world = make_world(s);
+  const RunStats stats = run_quietly(world);
+  INFO(stats.message);
+  REQUIRE_FALSE(stats.diverged);
+  // Every attempt converges: cuts only for displacement (the falls, before landing).
+  CHECK(stats.cuts_for_open_close == 0);
+  // The account's remainder never rises above round-off of the scale (1e-12): an
+  // unexplained loss is numerical damping, a gain would be a wrong answer.
+  INFO("remainder max " << world.energy.remainder_max << " of scale " << world.energy.scale);
+  CHECK(world.energy.remainder_max <= 1e-12 * world.energy.scale);
+  // And they come to rest inside the box.
+  for (std::size_t i = 3; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
+    CHECK(b.moments.centroid.x() > 0.0);
+    CHECK(b.moments.centroid.x() < 1.5);
+    CHECK(b.moments.centroid.y() > 0.0);
+  }
+}
