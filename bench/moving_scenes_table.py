@@ -1,0 +1,74 @@
+#!/usr/bin/python3
+"""Prints the table of bench/moving_scenes.sh: one row per run of OUT_DIR.
+
+    moving_scenes_table.py OUT_DIR [SOLVER_LABEL]
+
+Reads OUT_DIR/scenes/manifest.json, OUT_DIR/runs/status.tsv and each run's summary.json,
+and judges each run with verification/hard-cases/report.py (the same checks and energy
+scale as the hard-case report).
+"""
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                                "verification", "hard-cases"))
+import report  # noqa: E402
+
+
+def main():
+    if len(sys.argv) not in (2, 3):
+        print(__doc__.strip().splitlines()[2].strip(), file=sys.stderr)
+        return 2
+    out = sys.argv[1]
+    label = sys.argv[2] if len(sys.argv) == 3 else "default"
+    with open(os.path.join(out, "scenes", "manifest.json")) as f:
+        manifest = json.load(f)
+    status = {}
+    with open(os.path.join(out, "runs", "status.tsv")) as f:
+        for line in f:
+            name, rc, wall = line.rstrip("\n").split("\t")
+            status[name] = (int(rc), float(wall))
+    lines = [f"Moving scenes, contact solver: {label} (whole `dda run` process, one core)", "",
+             "| scene | simulated (s) | wall (s) | steps | cut steps (disp / open-close / "
+             "penetr. / overshoot / material) | solves | open-close mean / max | "
+             "remainder max / scale | exit | checks |",
+             "|---|---:|---:|---:|---|---:|---:|---:|---:|---|"]
+    for m in manifest:
+        rc, wall = status.get(m["name"], (None, None))
+        with open(os.path.join(out, m["scene"])) as f:
+            control = json.load(f)["control"]
+        target = (f"{control['end_time']:g}" if "end_time" in control
+                  else f"{control['steps']} steps")
+        path = os.path.join(out, "runs", m["name"], "summary.json")
+        if not os.path.exists(path):
+            lines.append(f"| {m['name']} | – / {target} | {report.fmt(wall, '.1f')} | – | – | – "
+                         f"| – | – | {report.fmt(rc, 'd')} | no results |")
+            continue
+        with open(path) as f:
+            s = json.load(f)
+        cuts = s.get("cuts", {})
+        cut_text = (f"{s.get('cut_steps', 0)} ({cuts.get('displacement', 0)} / "
+                    f"{cuts.get('open_close', 0)} / {cuts.get('penetration', 0)} / "
+                    f"{cuts.get('overshoot', 0)} / {cuts.get('material', 0)})")
+        oc = s.get("open_close_iterations", {})
+        run = report.load_run(out, m)
+        ok, share, physics = report.judge(m, run, rc)
+        verdict = "pass" if ok else "FAIL"
+        if run is not None and rc not in (0, None):
+            verdict += f" (exit {rc})"
+        lines.append(
+            f"| {m['name']} | {s.get('end_time', 0):.4g} / {target} | {report.fmt(wall, '.1f')} "
+            f"| {s.get('steps')} | {cut_text} | {s.get('iterations')} "
+            f"| {report.fmt(oc.get('mean'), '.2f')} / {oc.get('max')} | {report.fmt(share, '.2g')} "
+            f"| {report.fmt(rc, 'd')} | {verdict}: {physics} |")
+    lines += ["", "simulated: the time the run reached / its end (or steps); solves: linear "
+              "solves in all (summary.json `iterations`); remainder: the largest energy "
+              "remainder over the hard-case scale of the scene (tolerance "
+              f"{report.TOLERANCE:g}); checks: verification/hard-cases/README.md."]
+    print("\n".join(lines))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
