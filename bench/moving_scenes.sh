@@ -4,7 +4,7 @@
 # to one core, and prints a table of simulated time, wall time, steps, cuts by reason,
 # solves, the energy remainder and the hard-case checks; then the hard-case report.
 #
-#   bench/moving_scenes.sh OUT_DIR [--solver NAME] [--only NAME...] [--timeout S] [--cpu N]
+#   bench/moving_scenes.sh OUT_DIR [--solver NAME] [--only NAME...] [--timeout S] [--cpu N] [--fos]
 #
 #   --solver NAME  sets control.contact_solver to NAME in every scene ("open_close" or
 #                  "newton"); a build that does not know the key rejects the scene (exit 2,
@@ -16,6 +16,11 @@
 #                  run shows exit 124 and the simulated time it reached (dda writes its
 #                  summary on SIGTERM).
 #   --cpu N        the core to pin the runs to (default 1).
+#   --fos          also cut models/slope-fos.json (1965 rigid blocks) and run `dda fos` on it,
+#                  as bench/cut_then_fos.sh does (on both cores, unpinned: fos runs two
+#                  trials at a time), with --solver's key in the scene, into OUT_DIR/fos;
+#                  prints each trial's F, verdict, steps and wall time. It is a bench only,
+#                  not a hard case (no energy check of its own).
 #
 # Env DDA_BUILD_DIR: the build directory (default build/release). OUT_DIR has the layout of
 # verification/hard-cases/run.sh (scenes/, runs/NAME/, runs/status.tsv), so
@@ -24,7 +29,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
 usage() {
-  echo "usage: $0 OUT_DIR [--solver NAME] [--only NAME...] [--timeout S] [--cpu N]" >&2
+  echo "usage: $0 OUT_DIR [--solver NAME] [--only NAME...] [--timeout S] [--cpu N] [--fos]" >&2
   exit 2
 }
 if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then usage; fi
@@ -34,11 +39,13 @@ solver=""
 only=()
 limit=1200
 cpu=1
+fos=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --solver) [ $# -ge 2 ] || usage; solver="$2"; shift 2 ;;
     --timeout) [ $# -ge 2 ] || usage; limit="$2"; shift 2 ;;
     --cpu) [ $# -ge 2 ] || usage; cpu="$2"; shift 2 ;;
+    --fos) fos=1; shift ;;
     --only)
       shift
       while [ $# -gt 0 ] && [ "${1#-}" = "$1" ]; do only+=("$1"); shift; done
@@ -88,3 +95,40 @@ done
 "$py" "$here/moving_scenes_table.py" "$out" "${solver:-default}" | tee "$out/bench.md"
 "$py" "$root/verification/hard-cases/report.py" "$out" >/dev/null || true
 echo "checks and energy plots: $out/report.md" >&2
+
+if [ "$fos" = 1 ]; then
+  rm -rf "$out/fos"
+  mkdir -p "$out/fos"
+  scene="$out/fos/slope-fos-scene.json"
+  "$exe" cut "$root/models/slope-fos.json" --out "$scene" >"$out/fos/cut.log" 2>&1
+  if [ -n "$solver" ]; then
+    "$py" -c 'import json, sys
+p, solver = sys.argv[1:3]
+s = json.load(open(p)); s["control"]["contact_solver"] = solver
+json.dump(s, open(p, "w"), indent=1)' "$scene" "$solver"
+  fi
+  echo "fos: running (at most $limit s) ..." >&2
+  start=$(date +%s.%N)
+  rc=0
+  timeout -k 60 "$limit" "$exe" fos "$scene" --out "$out/fos/run" >"$out/fos/fos.log" 2>&1 || rc=$?
+  end=$(date +%s.%N)
+  "$py" - "$out/fos/run/report.json" "$rc" "$start" "$end" <<'PY' | tee -a "$out/bench.md"
+import json, os, sys
+path, rc, t0, t1 = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
+print(f"\ndda fos on models/slope-fos.json: exit {rc}, {t1 - t0:.1f} s in all")
+if not os.path.exists(path):
+    print("no report (see fos/fos.log)")
+    sys.exit(0)
+r = json.load(open(path))
+print(f"consolidation {r['consolidation']['wall_time_s']:.1f} s; F = {r.get('factor_of_safety')} "
+      f"in {r.get('bracket')}\n")
+print("| F | verdict | steps | simulated (s) | wall (s) |\n|---:|---|---:|---:|---:|")
+for t in r["trials"]:
+    print(f"| {t['F']:.4f} | {t['verdict']} | {t['steps']} | {t['simulated_time']:.3g} "
+          f"| {t['wall_time_s']:.1f} |")
+walls = {v: [t["wall_time_s"] for t in r["trials"] if t["stable"] == v] for v in (True, False)}
+if walls[True] and walls[False]:
+    print(f"\nslowest failing trial {max(walls[False]):.1f} s, slowest stable one "
+          f"{max(walls[True]):.1f} s")
+PY
+fi

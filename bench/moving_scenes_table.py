@@ -42,8 +42,14 @@ def main():
                   else f"{control['steps']} steps")
         path = os.path.join(out, "runs", m["name"], "summary.json")
         if not os.path.exists(path):
+            why = ""
+            log = os.path.join(out, "runs", m["name"] + ".log")
+            if os.path.exists(log):
+                with open(log, errors="replace") as f:
+                    errors = [ln.strip() for ln in f if ln.startswith("dda: error")]
+                why = (": " + errors[-1][:300].replace("|", "/")) if errors else ""
             lines.append(f"| {m['name']} | – / {target} | {report.fmt(wall, '.1f')} | – | – | – "
-                         f"| – | – | {report.fmt(rc, 'd')} | no results |")
+                         f"| – | – | {report.fmt(rc, 'd')} | no results{why} |")
             continue
         with open(path) as f:
             s = json.load(f)
