@@ -373,7 +373,7 @@ def ellipse_polygon(cx, cy, rng, k_range, semi_range):
 def moving_box150(rng):
     """150 squares of 0.25 m, turned by up to 5 degrees, 15 a row 0.3 m apart, rows 0.35 m
     apart, the lowest 0.3 m above the floor of an open fixed box 4.5 m wide: box30 scaled
-    up (the issue's measurement of ntdda is for this kind of scene)."""
+    up."""
     n, per_row, pitch = 150, 15, 0.3
     width = per_row * pitch
     polys = []
@@ -556,8 +556,8 @@ def arch(n, ratio, radius=ARCH_RADIUS):
 
 
 # The crown of a standing arch drops by its elastic shortening and the contact springs'
-# give: 1.6 to 1.8 mm for these arches (R = 5 m, rock of 1 GPa; measured 2026-11-25 at
-# t/R 0.12 static and 0.15 dynamic). A hinge mechanism drops the crown by tenths of the
+# give: 1.6 to 1.8 mm for these arches (R = 5 m, rock of 1 GPa; measured at t/R 0.12
+# static and 0.15 dynamic). A hinge mechanism drops the crown by tenths of the
 # radius (13 to 14 cm within the static collapse runs below, and on). 1 cm (R / 500) lies
 # between, with room for the dynamic run's overshoot under the gravity applied at once.
 ARCH_STANDS = 0.01
@@ -597,8 +597,7 @@ def moving_wall1000(rng):
     # (2 E) (1 - nu^2) = 1.4 mm for H = 10.5 m, and up to twice that while it overshoots
     # under the gravity applied at once; the base row's ends spread by nu (1 + nu) sigma x
     # / E, up to 2 mm at 22 m from the middle, if the floor's friction lets them. A brick
-    # that slides or topples moves by centimetres: 1 cm lies between (2.7 mm measured
-    # 2026-11-25).
+    # that slides or topples moves by centimetres: 1 cm lies between (2.7 mm measured).
     still = 0.01
     scale = sum(weight(b["vertices"]) * still for b in blocks[1:])
     return dict(blocks=blocks, scale=scale, scale_note="m g x 1 cm (the still check's limit)",
@@ -644,7 +643,7 @@ def moving_cases(names):
 ARCH_STATIC_DT = 0.01
 ARCH_STATIC_STEPS = 1500
 # A collapsing arch's crown drops by many centimetres within those steps and keeps going
-# (13 to 14 cm at t/R 0.09, measured 2026-11-25); a standing one by its elastic settlement
+# (13 to 14 cm measured at t/R 0.09); a standing one by its elastic settlement
 # (under 2 mm): 5 cm is a mechanism.
 ARCH_COLLAPSED = 0.05
 
