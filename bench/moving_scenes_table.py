@@ -29,11 +29,18 @@ def main():
         for line in f:
             name, rc, wall = line.rstrip("\n").split("\t")
             status[name] = (int(rc), float(wall))
+    cpu = {}
+    cpu_path = os.path.join(out, "runs", "cpu.tsv")
+    if os.path.exists(cpu_path):
+        with open(cpu_path) as f:
+            for line in f:
+                name, seconds = line.rstrip("\n").split("\t")
+                cpu[name] = float(seconds)
     lines = [f"Moving scenes, contact solver: {label} (whole `dda run` process, one core)", "",
-             "| scene | simulated (s) | wall (s) | steps | cut steps (disp / open-close / "
+             "| scene | simulated (s) | wall (s) | CPU (s) | steps | cut steps (disp / open-close / "
              "penetr. / overshoot / material) | solves | open-close mean / max | "
-             "remainder max / scale | exit | checks |",
-             "|---|---:|---:|---:|---|---:|---:|---:|---:|---|"]
+             "remainder max / scale | exit | verdict | checks (measured) |",
+             "|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---|---|"]
     for m in manifest:
         rc, wall = status.get(m["name"], (None, None))
         with open(os.path.join(out, m["scene"])) as f:
@@ -48,8 +55,9 @@ def main():
                 with open(log, errors="replace") as f:
                     errors = [ln.strip() for ln in f if ln.startswith("dda: error")]
                 why = (": " + errors[-1][:300].replace("|", "/")) if errors else ""
-            lines.append(f"| {m['name']} | – / {target} | {report.fmt(wall, '.1f')} | – | – | – "
-                         f"| – | – | {report.fmt(rc, 'd')} | no results{why} |")
+            lines.append(f"| {m['name']} | – / {target} | {report.fmt(wall, '.1f')} "
+                         f"| {report.fmt(cpu.get(m['name']), '.1f')} | – | – | – "
+                         f"| – | – | {report.fmt(rc, 'd')} | FAIL | no results{why} |")
             continue
         with open(path) as f:
             s = json.load(f)
@@ -65,10 +73,11 @@ def main():
             verdict += f" (exit {rc})"
         lines.append(
             f"| {m['name']} | {s.get('end_time', 0):.4g} / {target} | {report.fmt(wall, '.1f')} "
-            f"| {s.get('steps')} | {cut_text} | {s.get('iterations')} "
+            f"| {report.fmt(cpu.get(m['name']), '.1f')} | {s.get('steps')} | {cut_text} | {s.get('iterations')} "
             f"| {report.fmt(oc.get('mean'), '.2f')} / {oc.get('max')} | {report.fmt(share, '.2g')} "
-            f"| {report.fmt(rc, 'd')} | {verdict}: {physics} |")
-    lines += ["", "simulated: the time the run reached / its end (or steps); solves: linear "
+            f"| {report.fmt(rc, 'd')} | {verdict} | {physics} |")
+    lines += ["", "simulated: the time the run reached / its end (or steps); wall: the whole "
+              "process; CPU: its user + system seconds; solves: linear "
               "solves in all (summary.json `iterations`); remainder: the largest energy "
               "remainder over the hard-case scale of the scene (tolerance "
               f"{report.TOLERANCE:g}); checks: verification/hard-cases/README.md."]
