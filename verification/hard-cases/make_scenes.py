@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Writes the hard-case scenes (issue 9) and their manifest.
 
-    make_scenes.py OUT_DIR [--smoke | --moving [NAME ...] | --arches]
+    make_scenes.py OUT_DIR [--smoke | --moving [NAME ...] | --moving-small | --arches]
 
 OUT_DIR/scenes/NAME.json are scenes in docs/scene-format.md (documented keys only);
 OUT_DIR/scenes/manifest.json lists every run: its scene, case, dt, mode, the case's energy
@@ -10,7 +10,7 @@ tilts come from fixed seeds.
 
 Without a flag: the 40 runs of the suite (--smoke: the CI subset). --moving: the scenes that
 must be fast (README.md, "Moving scenes"), one dynamic run each at dt 0.002 s (NAME ...: only
-those). --arches: the static arches at t/R 0.09 and 0.12 for 16, 18 and 20 voussoirs, below
+those); --moving-small: smaller versions of them, seconds each. --arches: the static arches at t/R 0.09 and 0.12 for 16, 18 and 20 voussoirs, below
 and above the thrust-line limit.
 """
 import argparse
@@ -393,7 +393,7 @@ HOPPER = {"outlet": 1.0, "outlet_y": 2.5, "bin": 5.4, "wall_angle": 60.0, "wall"
           "catch": 9.0}
 
 
-def moving_hopper300(rng):
+def moving_hopper300(rng, n=300, end_time=4.0):
     """A bin with a hopper bottom: vertical walls 5.4 m apart above two fixed walls inclined
     at 60 degrees that funnel onto an outlet 1 m wide (four to six grain sizes: it flows,
     Beverloo's rule of thumb for a free discharge) 2.5 m above the floor of an open catch
@@ -405,7 +405,7 @@ def moving_hopper300(rng):
     tan_w = math.tan(math.radians(h["wall_angle"]))
     y0 = h["outlet_y"]
     y_top_hopper = y0 + (half_bin - half_out) * tan_w
-    n, pitch, size = 300, 0.33, 0.15  # size: the largest semi-axis
+    pitch, size = 0.33, 0.15  # size: the largest semi-axis
     polys = []
     row = 0
     while len(polys) < n:
@@ -420,7 +420,8 @@ def moving_hopper300(rng):
                 break
             polys.append(ellipse_polygon(x_first + pitch * col, cy, rng, (5, 8), (0.075, size)))
         row += 1
-    top = max(y for p in polys for _, y in p) + 0.3
+    # The bin's walls reach 0.3 m above the highest grain (and above the funnel's top).
+    top = max(max(y for p in polys for _, y in p), y_top_hopper) + 0.3
     left = [fixed(ccw([[-half_out, y0], [-half_bin, y_top_hopper],
                        [-half_bin - t, y_top_hopper], [-half_out - t, y0]])),
             fixed(rect(-half_bin - t, y_top_hopper, -half_bin, top))]
@@ -437,10 +438,10 @@ def moving_hopper300(rng):
                 scale_note="m g (centroid - mid-height of a void-free layer in the catch box)",
                 checks=[{"kind": "inside", "x_min": -catch / 2, "x_max": catch / 2,
                          "y_min": 0.0}],
-                end_time=4.0)
+                end_time=end_time)
 
 
-def moving_rockfall10(rng):
+def moving_rockfall10(rng, n=10, end_time=8.0):
     """A benched slope of three fixed levels, each a 4 m face (60, 55 and 50 degrees from
     the top down) with a 2 m flat bench below the upper two, then a fixed floor 15 m long
     ending at a low fixed wall; friction 38 degrees, below every face's angle, so a boulder
@@ -472,8 +473,8 @@ def moving_rockfall10(rng):
         return best
 
     polys = []
-    for row in range(2):
-        for col in range(5):
+    for row in range((n + 4) // 5):
+        for col in range(min(5, n - 5 * row)):
             cx = tops[2] + 0.5 + 1.1 * col
             p = ellipse_polygon(cx, 0.0, rng, (5, 8), (0.25, 0.5))
             # The surface falls to the right, so its highest point under the column's
@@ -491,7 +492,7 @@ def moving_rockfall10(rng):
                         # inradius above it; half the smallest one's leaves room for the
                         # springs and for a boulder resting on a corner of a bench.
                         {"kind": "above", "profile": profile, "clearance": 0.5 * min(inr)}],
-                end_time=8.0)
+                end_time=end_time)
 
 
 def moving_dominoes15(rng):
@@ -573,13 +574,12 @@ def moving_arch18(rng):
                 end_time=3.0)
 
 
-def moving_wall1000(rng):
+def moving_wall1000(rng, n=1000):
     """The 1000-brick wall of the contact benchmarks (bench/brick_wall.hpp) as a user writes
     it: bricks 1 m x 0.5 m in running bond, 45 to a row, the odd rows closed at both ends
     by half bricks, rows filled from the bottom (the top one partial), on a fixed base,
     built touching, 100 steps with the scene defaults (max_open_close 8, displacement ratio
     0.01) where the bench uses 30 and a ratio scaled to the wall."""
-    n = 1000
     cols = math.ceil(math.sqrt(2.0 * n))
     blocks = [fixed(rect(-1.0, -1.0, cols + 1.0, 0.0))]
     placed, row = 0, 0
@@ -627,10 +627,18 @@ MOVING = {"box150": moving_box150, "hopper300": moving_hopper300,
           "arch18": moving_arch18, "wall1000": moving_wall1000, "hang": moving_hang}
 
 
-def moving_cases(names):
+# Small versions that run in seconds each (for a CI smoke run): the hang and the arch as
+# they are, fewer grains, boulders and bricks, the dominoes as they are.
+MOVING_SMALL = {"hopper40": lambda rng: moving_hopper300(rng, n=40, end_time=2.0),
+                "rockfall3": lambda rng: moving_rockfall10(rng, n=3, end_time=4.0),
+                "dominoes15": moving_dominoes15, "arch18": moving_arch18,
+                "wall110": lambda rng: moving_wall1000(rng, n=110), "hang": moving_hang}
+
+
+def moving_cases(names, table=MOVING):
     """The moving scenes, each drawing from its own seeded stream (so that one can be
     written alone and still be the same scene)."""
-    return {name: f(random.Random(f"moving-{name}")) for name, f in MOVING.items()
+    return {name: f(random.Random(f"moving-{name}")) for name, f in table.items()
             if not names or name in names}
 
 
@@ -714,6 +722,8 @@ def main():
     group.add_argument("--smoke", action="store_true")
     group.add_argument("--moving", nargs="*", metavar="NAME", choices=list(MOVING),
                        help="the moving scenes (all, or the ones named)")
+    group.add_argument("--moving-small", action="store_true",
+                       help="small versions of the moving scenes, seconds each")
     group.add_argument("--arches", action="store_true",
                        help="the static arches below and above the thrust-line limit")
     args = ap.parse_args()
@@ -721,6 +731,11 @@ def main():
         write_runs(args.out_dir, [(name, name, MOVING_DT, "dynamic",
                                    moving_scene(name, c, MOVING_DT, "dynamic"), c)
                                   for name, c in moving_cases(args.moving).items()])
+        return
+    if args.moving_small:
+        write_runs(args.out_dir, [(name, name, MOVING_DT, "dynamic",
+                                   moving_scene(name, c, MOVING_DT, "dynamic"), c)
+                                  for name, c in moving_cases([], MOVING_SMALL).items()])
         return
     if args.arches:
         write_runs(args.out_dir, [(name, name, ARCH_STATIC_DT, "static",

@@ -3,12 +3,13 @@
 # `dda run`, timing it, then writes OUT_DIR/report.md and one PNG per case, and prints the
 # report. Exits 1 if any run fails its checks (everything is still written), 2 on bad use.
 #
-#   verification/hard-cases/run.sh OUT_DIR [--smoke | --moving | --arches]
+#   verification/hard-cases/run.sh OUT_DIR [--smoke | --moving | --moving-small | --arches]
 #
 # --moving runs the scenes that must be fast (README.md, "Moving scenes"; the hopper alone
-# takes over an hour today), --arches the static arches below and above the thrust-line
-# limit; neither is part of the default runs. Env HARD_CASES_LIMIT: the seconds a run may
-# take before it is stopped (default 1800, 120 with --smoke).
+# takes over an hour today), --moving-small smaller versions of them (seconds each),
+# --arches the static arches below and above the thrust-line limit; none of them is part of
+# the default runs. Env HARD_CASES_LIMIT: the seconds a run may take before it is stopped
+# (default 1800, 120 with --smoke).
 #
 # It builds nothing: it runs $DDA_BUILD_DIR/dda (default: build/release of this repository;
 # build it first with `cmake --preset release && cmake --build --preset release`), and
@@ -17,7 +18,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 usage() {
-  echo "usage: $0 OUT_DIR [--smoke | --moving | --arches]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
+  echo "usage: $0 OUT_DIR [--smoke | --moving | --moving-small | --arches]   (env DDA_BUILD_DIR: the build directory, default build/release)" >&2
   exit 2
 }
 if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then usage; fi
@@ -29,7 +30,7 @@ if [ $# -gt 1 ]; then usage; fi
 for arg in "$@"; do
   case "$arg" in
     --smoke) flags=(--smoke); limit=120 ;;
-    --moving | --arches) flags=("$arg") ;;
+    --moving | --moving-small | --arches) flags=("$arg") ;;
     *) usage ;;
   esac
 done
