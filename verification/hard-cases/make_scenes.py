@@ -10,8 +10,8 @@ tilts come from fixed seeds.
 
 Without a flag: the 40 runs of the suite (--smoke: the CI subset). --moving: the scenes that
 must be fast (README.md, "Moving scenes"), one dynamic run each at dt 0.002 s (NAME ...: only
-those); --moving-small: smaller versions of them, seconds each. --arches: the static arches at t/R 0.09 and 0.12 for 16, 18 and 20 voussoirs, below
-and above the thrust-line limit.
+those); --moving-small: smaller versions of them. --arches: the static arches at t/R 0.09
+and 0.12 for 16, 18 and 20 voussoirs, below and above the thrust-line limit.
 """
 import argparse
 import json
@@ -395,8 +395,8 @@ HOPPER = {"outlet": 1.0, "outlet_y": 2.5, "bin": 5.4, "wall_angle": 60.0, "wall"
 
 def moving_hopper300(rng, n=300, end_time=4.0):
     """A bin with a hopper bottom: vertical walls 5.4 m apart above two fixed walls inclined
-    at 60 degrees that funnel onto an outlet 1 m wide (four to six grain sizes: it flows,
-    Beverloo's rule of thumb for a free discharge) 2.5 m above the floor of an open catch
+    at 60 degrees that funnel onto an outlet 1 m wide (3 to 7 grain sizes across, wide
+    enough to flow rather than clog at once) 2.5 m above the floor of an open catch
     box 9 m wide. 300 random convex polygons (5 to 8 vertices on an ellipse of semi-axes
     7.5 to 15 cm, so 0.15 to 0.3 m across) fill the funnel and the bin above it, one per
     0.33 m cell so none overlap; they flow out through the outlet onto the floor."""
@@ -497,8 +497,8 @@ def moving_rockfall10(rng, n=10, end_time=8.0):
 
 def moving_dominoes15(rng):
     """15 slabs 0.1 m x 0.8 m standing 0.4 m apart on a fixed floor; the first turns about
-    its right-hand foot at 1.5 rad/s clockwise (0.53 rad/s lifts its centroid over that
-    foot, so it falls), hits the second, and so on down the row."""
+    its right-hand foot at 1.5 rad/s clockwise (0.53 rad/s would lift its centroid just
+    over that foot), so it falls, hits the second, and so on down the row."""
     n, t, height, pitch = 15, 0.1, 0.8, 0.4
     blocks = [fixed(rect(-1.0, -0.3, pitch * n + 1.5, 0.0))]
     omega = -1.5
@@ -530,8 +530,8 @@ def arch(n, ratio, radius=ARCH_RADIUS):
     """A semicircular arch of n voussoirs, centreline radius `radius`, thickness ratio
     t / R, each voussoir a quadrilateral with its corners on the intrados and extrados
     circles, on two fixed springers 1 m deep, over a fixed floor 1 m below the springing
-    line. Returns the blocks, the indices of the one or two crown voussoirs and their
-    total weight."""
+    line. Returns the blocks, the indices of the one or two crown voussoirs, the
+    voussoirs' total weight and their polygons."""
     t = ratio * radius
     ri, ro = radius - t / 2, radius + t / 2
     polys = []
@@ -627,8 +627,9 @@ MOVING = {"box150": moving_box150, "hopper300": moving_hopper300,
           "arch18": moving_arch18, "wall1000": moving_wall1000, "hang": moving_hang}
 
 
-# Small versions that run in seconds each (for a CI smoke run): the hang and the arch as
-# they are, fewer grains, boulders and bricks, the dominoes as they are.
+# Small versions for a CI smoke run once the contact step converges (today the hopper40
+# takes about 20 s of CPU, the rest a few seconds each): fewer grains, boulders and
+# bricks; the dominoes, the arch and the hang as they are.
 MOVING_SMALL = {"hopper40": lambda rng: moving_hopper300(rng, n=40, end_time=2.0),
                 "rockfall3": lambda rng: moving_rockfall10(rng, n=3, end_time=4.0),
                 "dominoes15": moving_dominoes15, "arch18": moving_arch18,
