@@ -123,7 +123,11 @@ import json, os, sys
 path, rc, t0, t1 = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
 print(f"\ndda fos on models/slope-fos.json: exit {rc}, {t1 - t0:.1f} s in all")
 if not os.path.exists(path):
-    print("no report (see fos/fos.log)")
+    # Stopped before the search ended: the trials it finished are in its log.
+    log = os.path.join(os.path.dirname(os.path.dirname(path)), "fos.log")
+    print("no report; the trials it finished (fos/fos.log):\n")
+    with open(log, errors="replace") as f:
+        print("".join(ln for ln in f if ln.startswith("dda: trial ")), end="")
     sys.exit(0)
 r = json.load(open(path))
 print(f"consolidation {r['consolidation']['wall_time_s']:.1f} s; F = {r.get('factor_of_safety')} "
