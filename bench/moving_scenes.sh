@@ -134,7 +134,8 @@ print(f"consolidation {r['consolidation']['wall_time_s']:.1f} s; F = {r.get('fac
       f"in {r.get('bracket')}\n")
 print("| F | verdict | steps | simulated (s) | wall (s) |\n|---:|---|---:|---:|---:|")
 for t in r["trials"]:
-    print(f"| {t['F']:.4f} | {t['verdict']} | {t['steps']} | {t['simulated_time']:.3g} "
+    verdict = ("stable, " if t["stable"] else "failing, ") + t["verdict"]
+    print(f"| {t['F']:.4f} | {verdict} | {t['steps']} | {t['simulated_time']:.3g} "
           f"| {t['wall_time_s']:.1f} |")
 walls = {v: [t["wall_time_s"] for t in r["trials"] if t["stable"] == v] for v in (True, False)}
 if walls[True] and walls[False]:
