@@ -4,7 +4,8 @@
 # to one core, and prints a table of simulated time, wall time, steps, cuts by reason,
 # solves, the energy remainder and the hard-case checks; then the hard-case report.
 #
-#   bench/moving_scenes.sh OUT_DIR [--solver NAME] [--only NAME...] [--timeout S] [--cpu N] [--fos]
+#   bench/moving_scenes.sh OUT_DIR [--solver NAME] [--only NAME...] [--small] [--timeout S]
+#                          [--cpu N] [--fos]
 #
 #   --solver NAME  sets control.contact_solver to NAME in every scene ("open_close" or
 #                  "newton"); a build that does not know the key rejects the scene (exit 2,
@@ -12,6 +13,8 @@
 #                  key out and the build's default solver runs.
 #   --only NAME... only these scenes (box150 hopper300 rockfall10 dominoes15 arch18
 #                  wall1000 hang); default all.
+#   --small        the small versions instead (make_scenes.py --moving-small: hopper40,
+#                  rockfall3, dominoes15, arch18, wall110, hang); not with --only.
 #   --timeout S    seconds a run may take before it is stopped (default 1200); a stopped
 #                  run shows exit 124 and the simulated time it reached (dda writes its
 #                  summary on SIGTERM).
@@ -29,7 +32,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
 usage() {
-  echo "usage: $0 OUT_DIR [--solver NAME] [--only NAME...] [--timeout S] [--cpu N] [--fos]" >&2
+  echo "usage: $0 OUT_DIR [--solver NAME] [--only NAME... | --small] [--timeout S] [--cpu N] [--fos]" >&2
   exit 2
 }
 if [ $# -lt 1 ] || [ "${1#-}" != "$1" ]; then usage; fi
@@ -40,12 +43,14 @@ only=()
 limit=1200
 cpu=1
 fos=0
+small=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --solver) [ $# -ge 2 ] || usage; solver="$2"; shift 2 ;;
     --timeout) [ $# -ge 2 ] || usage; limit="$2"; shift 2 ;;
     --cpu) [ $# -ge 2 ] || usage; cpu="$2"; shift 2 ;;
     --fos) fos=1; shift ;;
+    --small) small=1; shift ;;
     --only)
       shift
       while [ $# -gt 0 ] && [ "${1#-}" = "$1" ]; do only+=("$1"); shift; done
@@ -54,6 +59,7 @@ while [ $# -gt 0 ]; do
     *) usage ;;
   esac
 done
+if [ "$small" = 1 ] && [ ${#only[@]} -gt 0 ]; then usage; fi
 case "$limit" in '' | *[!0-9]*) echo "$0: --timeout wants whole seconds, not '$limit'" >&2; exit 2 ;; esac
 exe="${DDA_BUILD_DIR:-$root/build/release}/dda"
 [ -x "$exe" ] || { echo "$0: $exe not found; build first (cmake --preset release && cmake --build --preset release)" >&2; exit 2; }
@@ -61,7 +67,11 @@ py=/usr/bin/python3  # Debian's: numpy and matplotlib for the report
 
 mkdir -p "$out"
 rm -rf "$out/scenes" "$out/runs"
-"$py" "$root/verification/hard-cases/make_scenes.py" "$out" --moving "${only[@]}"
+if [ "$small" = 1 ]; then
+  "$py" "$root/verification/hard-cases/make_scenes.py" "$out" --moving-small
+else
+  "$py" "$root/verification/hard-cases/make_scenes.py" "$out" --moving "${only[@]}"
+fi
 if [ -n "$solver" ]; then
   "$py" - "$out/scenes" "$solver" <<'PY'
 import json, os, sys
