@@ -37,10 +37,10 @@ def main():
                 name, seconds = line.rstrip("\n").split("\t")
                 cpu[name] = float(seconds)
     lines = [f"Moving scenes, contact solver: {label} (whole `dda run` process, one core)", "",
-             "| scene | simulated (s) | wall (s) | CPU (s) | steps | cut steps (disp / "
+             "| scene | solver | simulated (s) | wall (s) | CPU (s) | steps | cut steps (disp / "
              "open-close / penetr. / overshoot / material) | solves | open-close mean / max | "
              "remainder max / scale | exit | verdict | checks (measured) |",
-             "|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---|---|"]
+             "|---|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---|---|"]
     for m in manifest:
         rc, wall = status.get(m["name"], (None, None))
         with open(os.path.join(out, m["scene"])) as f:
@@ -55,7 +55,7 @@ def main():
                 with open(log, errors="replace") as f:
                     errors = [ln.strip() for ln in f if ln.startswith("dda: error")]
                 why = (": " + errors[-1][:300].replace("|", "/")) if errors else ""
-            lines.append(f"| {m['name']} | – / {target} | {report.fmt(wall, '.1f')} "
+            lines.append(f"| {m['name']} | – | – / {target} | {report.fmt(wall, '.1f')} "
                          f"| {report.fmt(cpu.get(m['name']), '.1f')} | – | – | – "
                          f"| – | – | {report.fmt(rc, 'd')} | FAIL | no results{why} |")
             continue
@@ -66,16 +66,25 @@ def main():
                     f"{cuts.get('open_close', 0)} / {cuts.get('penetration', 0)} / "
                     f"{cuts.get('overshoot', 0)} / {cuts.get('material', 0)})")
         oc = s.get("open_close_iterations", {})
+        # The solver the run used, when the build writes it; with the Newton solver, how
+        # many solves its line search took only in part.
+        solver = s.get("settings", {}).get("contact_solver", "–")
+        shortened = s.get("contact_solver", {}).get("line_searches_shortened")
+        if solver == "newton" and shortened is not None:
+            solver += f" ({shortened} shortened)"
         run = report.load_run(out, m)
         ok, share, physics = report.judge(m, run, rc)
         verdict = "pass" if ok else "FAIL"
         lines.append(
-            f"| {m['name']} | {s.get('end_time', 0):.4g} / {target} | {report.fmt(wall, '.1f')} "
+            f"| {m['name']} | {solver} | {s.get('end_time', 0):.4g} / {target} "
+            f"| {report.fmt(wall, '.1f')} "
             f"| {report.fmt(cpu.get(m['name']), '.1f')} | {s.get('steps')} | {cut_text} "
             f"| {s.get('iterations')} "
             f"| {report.fmt(oc.get('mean'), '.2f')} / {oc.get('max')} | {report.fmt(share, '.2g')} "
             f"| {report.fmt(rc, 'd')} | {verdict} | {physics} |")
-    lines += ["", "simulated: the time the run reached / its end (or steps); wall: the whole "
+    lines += ["", "solver: summary.json's settings.contact_solver (– when the build does not "
+              "write it), with the Newton solver's line searches that took a solve only in "
+              "part; simulated: the time the run reached / its end (or steps); wall: the whole "
               "process; CPU: its user + system seconds; solves: linear "
               "solves in all (summary.json `iterations`); remainder: the largest energy "
               "remainder over the hard-case scale of the scene (tolerance "
