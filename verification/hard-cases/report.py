@@ -131,6 +131,41 @@ def check_open_close_mean(run, c):
     return mean <= c["limit"], f"open-close mean {mean:.2f} (<= {c['limit']:g})"
 
 
+def check_fallen(run, c):
+    """Every free block has turned by at least min_deg (a row of dominoes that fell)."""
+    turned = min(abs(math.degrees(run["summary"]["blocks"][i]["rotation"])) for i in run["free"])
+    return turned >= c["min_deg"], f"least turn {turned:.3g} deg (>= {c['min_deg']:g})"
+
+
+def crown_drops(run, c):
+    """The drop of the listed blocks' centroids (the crown) from the start, at every output
+    frame and at the end: the largest of the listed blocks in each state."""
+    start = run["frames"][0]["blocks"]
+    return [max(start[i][1] - state[i][1] for i in c["blocks"]) for state in run["states"]]
+
+
+def check_stands(run, c):
+    drop = max(crown_drops(run, c))
+    return drop <= c["limit"], f"crown drop {drop:.2g} m (<= {c['limit']:g})"
+
+
+def check_collapses(run, c):
+    drop = crown_drops(run, c)[-1]
+    return drop >= c["min"], f"crown drop {drop:.3g} m at the end (>= {c['min']:g})"
+
+
+def check_fall_at_g(run, c):
+    """The block's centroid fell g t^2 / 2 over the time the run reached, to rel_tol."""
+    i = c["block"]
+    g = math.hypot(*run["gravity"])
+    t = run["end_time"]
+    expected = 0.5 * g * t * t
+    drop = run["frames"][0]["blocks"][i][1] - run["final"][i][1]
+    error = abs(drop / expected - 1.0) if expected > 0 else math.inf
+    return error <= c["rel_tol"], (f"drop {drop:.4g} m of g t^2/2 = {expected:.4g} m at "
+                                   f"t {t:g} s (rel. error {error:.2g} <= {c['rel_tol']:g})")
+
+
 CHECKS = {name[len("check_"):]: f for name, f in globals().items() if name.startswith("check_")}
 
 
@@ -163,6 +198,7 @@ def load_run(out, m):
     run = {"summary": summary, "frames": frames, "free": free, "mass": mass, "final": final,
            "scale": m["scale"], "full": FULL_ACCOUNT in columns,
            "states": [{i: f["blocks"][i] for i in free} for f in frames] + [final],
+           "gravity": scene.get("gravity", [0.0, -9.81]), "end_time": summary.get("end_time"),
            "kinetic_end": energy.get("kinetic", frames[-1]["kinetic"]),
            "potential_end": energy.get("potential", frames[-1]["potential"])}
     if run["full"]:
