@@ -454,6 +454,11 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
                 {"penetration", stats.cuts_for_penetration},
                 {"material", stats.cuts_for_material},
                 {"overshoot", stats.cuts_for_overshoot}}},
+      // The accepted steps' lengths (RunStats): after a cut the step size remembers the step
+      // that worked (solver/step.cpp), so a schedule too long for the scene shows here.
+      {"time_steps_taken", {{"smallest", stats.smallest_time_step},
+                            {"largest", stats.largest_time_step},
+                            {"below_schedule", stats.steps_below_schedule}}},
       {"iterations", stats.iterations},
       {"open_close_iterations", per_step(stats.open_close_total, stats.open_close_max, stats.steps)},
       {"contacts", {{"final", stats.contacts_final},

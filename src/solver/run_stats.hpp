@@ -25,6 +25,13 @@ struct RunStats {
   int cuts_for_penetration = 0;   //   a contact deeper than allowed_penetration
   int cuts_for_material = 0;      //   a plastic block's return map failed
   int cuts_for_overshoot = 0;     //   an open contact's vertex ended inside the other block
+  // The accepted steps' lengths (s), the last step shortened only to land on end_time (or a
+  // stage's end) left out: the shortest and the longest (0 before any), and how many steps
+  // were shorter than the schedule asked (cut, or started from the step size remembered
+  // after a cut: solver/step.cpp, advance_step).
+  double smallest_time_step = 0.0;
+  double largest_time_step = 0.0;
+  int steps_below_schedule = 0;
   long iterations = 0;     // linear solves (assemble + solve passes) in all
   double wall_time_s = 0;  // whole run, seconds
   long open_close_total = 0;  // open-close iterations of accepted steps, summed

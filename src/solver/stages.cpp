@@ -40,6 +40,7 @@ void enter_stage(World& world, int stage) {
   world.control.dynamic_coefficient = s.dynamic_coefficient;
   world.control.steps.reset();
   world.control.end_time = plan.end_times[static_cast<std::size_t>(stage)];
+  world.step_size = StepSizeMemory{};  // the stage starts from its own schedule
   world.joint_laws = plan.joint_laws;
   for (const StageJoint& o : s.joint_materials) {
     world.joint_laws[static_cast<std::size_t>(o.joint)] = joint_law_of(o.material);
@@ -82,7 +83,7 @@ bool enter_next_stage(World& world, std::vector<Contact>& contacts) {
 void set_stage_gravity(World& world) {
   const StagePlan& plan = world.stages;
   if (plan.stages.empty()) return;
-  const double step_end = world.time + scheduled_time_step(world);
+  const double step_end = world.time + time_step_to_try(world);
   change_gravity(world, stage_gravity_factor(plan, plan.current, step_end) * plan.gravity);
 }
 

@@ -46,7 +46,8 @@ void start_stages(World& world, const Scene& scene);
 bool enter_next_stage(World& world, std::vector<Contact>& contacts);
 
 // Sets world.gravity for the coming step: the scene's gravity times the stage's factor at the
-// step's scheduled end (a ramp reaches its last factor on the stage's last step, which is
+// end of the step's first attempt (time_step_to_try: the schedule's step, or the remembered
+// one after a cut; a ramp reaches its last factor on the stage's last step, which is
 // shortened to land on the stage's end). No stages: nothing.
 void set_stage_gravity(World& world);
 

@@ -36,6 +36,12 @@ constexpr double kContactCut = 0.3;
 // scheduled step, where an impact's penetration (which shrinks with dt) is long cured; what
 // is left is a static penetration, which no cut cures.
 constexpr int kPenetrationCuts = 6;
+// The same limit on a step that starts short: a penetration cut needed when dt is already this
+// share of the schedule (six contact cuts' worth) ends the run too. The remembered step size
+// would otherwise let a load the penalty cannot carry creep down a few cuts a step, each step
+// accepted a little shorter, until the step vanished with no word of the penetration.
+constexpr double kPenetrationFloor =
+    kContactCut * kContactCut * kContactCut * kContactCut * kContactCut * kContactCut;
 // An open contact whose vertex, placed by the configuration update itself, ends the step
 // deeper than this share of the allowed penetration inside the other block cuts the step
 // (CutReason::Overshoot). The open-close loop judges a gap by its linearisation, which
@@ -49,6 +55,14 @@ constexpr double kOvershootShare = 0.01;
 constexpr double kSmallestStepShare = 1e-9;
 // Times closer than this share of a step count as equal (end_time reached).
 constexpr double kTimeRoundOff = 1e-9;
+// The step size that remembers (World::step_size, remember_step): after a cut, each step that
+// succeeds at the remembered size lets the next try up to this factor longer, until the
+// schedule is reached. 1.2 (issue 25's example; ODE step controllers cap growth at 1.5 to 5,
+// but they have an error estimate to aim with, and a failed DDA attempt costs a whole solve)
+// brings a contact cut (0.3) back to the schedule in 7 steps and Shi's smallest cut (0.1) in
+// 13, so a passing event costs a handful of short steps; were the cause to persist, a growth
+// that fails again loses one attempt in about 7 accepted steps rather than one in each.
+constexpr double kStepGrowth = 1.2;
 
 // finite_rotation iterates each block's secant angle r* to the step's own r0. A secant
 // column at r* instead of r0 moves a point at distance l from the reference point by about
@@ -216,6 +230,12 @@ double scheduled_time_step(const World& world) {
   double dt = list[static_cast<std::size_t>(world.step) % list.size()];
   if (world.control.end_time) dt = std::min(dt, *world.control.end_time - world.time);
   return dt;
+}
+
+double time_step_to_try(const World& world) {
+  const double scheduled = scheduled_time_step(world);
+  const double remembered = world.step_size.next;
+  return remembered > 0.0 ? std::min(scheduled, remembered) : scheduled;
 }
 
 bool is_finished(const World& world) {
@@ -592,14 +612,54 @@ void commit_step(World& world, const Eigen::VectorXd& d,
   count_step(world, iterations, stats);
 }
 
+// The step size that remembers (World::step_size), at the acceptance of a step of length dt
+// whose first attempt was first_dt (the schedule's, `scheduled_dt`, or the remembered step if
+// shorter). A step that was cut leaves the step that worked for the next one to start from; a
+// step that worked at the remembered size lets the next try kStepGrowth times longer. Neither
+// goes beyond what the accepted step's motion says fits: `moved`, the share of its limit the
+// block that moved most used, is aimed at kCutSafety, the cut rule's own aim, whether the
+// motion follows dt (a moving block) or dt^2 (a block starting from rest, as in every static
+// step); the smaller factor of the two is taken. A memory that reaches the longest step of the
+// schedule is dropped: the schedule rules again. A step the schedule made shorter than the
+// memory (end_time, a stage's end, the shorter entry of a cyclic list) teaches nothing and
+// leaves the memory as it was. Also counts the step's length in `stats`.
+void remember_step(World& world, double scheduled_dt, double first_dt, double dt, bool was_cut,
+                   double moved, RunStats& stats) {
+  const std::vector<double>& list = world.control.time_steps;
+  const double listed = list[static_cast<std::size_t>(world.step) % list.size()];
+  const bool landing = !was_cut && dt == scheduled_dt && scheduled_dt < listed;  // on end_time
+  if (!landing) {
+    stats.smallest_time_step =
+        stats.smallest_time_step > 0.0 ? std::min(stats.smallest_time_step, dt) : dt;
+    stats.largest_time_step = std::max(stats.largest_time_step, dt);
+  }
+  if (dt < scheduled_dt) ++stats.steps_below_schedule;
+
+  StepSizeMemory& memory = world.step_size;
+  const double room = moved > 0.0 ? kCutSafety / moved : kStepGrowth;
+  const double fits = std::min(room, std::sqrt(room));
+  double next = 0.0;
+  if (was_cut) {
+    next = dt * std::min(1.0, fits);
+  } else if (memory.next > 0.0 && first_dt == memory.next) {
+    next = dt * std::min(kStepGrowth, fits);
+  } else {
+    return;  // the schedule's own step, or one it made shorter than the memory
+  }
+  const double longest = *std::max_element(list.begin(), list.end());
+  memory.next = next < longest ? next : 0.0;
+}
+
 }  // namespace
 
 StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   StageClock clock;
   ws.solver.set_reuse(world.control.reuse_factor);
-  // 1. Choose dt.
+  // 1. Choose dt: the schedule's, or the step size remembered after a cut if that is shorter
+  //    (World::step_size; remember_step updates it when the step is accepted).
   const double scheduled_dt = scheduled_time_step(world);
-  double dt = scheduled_dt;
+  const double first_dt = time_step_to_try(world);
+  double dt = first_dt;
   // 2. Contact detection on the configuration at the step's start; contacts keep the state
   //    they had last step. A redone attempt starts again from these. (The pair list the
   //    workspace carries is only a shortcut: the contacts are those of a full detection.)
@@ -625,6 +685,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   }
   clock.lap(stats.stage_times.detect);
   int penetration_cuts = 0;
+  bool was_cut = false;
 
   for (;;) {
     if (dt < kSmallestStepShare * scheduled_dt) {
@@ -651,7 +712,8 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     const std::optional<CutReason> cut =
         loop.unsettled ? loop.unsettled : check_step(world, loop.d, moved, deepest_overshoot);
     if (cut) {
-      if (*cut == CutReason::Penetration && ++penetration_cuts > kPenetrationCuts) {
+      if (*cut == CutReason::Penetration &&
+          (++penetration_cuts > kPenetrationCuts || dt <= kPenetrationFloor * scheduled_dt)) {
         std::ostringstream what;
         const auto deepest = std::max_element(
             world.contacts.begin(), world.contacts.end(), [](const Contact& a, const Contact& b) {
@@ -665,9 +727,11 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
         return {false, describe_failure(world, what.str())};
       }
       count_cut(*cut, stats);
+      was_cut = true;
       dt *= cut_share(*cut, moved, loop.material_fraction, 1.0, deepest_overshoot);
       continue;
     }
+    remember_step(world, scheduled_dt, first_dt, dt, was_cut, moved, stats);
     // 5-6. Commit the step.
     StepEnergy energy_terms;
     commit_step(world, loop.d, ctx, loop.iterations, stats, clock, energy_terms);

@@ -51,6 +51,11 @@ struct StepOutcome {
 // cyclically, and the last step is shortened to land on end_time.
 double scheduled_time_step(const World& world);
 
+// The step the next step tries first: the schedule's, or the step size remembered after a cut
+// (World::step_size) when that is shorter. A cut shortens it further; a step that worked at
+// the remembered size lets the next try up to 1.2 times longer, back to the schedule.
+double time_step_to_try(const World& world);
+
 // True when the world has done its steps or reached its end time.
 bool is_finished(const World& world);
 

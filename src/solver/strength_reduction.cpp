@@ -174,6 +174,7 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
   // Every block starts the trial at rest where the consolidation left it: a consolidation
   // that ended dynamic must not hand its motion to the verdict.
   for (Block& b : w.blocks) b.velocity.setZero();
+  w.step_size = StepSizeMemory{};  // nor its remembered step size: the trial starts on schedule
 
   const std::vector<Vec2> start_points = watched_points(w);
   // A step count far beyond what the trial time needs (step cuts shorten steps) bounds the

@@ -135,6 +135,13 @@ struct EnergyLedger {
   double scale = 0.0;
 };
 
+// The step size that remembers (issue 25, item 3; solver/step.cpp, advance_step): once a
+// step has been cut, the steps after it start from the step that worked instead of the
+// schedule's, and grow back towards it. While the schedule is followed it holds nothing.
+struct StepSizeMemory {
+  double next = 0.0;  // s: the longest step the next one tries (it caps the schedule); 0: none
+};
+
 // A material as the blocks use it (Block::material is its index).
 struct WorldMaterial {
   MaterialParameters parameters;  // the scene's, in the scene's plane mode
@@ -182,6 +189,7 @@ struct World {
 
   double time = 0.0;  // s
   int step = 0;       // completed steps
+  StepSizeMemory step_size;  // forgotten when a stage begins and when a fos trial begins
   EnergyLedger energy;
   // The scene's stages (solver/stages.hpp): the one running and what its settings replaced
   // in gravity, control and joint_laws above. Empty without stages.

@@ -170,6 +170,9 @@ struct WrittenRun {
     stats.penalty_raises = 1;
     stats.cuts_for_displacement = 1;
     stats.cuts_for_penetration = 1;
+    stats.smallest_time_step = 0.004;
+    stats.largest_time_step = 0.01;
+    stats.steps_below_schedule = 2;
     out.finish(w, stats);
   }
 };
@@ -231,6 +234,9 @@ TEST_CASE("summary.json holds the settings, run statistics and final blocks", "[
   CHECK(s["cuts"]["displacement"] == 1);
   CHECK(s["cuts"]["open_close"] == 0);
   CHECK(s["cuts"]["penetration"] == 1);
+  CHECK(s["time_steps_taken"]["smallest"] == 0.004);
+  CHECK(s["time_steps_taken"]["largest"] == 0.01);
+  CHECK(s["time_steps_taken"]["below_schedule"] == 2);
   CHECK(s["end_time"] == last.time);
   CHECK(s["diverged"] == false);
   CHECK(s["message"] == "");

@@ -7,6 +7,7 @@
 #include "materials/elastic.hpp"
 #include "support/scene_builders.hpp"
 #include "solver/run.hpp"
+#include "solver/step.hpp"
 #include "solver/world.hpp"
 
 using namespace dda;
@@ -58,6 +59,142 @@ TEST_CASE("free fall stays exact when the displacement ratio cuts steps", "[step
   const double t = world.time;
   CHECK(t < 50 * 0.05);  // cut steps are shorter
   CHECK_THAT(world.blocks[0].moments.centroid.y(), WithinAbs(-9.81 * t * t / 2.0, 1e-12));
+}
+
+TEST_CASE("the step size remembers: a block thrown up and falling back is cut a few times, "
+          "not at every step",
+          "[step][step-size]") {
+  // Issue 25, item 3. A 1 m square thrown up at 5 m/s, 2 s at a scheduled 0.01 s, with a
+  // step limit of 1 cm (ratio 0.02 of half its side): the schedule's step would move it
+  // |v| 0.01 + g 0.01^2 / 2 > 1 cm whenever |v| > 0.95 m/s, i.e. on all but the steps near
+  // the top of its flight. Before the step size remembered, each of those steps was first
+  // tried at 0.01 s and cut (1358 steps, 1970 cuts measured on this scene); now the next step
+  // starts from the one that worked and follows the motion.
+  const double v0 = 5.0, g = 9.81, dt = 0.01, limit = 0.01, end = 2.0;
+  Scene s = test::base_scene(0, dt);
+  s.control.steps.reset();
+  s.control.end_time = end;
+  s.control.max_displacement_ratio = 0.02;  // of half the 1 m side: 1 cm a step
+  s.blocks.push_back(test::block(test::rectangle(-0.5, -0.5, 1, 1)));
+  s.blocks[0].velocity = Vec3(0.0, v0, 0.0);
+  World world = make_world(s);
+  REQUIRE(world.blocks[0].step_limit == limit);
+  // The independent count: steps whose schedule would have moved the block beyond its limit,
+  // by the closed form of the free fall from the velocity the step starts with.
+  int would_cut = 0, on_schedule = 0;
+  double last_time = 0.0, last_v = v0, largest_kinetic = 0.0;
+  const RunStats stats = run(world, [&](const World& w, const RunStats&) {
+    if (w.step == 0) return true;
+    if (std::abs(last_v * dt - g * dt * dt / 2.0) > limit) ++would_cut;
+    if (std::abs(w.time - last_time - dt) <= 1e-14) ++on_schedule;  // round-off of t ~ 1 s
+    last_time = w.time;
+    last_v = w.blocks[0].velocity[1];
+    largest_kinetic = std::max(largest_kinetic, kinetic_energy(w, w.blocks[0]));
+    return true;
+  });
+  REQUIRE_FALSE(stats.diverged);
+  INFO("steps " << stats.steps << ", cuts " << stats.cut_steps << ", would cut " << would_cut
+                << ", on schedule " << on_schedule);
+  CHECK(would_cut >= 0.95 * stats.steps);  // the scene is one the schedule cannot run
+  // The memory: the first step is cut, and the first too long one after the top (the
+  // schedule ruled again there); motion the accepted step's own share predicts cuts no more.
+  CHECK(stats.cut_steps <= 0.01 * stats.steps);
+  CHECK(stats.cuts_for_displacement == stats.cut_steps);
+  // It grows back: near the top (|v| < 0.85 m/s for 0.17 s) the schedule's 0.01 s is taken.
+  CHECK(on_schedule >= 5);
+  CHECK(stats.largest_time_step == dt);
+  CHECK(stats.steps_below_schedule + on_schedule + 1 >= stats.steps);  // +1: the landing step
+  // Each accepted step still moves the block by at most its limit, so at least the path
+  // length over the limit is needed: up 5^2 / 2g and down (g t_down)^2 / 2g. The memory aims
+  // at 0.9 of the limit (the cut rule's own aim), so not many more.
+  const double t_down = end - v0 / g;
+  const double path = v0 * v0 / (2.0 * g) + g * t_down * t_down / 2.0;
+  CHECK(stats.steps >= path / limit);
+  CHECK(stats.steps <= path / (0.85 * limit) + 2.0 * (0.2 / dt));  // + the top at 0.01 s
+  // The same end state as the closed form (Shi's step is exact for constant acceleration,
+  // whatever its length): y = v0 t - g t^2 / 2 at t = end_time. ~1400 additions to
+  // coordinates and velocities up to 10 m (m/s), each off by at most half an ulp (9e-16):
+  // 1.3e-12 if every rounding went the same way; 1e-11 leaves a factor 8 (measured 4e-14).
+  CHECK_THAT(world.time, WithinRel(end, 1e-14));
+  CHECK_THAT(world.blocks[0].moments.centroid.y(),
+             WithinAbs(v0 * end - g * end * end / 2.0, 1e-11));
+  CHECK_THAT(world.blocks[0].velocity[1], WithinAbs(v0 - g * end, 1e-11));
+  // The energy account stays closed to round-off of the largest kinetic energy (290 kJ/m):
+  // each step adds ~1e-16 of it, 1e-13 over the run (measured 2e-14 now, 2e-14 before).
+  CHECK(std::abs(world.energy.remainder) <= 1e-13 * largest_kinetic);
+}
+
+TEST_CASE("the step size remembers: with a cyclic schedule it caps the longer entry only",
+          "[step][step-size]") {
+  // No gravity, a 1 m square at 0.7 m/s, limit 1 cm: the 0.01 s entries move it 7 mm and
+  // pass, the 0.02 s entries 14 mm and do not. The first 0.02 s step is cut to
+  // 0.02 x 0.9 / 1.4 (the cut rule's aim); from then on the 0.02 s entries take that step
+  // and the 0.01 s entries keep theirs: one cut in the whole run.
+  Scene s = test::base_scene(0, 0.01);
+  s.gravity = Vec2::Zero();
+  s.control.steps.reset();
+  s.control.end_time = 1.0;
+  s.control.time_steps = {0.01, 0.02};
+  s.control.max_displacement_ratio = 0.02;
+  s.blocks.push_back(test::block(test::rectangle(-0.5, -0.5, 1, 1)));
+  s.blocks[0].velocity = Vec3(0.7, 0.0, 0.0);
+  World world = make_world(s);
+  const double remembered = 0.02 * 0.9 / 1.4;
+  double last_time = 0.0;
+  double worst_short = 0.0, worst_long = 0.0;  // largest departure from 0.01 and `remembered`
+  const RunStats stats = run(world, [&](const World& w, const RunStats&) {
+    if (w.step == 0) return true;
+    const double step_dt = w.time - last_time;
+    last_time = w.time;
+    if (w.time < 1.0 - 0.02) {  // leave out the landing step
+      if (w.step % 2 == 1) {
+        worst_short = std::max(worst_short, std::abs(step_dt - 0.01));
+      } else {
+        worst_long = std::max(worst_long, std::abs(step_dt - remembered));
+      }
+    }
+    return true;
+  });
+  REQUIRE_FALSE(stats.diverged);
+  CHECK(stats.cut_steps == 1);
+  // Times are sums of ~90 steps of ~0.01 s: differences of two are good to ~1e-16 x 90.
+  CHECK(worst_short <= 1e-14);
+  // The remembered step follows the accepted step's share, 0.9 (1 + round-off): 1e-12 s.
+  CHECK(worst_long <= 1e-12);
+  CHECK_THAT(world.time, WithinRel(1.0, 1e-14));
+  CHECK_THAT(world.blocks[0].moments.centroid.x(), WithinAbs(0.7 * world.time, 1e-13));
+}
+
+TEST_CASE("the step size remembers: a step shortened to land on end_time is not remembered",
+          "[step][step-size]") {
+  // The cyclic case's block on a plain 0.02 s schedule: the first step is cut to
+  // 0.02 x 0.9 / 1.4 = 0.012857 s and remembered; seven such steps reach 0.09 s, and the
+  // eighth is shortened by the schedule to 0.01 s to land on end_time 0.1 s. It passes
+  // (7 mm) but says nothing of the remembered step, which stays as it was.
+  Scene s = test::base_scene(0, 0.02);
+  s.gravity = Vec2::Zero();
+  s.control.steps.reset();
+  s.control.end_time = 0.1;
+  s.control.max_displacement_ratio = 0.02;
+  s.blocks.push_back(test::block(test::rectangle(-0.5, -0.5, 1, 1)));
+  s.blocks[0].velocity = Vec3(0.7, 0.0, 0.0);
+  World world = make_world(s);
+  StepWorkspace ws;
+  RunStats stats;
+  double before_last = 0.0;
+  while (!is_finished(world)) {
+    before_last = world.step_size.next;
+    REQUIRE(advance_step(world, ws, stats).ok);
+  }
+  REQUIRE(stats.steps == 0);  // (advance_step leaves `steps` to the run loop)
+  CHECK(world.step == 8);
+  CHECK(stats.cut_steps == 1);
+  CHECK_THAT(before_last, WithinRel(0.02 * 0.9 / 1.4, 1e-12));
+  CHECK(world.step_size.next == before_last);
+  // The landing step counts neither as the smallest step nor as one below the schedule.
+  CHECK_THAT(stats.smallest_time_step, WithinRel(0.02 * 0.9 / 1.4, 1e-12));
+  CHECK(stats.steps_below_schedule == 7);
+  CHECK_THAT(world.time, WithinRel(0.1, 1e-14));
 }
 
 TEST_CASE("original update: a spinning block grows by exactly 1 + r^2 per step", "[step]") {
