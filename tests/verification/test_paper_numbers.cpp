@@ -375,22 +375,22 @@ TEST_CASE("paper reproduction: a block sliding down an incline and a Mohr-Coulom
       // 1e-5 (measured 2.5e-8 to 8.3e-7).
       CHECK(number(row, "acc_rel_error") <= 1e-5);
     }
-    // Omega = dt sqrt(2 p / m) >> 1 (dt >= 5 ms, Omega >= 59): the unloaded contact springs
-    // take the whole first step to load and it is lost: tau = dt less a part that shrinks
-    // as Omega grows (measured 0.949, 0.987, 0.997 dt at Omega 59, 118, 237), never more than
-    // the step. The error 2 tau / t is then first order: measured 1.007 from 0.02 to 0.01 s.
+    // Omega = dt sqrt(2 p / m) >> 1 (dt >= 5 ms, Omega >= 59). With Shi's open-close loop the
+    // unloaded contact springs took the whole first step to load and it was lost (measured
+    // tau = 0.949, 0.987, 0.997 dt at Omega 59, 118, 237). The converged contact solver (the
+    // default, docs/contact-solver.md) finds the sliding state within the first step: the
+    // block leaves at once, its lag only the start's elastic compliance m g sin a / E over
+    // the acceleration's scale (measured -7.3e-6, -1.5e-5, -3.0e-5 dt): 1e-4 dt bounds it.
     for (const double dt : {0.02, 0.01, 0.005}) {
       const Row& row = by_dt.at(dt);
       INFO("dt " << dt << ": lag / dt " << row.at("lag_over_dt"));
       CHECK(number(row, "omega_dt") > 50.0);
-      CHECK(number(row, "lag_over_dt") >= 0.9);
-      CHECK(number(row, "lag_over_dt") <= 1.0);
-      CHECK(number(row, "rel_error") <= 2.0 * dt / 1.0);
+      CHECK(std::abs(number(row, "lag_over_dt")) <= 1e-4);
+      // So the error is no longer first order in dt (2 tau / t with Shi's loop, measured
+      // order 1.007): it is the compliance's floor at every dt, 3.5e-6 m against the 0.906 m
+      // travel, 3.9e-6 relative (measured 2.9e-7 to 3.0e-7).
+      CHECK(number(row, "rel_error") <= 3.5e-6 / 0.906);
     }
-    const double order = number(by_dt.at(0.01), "order");
-    INFO("order from 0.02 to 0.01 s: " << order);
-    CHECK(order >= 0.95);
-    CHECK(order <= 1.1);
     // At the finest dt (Omega ~ 1) the step resolves the springs' oscillation, which Shi's
     // scheme damps by about Omega / 4 a cycle, i.e. over 4 / (omega^2 dt) s; while it lasts
     // friction (tan phi times the oscillating normal force) can miss or add at most
