@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "solver/contact_assembly.hpp"
 #include "solver/linear_solver.hpp"
@@ -149,13 +147,6 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
     const double share = std::max(std::abs(t.response.normal_force - normal) / kn_,
                                   shear_difference / ks_) /
                          resolution;
-    if (share > 1.0 && std::getenv("DDA_NEWTON_TRACE") && std::getenv("DDA_NEWTON_TRACE")[0] == '2') {
-      std::fprintf(stderr, "  contact %zu (v%d b%d e%d b%d) mode %d sign %d gap0 %.3g gap %.3g stretch %.3g -> mode %d N %.4g F %.4g (model N %.4g F %.4g) start %d\n",
-                   i, c.key.vertex, c.key.vertex_block, c.key.edge, c.key.edge_block,
-                   static_cast<int>(c.state.mode), c.state.slide_sign, c.gap, t.gap, t.stretch,
-                   static_cast<int>(t.response.mode), t.response.normal_force,
-                   t.response.shear_force, normal, shear, static_cast<int>(start_[i].mode));
-    }
     out.largest_mismatch = std::max(out.largest_mismatch, share);
     if (share > 1.0) ++out.mismatched;
     if (share > 1.0 && !strength_only) ++out.modes_mismatched;

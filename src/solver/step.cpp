@@ -5,8 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 #include "contact/narrow_phase.hpp"
@@ -489,10 +487,6 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
         }
       }
       if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
-    }
-    if (std::getenv("DDA_NEWTON_TRACE")) {
-      std::fprintf(stderr, "step %d it %d: mismatched %d largest %.3g secants %d\n", world.step,
-                   r.iterations, check.mismatched, check.largest_mismatch, secants_moved);
     }
     clock.lap(times.contact_update);
     if (check.mismatched == 0 && secants_moved == 0 && materials.unconverged == 0) {
