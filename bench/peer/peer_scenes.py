@@ -1,0 +1,63 @@
+#!/usr/bin/python3
+"""Writes the scenes of the side-by-side comparison with ntdda (docs/peer-comparison.md).
+
+    peer_scenes.py OUT_DIR
+
+OUT_DIR/wallN.json, N = 30, 110, 420, 1000, 4000: brick walls as a user writes them, settling
+from their built state: bricks 1 m x 0.5 m in running bond (the odd rows closed by half
+bricks), on a fixed base 1 m thick reaching 1 m beyond either end, as bench/brick_wall.hpp
+builds them; rock (2700 kg/m3, E 1 GPa, nu 0.25), joints at 30 degrees without cohesion,
+dt 0.002 s, 200 steps, everything else at its default (penalty auto = 50 E).
+The moving scenes of issue 25 (box150, hopper300, ...) come from
+verification/hard-cases/make_scenes.py --moving.
+"""
+import json
+import math
+import os
+import sys
+
+ROCK = {"model": "elastic", "density": 2700.0, "young": 1.0e9, "poisson": 0.25}
+JOINT = {"friction_angle": 30.0, "cohesion": 0.0, "tensile_strength": 0.0}
+
+
+def rect(x0, y0, x1, y1):
+    return [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]
+
+
+def wall(n, steps=200):
+    cols = math.ceil(math.sqrt(2.0 * n))
+    blocks = [{"vertices": rect(-1.0, -1.0, cols + 1.0, 0.0), "material": "rock", "fixed": True}]
+    row = placed = 0
+    while placed < n:
+        if row % 2 == 0:
+            joints = list(range(cols + 1))
+        else:
+            joints = [0.0] + [c + 0.5 for c in range(cols)] + [float(cols)]
+        y = 0.5 * row
+        for x0, x1 in zip(joints, joints[1:]):
+            if placed == n:
+                break
+            blocks.append({"vertices": rect(float(x0), y, float(x1), y + 0.5), "material": "rock"})
+            placed += 1
+        row += 1
+    return {"description": f"brick wall of {n} bricks in running bond settling from its built "
+                           "state (bench/peer/peer_scenes.py)",
+            "gravity": [0.0, -9.81],
+            "control": {"time_step": 0.002, "steps": steps},
+            "materials": {"rock": ROCK},
+            "joint_materials": {"default": JOINT},
+            "blocks": blocks}
+
+
+def main():
+    out = sys.argv[1]
+    os.makedirs(out, exist_ok=True)
+    scenes = {f"wall{n}": wall(n) for n in (30, 110, 420, 1000, 4000)}
+    for name, s in scenes.items():
+        with open(os.path.join(out, name + ".json"), "w") as f:
+            json.dump(s, f, indent=1)
+            f.write("\n")
+
+
+if __name__ == "__main__":
+    main()
