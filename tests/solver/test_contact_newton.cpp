@@ -145,3 +145,60 @@ TEST_CASE("the converged solver settles a box of tumbling squares without open-c
     CHECK(b.moments.centroid.y() > 0.0);
   }
 }
+
+namespace {
+
+// A semicircular arch of n voussoirs (centreline radius 5 m, thickness ratio t/R; each
+// voussoir a quadrilateral with its corners on the intrados and extrados) on two fixed
+// springers, as verification/hard-cases/make_scenes.py's static arches: rock of 1 GPa,
+// penalty 5e10, joints at 40 degrees, Shi's static analysis (dt 0.01 s, velocities dropped),
+// 1500 steps. Returns how far the crown voussoir's centroid has dropped.
+double static_arch_crown_drop(int n, double ratio) {
+  const double radius = 5.0, t = ratio * radius, ri = radius - t / 2, ro = radius + t / 2;
+  Scene s = test::base_scene(1500, 0.01);
+  s.control.dynamic_coefficient = 0.0;
+  s.control.max_displacement_ratio = 0.01;
+  s.control.penalty = 5e10;
+  s.joint_materials[0].friction_angle = 40.0;
+  for (const Polygon& p : {test::rectangle(-ro - 2.0, -2.0, 2.0 * ro + 4.0, 1.0),
+                           test::rectangle(-ro - 0.5, -1.0, ro - ri + 1.0, 1.0),
+                           test::rectangle(ri - 0.5, -1.0, ro - ri + 1.0, 1.0)}) {
+    BlockSpec b = test::block(p);
+    b.fixed = true;
+    s.blocks.push_back(b);
+  }
+  const auto on = [](double r, double a) {
+    const double y = std::sin(a);
+    return Vec2(r * std::cos(a), std::abs(y) < 1e-12 ? 0.0 : r * y);
+  };
+  for (int k = 0; k < n; ++k) {
+    const double a0 = M_PI * k / n, a1 = M_PI * (k + 1) / n;
+    s.blocks.push_back(test::block({on(ri, a0), on(ro, a0), on(ro, a1), on(ri, a1)}));
+  }
+  World world = make_world(s);
+  const std::size_t crown = 3 + static_cast<std::size_t>(n / 2);
+  const double y0 = world.blocks[crown].moments.centroid.y();
+  const RunStats stats = run_quietly(world);
+  INFO(stats.message);
+  REQUIRE_FALSE(stats.diverged);
+  return y0 - world.blocks[crown].moments.centroid.y();
+}
+
+}  // namespace
+
+TEST_CASE("a static masonry arch collapses below its thrust-line limit and stands above it",
+          "[contact][newton]") {
+  // The least thickness of a semicircular arch of 16 to 20 voussoirs under its own weight,
+  // with no sliding, is t/R 0.106 to 0.108 (the thrust-line limit; Milankovitch's 0.1075 for
+  // many voussoirs; ../shared/peers.md, docs/closed-forms.md). Friction 40 degrees keeps the
+  // joints from sliding, so the hinges decide: at 0.103 the arch must fold, at 0.11 it must
+  // stand. A standing arch's crown drops by its elastic shortening and the springs' give,
+  // 1.6 to 1.9 mm (measured); a folding one by centimetres within the 1500 steps (2.2 to
+  // 3.5 cm measured at 0.103, starting slowly this close to the limit; 13 cm at 0.09). 1 cm
+  // (R / 500) lies between. Shi's loop, whose contacts may hold tension within its
+  // resolution, let such arches stand down to t/R 0.10 (issue figures, a 50 m base).
+  const int n = GENERATE(16, 18, 20);
+  INFO(n << " voussoirs");
+  CHECK(static_arch_crown_drop(n, 0.103) > 0.01);
+  CHECK(static_arch_crown_drop(n, 0.11) < 0.01);
+}
