@@ -286,12 +286,7 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     }
     // A sliding contact's normal spring moves to where the vertex now slides to (see
     // ContactState::predicted_slip); the next iteration measures there.
-    // (Bounded by the step's displacement limit: an iteration far from the solution must not
-    // carry the measure point off the edge; a larger slip is cut by the displacement check.)
-    const double reach = 2.0 * std::max(world.blocks[static_cast<std::size_t>(c.key.vertex_block)].step_limit,
-                                        world.blocks[static_cast<std::size_t>(c.key.edge_block)].step_limit);
-    c.state.predicted_slip =
-        c.state.mode == ContactMode::Slide ? std::clamp(c.iterate.slip, -reach, reach) : 0.0;
+    c.state.predicted_slip = predicted_slip(world, c);
     // (A held contact keeps its mode, but its forces follow the latest solve.)
     if (c.state.mode == ContactMode::Open) {
       c.state.rest_shift = 0.0;
@@ -300,6 +295,15 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     }
   }
   return result;
+}
+
+double predicted_slip(const World& world, const Contact& c) {
+  if (c.state.mode != ContactMode::Slide) return 0.0;
+  // Bounded by the step's displacement limit: an iteration far from the solution must not
+  // carry the measure point off the edge; a larger slip is cut by the displacement check.
+  const double reach = 2.0 * std::max(world.blocks[static_cast<std::size_t>(c.key.vertex_block)].step_limit,
+                                      world.blocks[static_cast<std::size_t>(c.key.edge_block)].step_limit);
+  return std::clamp(c.iterate.slip, -reach, reach);
 }
 
 int augment_multipliers(std::vector<Contact>& contacts, double target_share) {

@@ -49,6 +49,11 @@ struct ContactUpdate {
 ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& contacts,
                                    const Eigen::VectorXd& d, const StepContext& ctx);
 
+// Where a contact measures its gap and friction next (ContactState::predicted_slip): a
+// sliding contact's slip in the latest solve (iterate.slip), within twice the larger step
+// limit of its blocks; zero for any other mode.
+double predicted_slip(const World& world, const Contact& c);
+
 // The stiffness a contact adds to K in its present mode, as rank-one terms c c^T with
 // c = sqrt(k) m (normal spring when closed, shear spring when locked); appended to `out`.
 void contact_spring_terms(const World& world, const Contact& c, const StepContext& ctx,

@@ -316,13 +316,8 @@ void ContactNewton::finish_bookkeeping(const World& world, std::vector<Contact>&
     c.iterate.start_t_lock = start_[i].anchor;
     c.iterate.mode_changes = 1;  // the energy account reads the start mode
     c.state.deferred.reset();
-    // The next step measures a sliding contact where this step's slip takes it (bounded by
-    // the step's displacement limit, as the open-close loop does).
-    const double reach =
-        2.0 * std::max(world.blocks[static_cast<std::size_t>(c.key.vertex_block)].step_limit,
-                       world.blocks[static_cast<std::size_t>(c.key.edge_block)].step_limit);
-    c.state.predicted_slip =
-        c.state.mode == ContactMode::Slide ? std::clamp(c.iterate.slip, -reach, reach) : 0.0;
+    // The next step measures a sliding contact where this step's slip takes it.
+    c.state.predicted_slip = predicted_slip(world, c);
     if (c.state.mode == ContactMode::Open) {
       c.state.rest_shift = 0.0;
       c.state.normal_force = 0.0;

@@ -267,6 +267,35 @@ void follow_factor(const World& world, StepWorkspace& ws) {
   }
 }
 
+// One assemble-and-solve pass of either contact solver: the block terms plus the contacts'
+// springs in their present modes. A non-associated plastic block makes the system
+// unsymmetric: KLU then, fresh each time; CHOLMOD's kept factor is left as it was
+// (FactorSprings still describes it), and serves again when the system is symmetric.
+// Otherwise the kept factor (from this step or an earlier one) is brought to the present
+// springs by rank-one updates when that is cheap, and CG on it makes up the rest (T,
+// geometry, material tangents); CholmodSolver factorises when either would cost more.
+// (The solvers see only a rigid block's u0, v0, r0; solve_system, step_solve.hpp.)
+// nullopt when the system could not be solved or its answer is not finite.
+std::optional<Eigen::VectorXd> assemble_and_solve(World& world, StepWorkspace& ws,
+                                                  const StepContext& ctx, bool unsymmetric,
+                                                  RunStats& stats, StageClock& clock) {
+  ws.system = ws.block_terms;
+  add_contact_terms(world, world.contacts, ctx, ws.system);
+  clock.lap(stats.stage_times.assemble);
+  std::optional<Eigen::VectorXd> solved;
+  if (unsymmetric) {
+    solved = solve_system(ws, SolvePath::Klu);
+  } else {
+    ws.factor_springs.differences(world, world.contacts, ctx, ws.springs_added, ws.springs_removed);
+    solved = solve_system(ws, SolvePath::Modify);
+    if (solved) follow_factor(world, ws);
+  }
+  clock.lap(stats.stage_times.solve);
+  ++stats.iterations;
+  if (solved && !solved->allFinite()) solved.reset();
+  return solved;
+}
+
 // 3. The open-close loop: assemble, solve, let every contact choose its next mode, until no
 //    contact changes (and, for finite_rotation, until each block's secant angle is its own
 //    r0; for plastic blocks, until their Newton iteration has converged). Every
@@ -296,29 +325,11 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   MaterialFollowUp materials;
   int augmented = 0;  // contacts whose multiplier grew after this solve
   do {
-    ws.system = ws.block_terms;
-    add_contact_terms(world, world.contacts, ctx, ws.system);
-    clock.lap(times.assemble);
-    // A non-associated plastic block makes the system unsymmetric: KLU then, fresh each time.
-    // CHOLMOD's kept factor is left as it was (FactorSprings still describes it), and serves
-    // again when the system is symmetric.
     const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
-    // The kept factor (from this step or an earlier one) is brought to the present springs
-    // by rank-one updates when that is cheap, and CG on it makes up the rest (T, geometry,
-    // material tangents); CholmodSolver factorises when either would cost more (issue 10).
-    // (The solvers see only a rigid block's u0, v0, r0; solve_system, step_solve.hpp.)
-    std::optional<Eigen::VectorXd> solved;
-    if (unsymmetric) {
-      solved = solve_system(ws, SolvePath::Klu);
-    } else {
-      ws.factor_springs.differences(world, world.contacts, ctx, ws.springs_added, ws.springs_removed);
-      solved = solve_system(ws, SolvePath::Modify);
-      if (solved) follow_factor(world, ws);
-    }
-    clock.lap(times.solve);
-    ++stats.iterations;
+    const std::optional<Eigen::VectorXd> solved =
+        assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
     ++r.iterations;
-    if (!solved || !solved->allFinite()) {
+    if (!solved) {
       r.solved = false;
       return r;
     }
@@ -389,22 +400,11 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
   int fewest_mismatched = std::numeric_limits<int>::max();
   std::array<std::pair<int, double>, 3> recent{};  // the last solves' (mismatched, largest)
   for (;;) {
-    ws.system = ws.block_terms;
-    add_contact_terms(world, world.contacts, ctx, ws.system);
-    clock.lap(times.assemble);
     const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
-    std::optional<Eigen::VectorXd> solved;
-    if (unsymmetric) {
-      solved = solve_system(ws, SolvePath::Klu);
-    } else {
-      ws.factor_springs.differences(world, world.contacts, ctx, ws.springs_added, ws.springs_removed);
-      solved = solve_system(ws, SolvePath::Modify);
-      if (solved) follow_factor(world, ws);
-    }
-    clock.lap(times.solve);
-    ++stats.iterations;
+    const std::optional<Eigen::VectorXd> solved =
+        assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
     ++r.iterations;
-    if (!solved || !solved->allFinite()) {
+    if (!solved) {
       r.solved = false;
       return r;
     }
