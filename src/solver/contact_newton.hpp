@@ -59,6 +59,12 @@ class ContactNewton {
   // changes (finite_rotation's secant columns).
   void measure(const World& world, const std::vector<Contact>& contacts, const StepContext& ctx);
 
+  // Once the contacts agree at d: each sliding contact's measure point moves to where its
+  // slip at d takes it (kMeasurePointShare), and the measures follow. Returns how many moved
+  // (0: the step's gaps are measured where its vertices end).
+  int follow_measure_points(const World& world, std::vector<Contact>& contacts,
+                            const StepContext& ctx, const Eigen::VectorXd& d);
+
   // Every contact takes its response at increments d: mode, slip direction, anchor and
   // forces, the fields the assembly reads (add_contact_terms).
   void respond(const World& world, std::vector<Contact>& contacts, const StepContext& ctx,

@@ -450,6 +450,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
     // moved with every line-searched iterate, a turning block's T kept a contact at its
     // kink flipping open and closed).
     int secants_moved = 0;
+    int points_moved = 0;  // sliding contacts whose measure point moved
     MaterialFollowUp materials;
     if (check.mismatched > 0) {
       // Whole steps while they make progress (fewer contacts out of their mode than after
@@ -469,6 +470,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       // are kept while T and the materials follow it: read again on the new T, a contact
       // at its kink (a corner just landed) would flip open and cost two more solves.
       newton.respond(world, world.contacts, ctx, d);
+      points_moved = newton.follow_measure_points(world, world.contacts, ctx, d);
       if (uses_secant_rotation(treatment)) {
         secants_moved = follow_secant_angles(world, d, angles);
         if (secants_moved > 0) {
@@ -489,7 +491,8 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
     }
     clock.lap(times.contact_update);
-    if (check.mismatched == 0 && secants_moved == 0 && materials.unconverged == 0) {
+    if (check.mismatched == 0 && secants_moved == 0 && points_moved == 0 &&
+        materials.unconverged == 0) {
       // Converged: bonds the answer breaks break now, and contacts deeper than allowed grow
       // their multipliers (penetration control, as in the open-close loop); either way the
       // step is solved again.
