@@ -267,6 +267,28 @@ void follow_factor(const World& world, StepWorkspace& ws) {
   }
 }
 
+// What both contact solvers set up before their first solve: the rotation columns of the
+// treatments that change T (their angles), the plastic blocks' elastic predictor, the
+// rotating inertia's spins.
+struct LoopStart {
+  std::vector<double> angles;  // per block: the angle inside T's rotation column
+  bool plastic = false;
+  bool spinning = false;
+};
+
+LoopStart start_loop(const World& world, StepContext& ctx) {
+  LoopStart start;
+  if (changes_t(world.control.rotation_update)) {
+    start.angles = last_rotation_increments(world);
+    set_rotation_columns(world, start.angles, ctx);
+  }
+  start.plastic = has_plastic_blocks(world);
+  if (start.plastic) ctx.material_terms = start_linearization(world);
+  start.spinning = has_rotating_inertia(world, ctx);
+  if (start.spinning) start_spins(world, ctx);
+  return start;
+}
+
 // One assemble-and-solve pass of either contact solver: the block terms plus the contacts'
 // springs in their present modes. A non-associated plastic block makes the system
 // unsymmetric: KLU then, fresh each time; CHOLMOD's kept factor is left as it was
@@ -306,15 +328,9 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
                             StageClock& clock) {
   StageTimes& times = stats.stage_times;
   const RotationUpdate treatment = world.control.rotation_update;
-  std::vector<double> angles;  // per block: the angle inside T's rotation column
-  if (changes_t(treatment)) {
-    angles = last_rotation_increments(world);
-    set_rotation_columns(world, angles, ctx);
-  }
-  const bool plastic = has_plastic_blocks(world);
-  if (plastic) ctx.material_terms = start_linearization(world);
-  const bool spinning = has_rotating_inertia(world, ctx);
-  if (spinning) start_spins(world, ctx);
+  LoopStart start = start_loop(world, ctx);
+  std::vector<double>& angles = start.angles;
+  const bool plastic = start.plastic, spinning = start.spinning;
   // (Each augmented-Lagrangian round used adds one more: the rounds are allowed beyond it.)
   const int iteration_limit = world.control.max_open_close + (plastic ? kExtraNewtonIterations : 0);
 
@@ -378,15 +394,9 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
                                 RunStats& stats, StageClock& clock) {
   StageTimes& times = stats.stage_times;
   const RotationUpdate treatment = world.control.rotation_update;
-  std::vector<double> angles;
-  if (changes_t(treatment)) {
-    angles = last_rotation_increments(world);
-    set_rotation_columns(world, angles, ctx);
-  }
-  const bool plastic = has_plastic_blocks(world);
-  if (plastic) ctx.material_terms = start_linearization(world);
-  const bool spinning = has_rotating_inertia(world, ctx);
-  if (spinning) start_spins(world, ctx);
+  LoopStart start = start_loop(world, ctx);
+  std::vector<double>& angles = start.angles;
+  const bool plastic = start.plastic, spinning = start.spinning;
   const int iteration_limit =
       std::max(world.control.max_open_close, kNewtonIterations) + (plastic ? kExtraNewtonIterations : 0);
 
