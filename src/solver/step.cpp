@@ -401,7 +401,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       std::max(world.control.max_open_close, kNewtonIterations) + (plastic ? kExtraNewtonIterations : 0);
 
   ContactNewton newton(world, world.contacts, ctx);
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(6 * static_cast<Eigen::Index>(world.blocks.size()));
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(world.dof_count);  // six slots per free block
   newton.respond(world, world.contacts, ctx, d);
   assemble(world, ctx, ws.block_terms);
   clock.lap(times.contact_update);
