@@ -73,7 +73,6 @@ ContactSprings ContactNewton::springs_of(const Contact& c) const {
 }
 
 ContactNewton::Trial ContactNewton::trial_at(const World& world, const Contact& c, std::size_t i,
-                                             const StepContext&,
                                              const Eigen::VectorXd& d) const {
   Trial t;
   const Measures& m = measures_[i];
@@ -120,16 +119,15 @@ int ContactNewton::follow_measure_points(const World& world, std::vector<Contact
 }
 
 void ContactNewton::respond(const World& world, std::vector<Contact>& contacts,
-                            const StepContext& ctx, const Eigen::VectorXd& d) const {
-  set_responses(world, contacts, ctx, d, true);
+                            const Eigen::VectorXd& d) const {
+  set_responses(world, contacts, d, true);
 }
 
 void ContactNewton::set_responses(const World& world, std::vector<Contact>& contacts,
-                                  const StepContext& ctx, const Eigen::VectorXd& d,
-                                  bool reversal_locks) const {
+                                  const Eigen::VectorXd& d, bool reversal_locks) const {
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     Contact& c = contacts[i];
-    const Trial t = trial_at(world, c, i, ctx, d);
+    const Trial t = trial_at(world, c, i, d);
     // A contact solved as sliding one way whose iterate slides the other way has passed the
     // whole elastic branch of its friction law in one solve (a resting block's side contact:
     // a friction of a hundred newtons moves a 170 kg square microns at dt 0.002 s, while its
@@ -149,13 +147,12 @@ void ContactNewton::set_responses(const World& world, std::vector<Contact>& cont
 }
 
 NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>& contacts,
-                                 const StepContext& ctx, const Eigen::VectorXd& d_hat,
-                                 bool friction_follows) {
+                                 const Eigen::VectorXd& d_hat, bool friction_follows) {
   NewtonCheck out;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& c = contacts[i];
     const double resolution = kNewtonResolutionShare * c.allowed_penetration;
-    const Trial t = trial_at(world, c, i, ctx, d_hat);
+    const Trial t = trial_at(world, c, i, d_hat);
     // The forces the solve gave this contact at d_hat, in the mode it was solved with.
     double normal = 0.0, shear = 0.0;
     if (c.state.mode != ContactMode::Open) normal = kn_ * (c.state.rest_shift - t.gap);
@@ -182,15 +179,13 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
                          resolution;
     out.largest_mismatch = std::max(out.largest_mismatch, share);
     if (share > 1.0) ++out.mismatched;
-    if (share > 1.0 && !strength_only) ++out.modes_mismatched;
-    if (share > 1.0 && strength_only) ++out.strengths_mismatched;
     if (std::abs(t.response.normal_force - normal) / kn_ > resolution) ++out.normal_mismatched;
   }
   return out;
 }
 
 bool ContactNewton::friction_coupling(const World& world, const std::vector<Contact>& contacts,
-                                      const StepContext&, const Eigen::VectorXd& d_hat,
+                                      const Eigen::VectorXd& d_hat,
                                       std::vector<RankOneTerm>& u, std::vector<RankOneTerm>& v,
                                       Eigen::VectorXd& residual) const {
   u.clear();
@@ -225,7 +220,7 @@ bool ContactNewton::friction_coupling(const World& world, const std::vector<Cont
 
 
 double ContactNewton::line_search(const World& world, const std::vector<Contact>& contacts,
-                                  const StepContext&, const BlockSystem& block_terms,
+                                  const BlockSystem& block_terms,
                                   const Eigen::VectorXd& d, const Eigen::VectorXd& d_hat) const {
   const Eigen::VectorXd step = d_hat - d;
   // Blocks: the work rate of their terms, linear in the step length a: lin + a quad.
@@ -294,12 +289,12 @@ double ContactNewton::line_search(const World& world, const std::vector<Contact>
 }
 
 int ContactNewton::break_bonds(const World& world, std::vector<Contact>& contacts,
-                               const StepContext& ctx, const Eigen::VectorXd& d) const {
+                               const Eigen::VectorXd& d) const {
   int broken = 0;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     Contact& c = contacts[i];
     if (!c.state.bonded) continue;
-    if (trial_at(world, c, i, ctx, d).response.breaks) {
+    if (trial_at(world, c, i, d).response.breaks) {
       c.state.bonded = false;
       ++broken;
     }
@@ -328,8 +323,8 @@ void ContactNewton::finish_as_solved(const World& world, std::vector<Contact>& c
 }
 
 void ContactNewton::finish(const World& world, std::vector<Contact>& contacts,
-                           const StepContext& ctx, const Eigen::VectorXd& d) const {
-  set_responses(world, contacts, ctx, d, false);
+                           const Eigen::VectorXd& d) const {
+  set_responses(world, contacts, d, false);
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     Contact& c = contacts[i];
     // Still sliding the way it was solved: the friction that acted (kStrengthShare).

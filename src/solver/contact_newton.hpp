@@ -39,10 +39,6 @@ namespace dda {
 // with by more than the resolution.
 struct NewtonCheck {
   int mismatched = 0;
-  // Of those, the ones whose mode or slip direction differs (the rest slide on as solved,
-  // their friction strength following the normal force).
-  int modes_mismatched = 0;
-  int strengths_mismatched = 0;
   int normal_mismatched = 0;  // whose normal force differs (open against closed, or its gap)
   double largest_mismatch = 0.0;  // the largest force difference, as a share of k x resolution
 };
@@ -67,7 +63,7 @@ class ContactNewton {
 
   // Every contact takes its response at increments d: mode, slip direction, anchor and
   // forces, the fields the assembly reads (add_contact_terms).
-  void respond(const World& world, std::vector<Contact>& contacts, const StepContext& ctx,
+  void respond(const World& world, std::vector<Contact>& contacts,
                const Eigen::VectorXd& d) const;
 
   // The sliding contacts' friction as a function of their normal force, for a Newton step
@@ -77,32 +73,31 @@ class ContactNewton {
   // the normal force of the iterate leaves the residual sum_j (F_j(d_hat) - F_j held) m_t.
   // Terms in six slots per block; false when no sliding contact has friction.
   bool friction_coupling(const World& world, const std::vector<Contact>& contacts,
-                         const StepContext& ctx, const Eigen::VectorXd& d_hat,
-                         std::vector<RankOneTerm>& u, std::vector<RankOneTerm>& v,
+                         const Eigen::VectorXd& d_hat, std::vector<RankOneTerm>& u, std::vector<RankOneTerm>& v,
                          Eigen::VectorXd& residual) const;
 
   // The responses at the solved increments d_hat against the modes the contacts hold now
   // (those they were solved with). `friction_follows`: the solve took the sliding contacts'
   // friction at d_hat's normal force (friction_coupling), not at the iterate's.
   NewtonCheck check(const World& world, const std::vector<Contact>& contacts,
-                    const StepContext& ctx, const Eigen::VectorXd& d_hat, bool friction_follows);
+                    const Eigen::VectorXd& d_hat, bool friction_follows);
 
   // How far to move from d towards d_hat: the root in (0, 1] of the work rate of all forces
   // along the line (blocks: `block_terms`, the assembled terms without contacts; contacts:
   // their responses), 1 when the forces still oppose the motion at d_hat.
   double line_search(const World& world, const std::vector<Contact>& contacts,
-                     const StepContext& ctx, const BlockSystem& block_terms,
+                     const BlockSystem& block_terms,
                      const Eigen::VectorXd& d, const Eigen::VectorXd& d_hat) const;
 
   // The converged step's bonds that break at d (the response says so): unbonded for good.
   // Returns how many.
-  int break_bonds(const World& world, std::vector<Contact>& contacts, const StepContext& ctx,
+  int break_bonds(const World& world, std::vector<Contact>& contacts,
                   const Eigen::VectorXd& d) const;
 
   // The accepted step's contact states at d, as the rest of the step reads them (energy
   // account, penetration checks, carry-over): the responses, the step's slip, the mode the
   // contact started with, the measure point of the next step.
-  void finish(const World& world, std::vector<Contact>& contacts, const StepContext& ctx,
+  void finish(const World& world, std::vector<Contact>& contacts,
               const Eigen::VectorXd& d) const;
   // The same for an attempt accepted before it converged, as Shi's code accepts one: the
   // states as they were solved (the modes the answer d_hat was solved with and their forces
@@ -120,11 +115,11 @@ class ContactNewton {
     double stretch = 0.0;
     ContactResponse response;
   };
-  Trial trial_at(const World& world, const Contact& c, std::size_t i, const StepContext& ctx,
+  Trial trial_at(const World& world, const Contact& c, std::size_t i,
                  const Eigen::VectorXd& d) const;
   ContactSprings springs_of(const Contact& c) const;
   void finish_bookkeeping(const World& world, std::vector<Contact>& contacts) const;
-  void set_responses(const World& world, std::vector<Contact>& contacts, const StepContext& ctx,
+  void set_responses(const World& world, std::vector<Contact>& contacts,
                      const Eigen::VectorXd& d, bool reversal_locks) const;
 
   std::vector<Start> start_;

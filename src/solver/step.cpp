@@ -402,7 +402,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
 
   ContactNewton newton(world, world.contacts, ctx);
   Eigen::VectorXd d = Eigen::VectorXd::Zero(world.dof_count);  // six slots per free block
-  newton.respond(world, world.contacts, ctx, d);
+  newton.respond(world, world.contacts, d);
   assemble(world, ctx, ws.block_terms);
   clock.lap(times.contact_update);
   LoopResult r;
@@ -426,7 +426,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
     // tumbling square's landing.
     bool friction_follows = false;
     if (!unsymmetric &&
-        newton.friction_coupling(world, world.contacts, ctx, d_hat, ws.coupling_u,
+        newton.friction_coupling(world, world.contacts, d_hat, ws.coupling_u,
                                  ws.coupling_v, ws.coupling_residual)) {
       reduce_terms(ws.system, ws.coupling_u);
       reduce_terms(ws.system, ws.coupling_v);
@@ -437,7 +437,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
         friction_follows = true;
       }
     }
-    const NewtonCheck check = newton.check(world, world.contacts, ctx, d_hat, friction_follows);
+    const NewtonCheck check = newton.check(world, world.contacts, d_hat, friction_follows);
     // A cycle (the same mismatch as one of the last three solves) or the limit, with every
     // contact's normal force as solved: only shear modes are left undecided, whose energy
     // the account books as it acted. The attempt is accepted as solved, as Shi's code
@@ -470,16 +470,16 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       const bool progress = check.mismatched < fewest_mismatched;
       fewest_mismatched = std::min(fewest_mismatched, check.mismatched);
       const double step_length =
-          progress ? 1.0 : newton.line_search(world, world.contacts, ctx, ws.block_terms, d, d_hat);
+          progress ? 1.0 : newton.line_search(world, world.contacts, ws.block_terms, d, d_hat);
       if (step_length < 1.0) ++stats.line_searches_shortened;
       d += step_length * (d_hat - d);
-      newton.respond(world, world.contacts, ctx, d);
+      newton.respond(world, world.contacts, d);
     } else {
       d = d_hat;
       // The modes at the answer, on the T it was solved with (they agree with the solve),
       // are kept while T and the materials follow it: read again on the new T, a contact
       // at its kink (a corner just landed) would flip open and cost two more solves.
-      newton.respond(world, world.contacts, ctx, d);
+      newton.respond(world, world.contacts, d);
       points_moved = newton.follow_measure_points(world, world.contacts, ctx, d);
       if (uses_secant_rotation(treatment)) {
         secants_moved = follow_secant_angles(world, d, angles);
@@ -506,21 +506,21 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       // Converged: bonds the answer breaks break now, and contacts deeper than allowed grow
       // their multipliers (penetration control, as in the open-close loop); either way the
       // step is solved again.
-      int more = newton.break_bonds(world, world.contacts, ctx, d);
+      int more = newton.break_bonds(world, world.contacts, d);
       if (more == 0 && r.augmentations < world.control.max_augmentations &&
           deepest_penetration_share(world.contacts) > 1.0) {
         more = augment_multipliers(world.contacts, kAugmentTargetShare);
         if (more > 0) ++r.augmentations;
       }
       if (more == 0) {
-        newton.finish(world, world.contacts, ctx, d);
+        newton.finish(world, world.contacts, d);
         break;
       }
       ++extra_rounds;
-      newton.respond(world, world.contacts, ctx, d);
+      newton.respond(world, world.contacts, d);
     }
     if (r.iterations >= iteration_limit + extra_rounds) {
-      newton.finish(world, world.contacts, ctx, d);
+      newton.finish(world, world.contacts, d);
       r.unsettled = CutReason::OpenClose;
       stats.newton_unconverged_mismatch =
           std::max(stats.newton_unconverged_mismatch, check.largest_mismatch);
