@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 #include "kinematics/block_matrices.hpp"
@@ -306,11 +307,21 @@ double predicted_slip(const World& world, const Contact& c) {
   return std::clamp(c.iterate.slip, -reach, reach);
 }
 
-int augment_multipliers(std::vector<Contact>& contacts, double target_share) {
+int augment_multipliers(const World& world, std::vector<Contact>& contacts, double target_share,
+                        const StepContext& ctx) {
+  const auto mass = [&world](int i) {
+    const Block& b = world.blocks[static_cast<std::size_t>(i)];
+    return b.fixed ? std::numeric_limits<double>::infinity()
+                   : material_of(world, b).density * b.initial_area;
+  };
   int grown = 0;
   for (Contact& c : contacts) {
     const double excess = -c.iterate.new_gap - target_share * c.allowed_penetration;
     if (c.state.mode == ContactMode::Open || excess <= 0.0) continue;
+    if (ctx.dynamic_coefficient > 0.0) {
+      const double lighter = std::min(mass(c.key.vertex_block), mass(c.key.edge_block));
+      if (ctx.penalty * ctx.dt * ctx.dt < 2.0 * lighter) continue;
+    }
     c.state.rest_shift += excess;
     ++grown;
   }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cassert>
 #include <iterator>
+#include <limits>
 #include <mutex>
 
 namespace dda {
@@ -82,6 +83,9 @@ SparseCholesky::SparseCholesky() {
 }
 
 SparseCholesky::~SparseCholesky() {
+  if (solve_x_ != nullptr) cholmod_free_dense(&solve_x_, &common_);
+  if (solve_y_ != nullptr) cholmod_free_dense(&solve_y_, &common_);
+  if (solve_e_ != nullptr) cholmod_free_dense(&solve_e_, &common_);
   if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
   if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &common_);
   cholmod_finish(&common_);
@@ -336,14 +340,16 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) {
   rhs.x = const_cast<double*>(b.data());
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* x = nullptr;
   {
     const std::lock_guard<std::mutex> lock(blas_mutex());
-    x = cholmod_solve(CHOLMOD_A, factor_, &rhs, &common_);
+    if (cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &solve_x_, nullptr, &solve_y_,
+                       &solve_e_, &common_) == 0 ||
+        solve_x_ == nullptr) {
+      // (Out of memory: an answer the callers reject, as they reject any non-finite one.)
+      return Eigen::VectorXd::Constant(b.size(), std::numeric_limits<double>::quiet_NaN());
+    }
   }
-  Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(x->x), b.size());
-  cholmod_free_dense(&x, &common_);
-  return out;
+  return Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(solve_x_->x), b.size());
 }
 
 }  // namespace dda

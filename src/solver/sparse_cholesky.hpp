@@ -95,6 +95,12 @@ class SparseCholesky {
 
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;
+  // solve()'s answer and workspaces (cholmod_solve2), kept between calls: a Krylov
+  // iteration on the kept factor is one solve, and allocating three vectors for each was a
+  // noticeable share of it on small systems.
+  cholmod_dense* solve_x_ = nullptr;
+  cholmod_dense* solve_y_ = nullptr;
+  cholmod_dense* solve_e_ = nullptr;
   cholmod_factor* symbolic_ = nullptr;  // the analysis of the present pattern, kept
   std::vector<int> outer_;  // the analysed pattern (lower triangle, compressed columns)
   std::vector<int> inner_;

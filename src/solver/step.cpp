@@ -31,8 +31,8 @@ constexpr double kCutMax = 0.9;
 // Shi's cut when the open-close loop does not settle, or a contact penetrates too far.
 constexpr double kContactCut = 0.3;
 // Penetration cuts per step before the run stops: six cuts by 0.3 bring dt to 7e-4 of the
-// scheduled step, where an impact's penetration (which shrinks with dt) is long cured; what
-// is left is a static penetration, which no cut cures.
+// scheduled step, where what a step adds to an impact's penetration (which shrinks with dt)
+// is long below kDeepeningShare; what is left is a static penetration, which no cut cures.
 constexpr int kPenetrationCuts = 6;
 // The same limit on a step that starts short: a penetration cut needed when dt is already this
 // share of the schedule (six contact cuts' worth) ends the run too. The remembered step size
@@ -40,6 +40,22 @@ constexpr int kPenetrationCuts = 6;
 // accepted a little shorter, until the step vanished with no word of the penetration.
 constexpr double kPenetrationFloor =
     kContactCut * kContactCut * kContactCut * kContactCut * kContactCut * kContactCut;
+// An impact whose kinetic energy the contact spring cannot take within the allowed
+// penetration (normal speed v, mass m: v sqrt(m / penalty) deeper than the allowance) is
+// not cured by cutting dt: once the inertia term 2m/dt^2 outgrows the penalty, a shorter
+// step changes the block's speed less, the vertex goes on at v, and the augmented
+// multipliers, which move it only against that term, lose their grip. (In the 300-polygon
+// hopper a polygon 0.12 m across hit a neighbour at 5.6 m/s: about 1.8e-4 m of spring
+// travel against an allowance of 5e-5 m; cut after cut down to 1e-6 s, the run stopped.)
+// So a contact already deeper than its allowance cuts the step only if the step deepened it
+// by more than this share of the allowance: over the impact's steps the spring slows the
+// block, then the multipliers push it back out.
+constexpr double kDeepeningShare = 0.5;
+// ... and in any case beyond this many allowances: at 4e-4 of the smaller block's size, ten
+// of them are 0.4 % of it, far inside the block still, and the impact above stays within
+// them up to about 10 m/s. A static load the penalty cannot carry creeps towards it a step
+// at a time and then ends the run with the message that says so.
+constexpr double kPenetrationHardShare = 10.0;
 // An open contact whose vertex, placed by the configuration update itself, ends the step
 // deeper than this share of the allowed penetration inside the other block cuts the step
 // (CutReason::Overshoot). The open-close loop judges a gap by its linearisation, which
@@ -87,6 +103,14 @@ constexpr int kExtraNewtonIterations = 20;
 // max_open_close): a semismooth Newton iteration with a line search does not cycle, but a
 // box of 150 tumbling blocks may need more than Shi's 8 solves to find every contact's mode.
 constexpr int kNewtonIterations = 30;
+// The converged solver's cycle detection and its way out. A cycle of four solves (two
+// contacts of a tumbling square in a box of ten, each closing the other's gap in turn, the
+// line search taking every step whole) ran to the limit and cut the step, where the three
+// solves the detection then looked back over could not see it. Once a mismatch repeats one
+// of the last kCycleWindow solves', the iterate moves kCycleDamping of the way the line search
+// says (relaxation: the next modes are read between the cycle's states).
+constexpr std::size_t kCycleWindow = 8;
+constexpr double kCycleDamping = 0.5;
 
 StepContext make_step_context(const World& world, double dt) {
   StepContext ctx;
@@ -370,7 +394,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
                          secants_moved == 0 && materials.unconverged == 0;
     if (settled && r.augmentations < world.control.max_augmentations &&
         deepest_penetration_share(world.contacts) > 1.0) {
-      augmented = augment_multipliers(world.contacts, kAugmentTargetShare);
+      augmented = augment_multipliers(world, world.contacts, kAugmentTargetShare, ctx);
       if (augmented > 0) ++r.augmentations;
     }
     clock.lap(times.contact_update);
@@ -408,7 +432,8 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
   LoopResult r;
   int extra_rounds = 0;  // bond breaks and augmentations: each earns one more iteration
   int fewest_mismatched = std::numeric_limits<int>::max();
-  std::array<std::pair<int, double>, 3> recent{};  // the last solves' (mismatched, largest)
+  // The last solves' (mismatched, largest): a cycle of up to kCycleWindow solves is seen.
+  std::array<std::pair<int, double>, kCycleWindow> recent{};
   for (;;) {
     const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
     const std::optional<Eigen::VectorXd> solved =
@@ -438,7 +463,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       }
     }
     const NewtonCheck check = newton.check(world, world.contacts, d_hat, friction_follows);
-    // A cycle (the same mismatch as one of the last three solves) or the limit, with every
+    // A cycle (the same mismatch as one of the last kCycleWindow solves) or the limit, with every
     // contact's normal force as solved: only shear modes are left undecided, whose energy
     // the account books as it acted. The attempt is accepted as solved, as Shi's code
     // accepts one after its loop's cap, and counted with its residual.
@@ -469,8 +494,11 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       // once they do not (a contact cycling between modes).
       const bool progress = check.mismatched < fewest_mismatched;
       fewest_mismatched = std::min(fewest_mismatched, check.mismatched);
-      const double step_length =
+      double step_length =
           progress ? 1.0 : newton.line_search(world, world.contacts, ws.block_terms, d, d_hat);
+      // In a cycle the same modes come back whatever the line search says: half its step
+      // puts the next iterate between the cycle's states (kCycleDamping).
+      if (cycling) step_length *= kCycleDamping;
       if (step_length < 1.0) ++stats.line_searches_shortened;
       d += step_length * (d_hat - d);
       newton.respond(world, world.contacts, d);
@@ -509,7 +537,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       int more = newton.break_bonds(world, world.contacts, d);
       if (more == 0 && r.augmentations < world.control.max_augmentations &&
           deepest_penetration_share(world.contacts) > 1.0) {
-        more = augment_multipliers(world.contacts, kAugmentTargetShare);
+        more = augment_multipliers(world, world.contacts, kAugmentTargetShare, ctx);
         if (more > 0) ++r.augmentations;
       }
       if (more == 0) {
@@ -554,14 +582,32 @@ double overshoot(const World& world, const Contact& c, const Eigen::VectorXd& d)
   return contains_point(after, v) ? -p.gap : 0.0;
 }
 
+// A contact deeper than its allowance cuts the step. In a dynamic step, only where a shorter
+// step would leave it shallower: when this step deepened it by more than kDeepeningShare of
+// its allowance, or when it ends deeper than kPenetrationHardShare of it. (A static step
+// starts from rest: no impact, and the multipliers or a shorter step cure the penetration.)
+bool penetrates_too_far(const std::vector<Contact>& contacts, bool dynamic) {
+  for (const Contact& c : contacts) {
+    if (!(c.allowed_penetration > 0.0)) continue;
+    const double depth = -c.iterate.new_gap;
+    if (depth <= c.allowed_penetration) continue;
+    if (!dynamic || depth > kPenetrationHardShare * c.allowed_penetration) return true;
+    if (c.gap - c.iterate.new_gap > kDeepeningShare * c.allowed_penetration) return true;
+  }
+  return false;
+}
+
 // 4. The checks on a settled step: too large a motion, a contact deeper than allowed, or an
 //    open contact whose vertex ends inside the other block.
 //    `moved`: the largest share of its step limit a block moved.
-std::optional<CutReason> check_step(const World& world, const Eigen::VectorXd& d, double& moved,
+std::optional<CutReason> check_step(const World& world, const StepContext& ctx,
+                                    const Eigen::VectorXd& d, double& moved,
                                     double& deepest_overshoot) {
   moved = max_displacement_share(world, d);
   if (moved > 1.0) return CutReason::Displacement;
-  if (deepest_penetration_share(world.contacts) > 1.0) return CutReason::Penetration;
+  if (penetrates_too_far(world.contacts, ctx.dynamic_coefficient > 0.0)) {
+    return CutReason::Penetration;
+  }
   deepest_overshoot = 0.0;  // as a share of kOvershootShare x the contact's allowance
   for (const Contact& c : world.contacts) {
     if (c.state.mode != ContactMode::Open || !(c.allowed_penetration > 0.0)) continue;
@@ -717,7 +763,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     //    allowed_penetration) ends the run with a message that says so.
     double moved = 0.0, deepest_overshoot = 0.0;
     const std::optional<CutReason> cut =
-        loop.unsettled ? loop.unsettled : check_step(world, loop.d, moved, deepest_overshoot);
+        loop.unsettled ? loop.unsettled : check_step(world, ctx, loop.d, moved, deepest_overshoot);
     if (cut) {
       if (*cut == CutReason::Penetration &&
           (++penetration_cuts > kPenetrationCuts || dt <= kPenetrationFloor * scheduled_dt)) {
