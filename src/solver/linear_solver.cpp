@@ -146,8 +146,8 @@ std::optional<Eigen::VectorXd> CholmodSolver::conjugate_gradients(const BlockSys
 }
 
 std::optional<Eigen::VectorXd> CholmodSolver::solve_low_rank_coupled(
-    const BlockSystem& system, const Eigen::VectorXd& b, const std::vector<RankOneTerm>& u,
-    const std::vector<RankOneTerm>& v) {
+    const BlockSystem& system, const Eigen::VectorXd& b_in, const std::vector<RankOneTerm>& u,
+    const std::vector<RankOneTerm>& v, double tolerance, const Eigen::VectorXd* start) {
   const auto dot = [](const RankOneTerm& t, const Eigen::VectorXd& x) {
     double sum = 0.0;
     for (const auto& [i, value] : t.entries) sum += value * x[i];
@@ -163,9 +163,12 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve_low_rank_coupled(
     }
     return y;
   };
+  // With a start, the change from it: A (start + x) = b_in.
+  const Eigen::VectorXd b = start ? Eigen::VectorXd(b_in - apply(*start)) : b_in;
   const double b_norm = b.norm();
+  const double goal = tolerance * b_in.norm();
   Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
-  if (b_norm == 0.0) return x;
+  if (b_norm <= goal) return start ? Eigen::VectorXd(*start) : x;
   const int cap = std::min<int>(kGmresMaxIterations, static_cast<int>(b.size()));
   // Arnoldi with modified Gram-Schmidt on A F^-1; Givens rotations keep the least-squares
   // problem triangular.
@@ -200,19 +203,20 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve_low_rank_coupled(
     g[k + 1] = -sn[k] * g[k];
     g[k] = cs[k] * g[k];
     // (w_norm 0: the Krylov space holds the answer, and g[k + 1] is 0.)
-    if (std::abs(g[k + 1]) <= kGmresTolerance * b_norm || w_norm == 0.0 || k + 1 == cap) {
+    if (std::abs(g[k + 1]) <= goal || w_norm == 0.0 || k + 1 == cap) {
       ++k;
       break;
     }
     basis.push_back(w / w_norm);
   }
-  if (std::abs(g[k]) > kGmresTolerance * b_norm) return std::nullopt;
+  if (std::abs(g[k]) > goal) return std::nullopt;
   const Eigen::VectorXd y =
       h.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
   Eigen::VectorXd z = Eigen::VectorXd::Zero(b.size());
   for (int i = 0; i < k; ++i) z += y[i] * basis[static_cast<std::size_t>(i)];
   x = factor_.solve(z);
   if (!x.allFinite()) return std::nullopt;
+  if (start) x += *start;
   return x;
 }
 
