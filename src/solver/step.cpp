@@ -48,13 +48,13 @@ constexpr double kPenetrationFloor =
 // hopper a polygon 0.12 m across hit a neighbour at 5.6 m/s: about 1.8e-4 m of spring
 // travel against an allowance of 5e-5 m; cut after cut down to 1e-6 s, the run stopped.)
 // So a contact already deeper than its allowance cuts the step only if the step deepened it
-// by more than this share of the allowance: over the impact's steps the spring slows the
-// block, then the multipliers push it back out.
+// by more than this share of the allowance: over the impact's steps the spring stops the
+// block and throws it back (no multiplier acts in steps that short: augment_multipliers).
 constexpr double kDeepeningShare = 0.5;
 // ... and in any case beyond this many allowances: at 4e-4 of the smaller block's size, ten
 // of them are 0.4 % of it, far inside the block still, and the impact above stays within
-// them up to about 10 m/s. A static load the penalty cannot carry creeps towards it a step
-// at a time and then ends the run with the message that says so.
+// them up to about 10 m/s. A load the penalty cannot carry in a dynamic run creeps towards it
+// a step at a time and then ends the run with the message that says so.
 constexpr double kPenetrationHardShare = 10.0;
 // An open contact whose vertex, placed by the configuration update itself, ends the step
 // deeper than this share of the allowed penetration inside the other block cuts the step
