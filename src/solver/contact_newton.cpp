@@ -118,6 +118,22 @@ int ContactNewton::follow_measure_points(const World& world, std::vector<Contact
   return moved;
 }
 
+void ContactNewton::start(const World& world, std::vector<Contact>& contacts) const {
+  std::vector<int> slid(contacts.size(), 0);  // the slide sign carried in, 0 if not sliding
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    if (contacts[i].state.mode == ContactMode::Slide) slid[i] = contacts[i].state.slide_sign;
+  }
+  set_responses(world, contacts, Eigen::VectorXd::Zero(world.dof_count), false);
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    Contact& c = contacts[i];
+    if (slid[i] == 0 || c.state.mode == ContactMode::Open) continue;
+    c.state.mode = ContactMode::Slide;
+    c.state.slide_sign = slid[i];
+    c.iterate.shear_force =
+        -c.state.slide_sign * sliding_resistance(c, world.joint_laws[c.joint], c.state.normal_force);
+  }
+}
+
 void ContactNewton::respond(const World& world, std::vector<Contact>& contacts,
                             const Eigen::VectorXd& d) const {
   set_responses(world, contacts, d, true);
