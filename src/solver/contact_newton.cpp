@@ -118,12 +118,7 @@ int ContactNewton::follow_measure_points(const World& world, std::vector<Contact
   return moved;
 }
 
-void ContactNewton::start(const World& world, std::vector<Contact>& contacts,
-                          const StepContext& ctx) const {
-  if (ctx.dynamic_coefficient > 0.0) {
-    respond(world, contacts, Eigen::VectorXd::Zero(world.dof_count));
-    return;
-  }
+void ContactNewton::start(const World& world, std::vector<Contact>& contacts) const {
   std::vector<int> slid(contacts.size(), 0);  // the slide sign carried in, 0 if not sliding
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     if (contacts[i].state.mode == ContactMode::Slide) slid[i] = contacts[i].state.slide_sign;

@@ -61,18 +61,15 @@ class ContactNewton {
   int follow_measure_points(const World& world, std::vector<Contact>& contacts,
                             const StepContext& ctx, const Eigen::VectorXd& d);
 
-  // The modes an attempt starts from: every contact's response at d = 0, except that in a
-  // static step (ctx.dynamic_coefficient 0) a contact that slid at the last step's end and is
-  // still closed keeps sliding the same way. Its spring holds the friction it carried, so
-  // its response at d = 0 sits exactly on the kink between lock and slide and reads as
-  // locked: a failing slope with 2300 sliding contacts spent a whole solve on them at every
-  // step (a fos-like run reached 0.30 s of its trial in 60 s instead of 0.13 s). In dynamic
-  // steps the same start took a block sliding down an incline from 2.9 solves a step to 1.0,
-  // but the rockfall of verification/hard-cases then sent a boulder off the end of its
-  // runout (boulders ran 13 to 15 m instead of 3.5 to 12.8 m over five time steps; both
-  // converged, the problem has more than one answer there): not used there until that is
-  // understood.
-  void start(const World& world, std::vector<Contact>& contacts, const StepContext& ctx) const;
+  // The modes an attempt starts from: every contact's response at d = 0, except that a
+  // contact that slid at the last step's end and is still closed keeps sliding the same way.
+  // Its spring holds the friction it carried, so its response at d = 0 sits exactly on the
+  // kink between lock and slide and reads as locked: a block sliding down an incline took
+  // 2.9 solves a step to find its slide again (1.0 now; static steps 2.0), and a failing
+  // slope with 2300 sliding contacts spent a whole solve on them at every step. (Both starts
+  // converge; where the frictional problem has more than one answer they may pick different
+  // ones: docs/contact-solver.md, the rockfall.)
+  void start(const World& world, std::vector<Contact>& contacts) const;
 
   // Every contact takes its response at increments d: mode, slip direction, anchor and
   // forces, the fields the assembly reads (add_contact_terms).

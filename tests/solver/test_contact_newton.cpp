@@ -52,6 +52,12 @@ TEST_CASE("both contact solvers slide a block down an incline at the closed-form
   CHECK_THAT(d2, WithinRel(acc * 2.0, 2.0 * dt / 2.0));
   CHECK_THAT(2.0 * std::pow(std::sqrt(d2) - std::sqrt(d1), 2), WithinRel(acc, 1e-5));
   CHECK(stats.cuts_for_open_close == 0);
+  // Once sliding, a step is one solve: the Newton solver starts each step's sliding contacts
+  // sliding (ContactNewton::start; read at d = 0 they sat on the kink and locked, 2.9 solves
+  // a step). The first steps, where the springs load and the block starts, take up to 3
+  // (measured 1065 solves for 1064 steps); 10 to spare.
+  INFO("solves " << stats.iterations << " for " << stats.steps << " steps");
+  if (solver == ContactSolver::Newton) CHECK(stats.iterations <= stats.steps + 10);
 }
 
 TEST_CASE("a static step starts a sliding contact sliding: one solve a step", "[contact][newton]") {
