@@ -316,8 +316,14 @@ def scene(name, c, dt, mode):
         end = c["end_time"] if mode == "dynamic" else static_end_time(c, dt)
         control["end_time"] = round(end, 6)
         control["output_every"] = max(1, round(end / dt / 100))
-    return {"description": f"hard case {name} ({mode}, dt {dt} s): "
-                           "verification/hard-cases/README.md",
+    return scene_of(f"hard case {name} ({mode}, dt {dt} s): verification/hard-cases/README.md",
+                    c, control)
+
+
+def scene_of(description, c, control):
+    """The scene file of case `c` (its blocks, gravity and joint friction) with `control`:
+    one rock, one default joint material without cohesion or tensile strength."""
+    return {"description": description,
             "gravity": c.get("gravity", [0.0, -G]),
             "control": control,
             "materials": {"rock": ROCK},
@@ -695,14 +701,8 @@ def moving_scene(name, c, dt, mode):
     else:
         control["end_time"] = c["end_time"]
         control["output_every"] = max(1, round(c["end_time"] / dt / 50))
-    return {"description": f"moving scene {name} ({mode}, dt {dt} s): "
-                           "verification/hard-cases/README.md, \"Moving scenes\"",
-            "gravity": c.get("gravity", [0.0, -G]),
-            "control": control,
-            "materials": {"rock": ROCK},
-            "joint_materials": {"default": {"friction_angle": c.get("joint", FRICTION),
-                                            "cohesion": 0.0, "tensile_strength": 0.0}},
-            "blocks": c["blocks"]}
+    return scene_of(f"moving scene {name} ({mode}, dt {dt} s): "
+                    "verification/hard-cases/README.md, \"Moving scenes\"", c, control)
 
 
 def write_runs(out_dir, runs):
