@@ -312,7 +312,7 @@ int augment_multipliers(const World& world, std::vector<Contact>& contacts, doub
   const auto mass = [&world](int i) {
     const Block& b = world.blocks[static_cast<std::size_t>(i)];
     return b.fixed ? std::numeric_limits<double>::infinity()
-                   : material_of(world, b).density * b.initial_area;
+                   : density_now(world, b) * b.moments.area;  // the mass matrix's
   };
   int grown = 0;
   for (Contact& c : contacts) {

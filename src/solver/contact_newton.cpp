@@ -118,12 +118,13 @@ int ContactNewton::follow_measure_points(const World& world, std::vector<Contact
   return moved;
 }
 
-void ContactNewton::start(const World& world, std::vector<Contact>& contacts) const {
+void ContactNewton::start(const World& world, std::vector<Contact>& contacts,
+                          const Eigen::VectorXd& d) const {
   std::vector<int> slid(contacts.size(), 0);  // the slide sign carried in, 0 if not sliding
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     if (contacts[i].state.mode == ContactMode::Slide) slid[i] = contacts[i].state.slide_sign;
   }
-  set_responses(world, contacts, Eigen::VectorXd::Zero(world.dof_count), false);
+  set_responses(world, contacts, d, false);
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     Contact& c = contacts[i];
     if (slid[i] == 0 || c.state.mode == ContactMode::Open) continue;

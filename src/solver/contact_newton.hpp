@@ -61,15 +61,16 @@ class ContactNewton {
   int follow_measure_points(const World& world, std::vector<Contact>& contacts,
                             const StepContext& ctx, const Eigen::VectorXd& d);
 
-  // The modes an attempt starts from: every contact's response at d = 0, except that a
-  // contact that slid at the last step's end and is still closed keeps sliding the same way.
+  // The modes an attempt starts from: every contact's response at the iterate d it starts
+  // from (zero), except that a contact that slid at the last step's end and is still closed
+  // keeps sliding the same way.
   // Its spring holds the friction it carried, so its response at d = 0 sits exactly on the
   // kink between lock and slide and reads as locked: a block sliding down an incline took
-  // 2.9 solves a step to find its slide again (1.0 now; static steps 2.0), and a failing
+  // 2.9 solves a step to find its slide again (static steps 2.0; both 1.0 now), and a failing
   // slope with 2300 sliding contacts spent a whole solve on them at every step. (Both starts
   // converge; where the frictional problem has more than one answer they may pick different
   // ones: docs/contact-solver.md, the rockfall.)
-  void start(const World& world, std::vector<Contact>& contacts) const;
+  void start(const World& world, std::vector<Contact>& contacts, const Eigen::VectorXd& d) const;
 
   // Every contact takes its response at increments d: mode, slip direction, anchor and
   // forces, the fields the assembly reads (add_contact_terms).

@@ -426,7 +426,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
 
   ContactNewton newton(world, world.contacts, ctx);
   Eigen::VectorXd d = Eigen::VectorXd::Zero(world.dof_count);  // six slots per free block
-  newton.start(world, world.contacts);
+  newton.start(world, world.contacts, d);
   assemble(world, ctx, ws.block_terms);
   clock.lap(times.contact_update);
   LoopResult r;
