@@ -7,7 +7,7 @@ namespace dda {
 
 Mat2 quarter_turn() { return (Mat2() << 0.0, -1.0, 1.0, 0.0).finished(); }
 
-LinearT shi_t() {
+const LinearT& shi_t() {
   static const LinearT t = t_with_rotation_column(quarter_turn());
   return t;
 }

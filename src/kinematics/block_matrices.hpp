@@ -24,7 +24,7 @@ struct LinearT {
 // Shi's first-order T (paper Eq. 3):
 //   u = u0 - Y r0 + X ex + Y gxy / 2
 //   v = v0 + X r0 + Y ey + X gxy / 2
-LinearT shi_t();
+const LinearT& shi_t();
 
 // T with the rotation column a * (X, Y) in place of Shi's (-Y, X) (which is a = J, the
 // quarter turn). Used with the columns below; every other column is Shi's.

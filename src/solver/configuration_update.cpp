@@ -235,9 +235,14 @@ double max_displacement_share(const World& world, const Eigen::VectorXd& d) {
   for (const Block& b : world.blocks) {
     if (b.fixed) continue;
     const Vec6 db = increments_of(b, d);
-    double moved = 0.0;
-    for (const Vec2& v : b.vertices) moved = std::max(moved, (t.at(v - b.moments.centroid) * db).norm());
-    largest = std::max(largest, moved / b.step_limit);
+    // The motion relative to the translation (rotation and strain, which the step
+    // linearises) against the step limit; the whole motion against the reach the contact
+    // search covered.
+    const Vec2 translation = db.head<2>();
+    for (const Vec2& v : b.vertices) {
+      const Vec2 moved = t.at(v - b.moments.centroid) * db;
+      largest = std::max({largest, (moved - translation).norm() / b.step_limit, moved.norm() / b.reach});
+    }
   }
   return largest;
 }

@@ -10,8 +10,9 @@
 
 namespace dda {
 
-// The largest share of its own step limit (Block::step_limit) that any vertex of a free
-// block would move with increments d: above 1, the step moves too far.
+// The largest share of its limits that any vertex of a free block would move with
+// increments d: its motion relative to the block's translation against Block::step_limit,
+// its whole motion against Block::reach. Above 1, the step moves too far.
 double max_displacement_share(const World& world, const Eigen::VectorXd& d);
 
 // Moves vertices, pins and point loads and accumulates translation, rotation and strain by

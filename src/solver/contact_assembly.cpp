@@ -300,10 +300,11 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
 
 double predicted_slip(const World& world, const Contact& c) {
   if (c.state.mode != ContactMode::Slide) return 0.0;
-  // Bounded by the step's displacement limit: an iteration far from the solution must not
-  // carry the measure point off the edge; a larger slip is cut by the displacement check.
-  const double reach = 2.0 * std::max(world.blocks[static_cast<std::size_t>(c.key.vertex_block)].step_limit,
-                                      world.blocks[static_cast<std::size_t>(c.key.edge_block)].step_limit);
+  // Bounded by what the two blocks may move this step: an iteration far from the solution
+  // must not carry the measure point off the edge; a larger slip is cut by the displacement
+  // check.
+  const double reach = world.blocks[static_cast<std::size_t>(c.key.vertex_block)].reach +
+                       world.blocks[static_cast<std::size_t>(c.key.edge_block)].reach;
   return std::clamp(c.iterate.slip, -reach, reach);
 }
 

@@ -56,7 +56,7 @@ void carry_and_replace(const World& world, std::vector<Contact>& contacts,
 // grown boxes overlap when the blocks' boxes are within the pair's search distance.
 Box search_box(const World& world, const Block& b) {
   return grown_box(b.vertices,
-                   0.5 * (kSearchDistanceFactor * b.step_limit + world.allowed_penetration));
+                   0.5 * (kSearchDistanceFactor * b.reach + world.allowed_penetration));
 }
 
 bool both_fixed(const World& world, int i, int j) {

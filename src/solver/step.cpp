@@ -132,12 +132,12 @@ bool changes_t(RotationUpdate u) {
 
 void set_rotation_columns(const World& world, const std::vector<double>& angles,
                           StepContext& ctx) {
-  ctx.rotation_columns.assign(world.blocks.size(), quarter_turn());
+  ctx.block_ts.assign(world.blocks.size(), shi_t());
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     if (world.blocks[i].fixed) continue;
-    ctx.rotation_columns[i] = world.control.rotation_update == RotationUpdate::SinVariable
-                                  ? sine_rotation_column(angles[i])
-                                  : secant_rotation_column(angles[i]);
+    ctx.block_ts[i] = t_with_rotation_column(world.control.rotation_update == RotationUpdate::SinVariable
+                                                 ? sine_rotation_column(angles[i])
+                                                 : secant_rotation_column(angles[i]));
   }
 }
 
@@ -730,9 +730,11 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   const double scheduled_dt = scheduled_time_step(world);
   const double first_dt = time_step_to_try(world);
   double dt = first_dt;
-  // 2. Contact detection on the configuration at the step's start; contacts keep the state
+  // 2. Contact detection on the configuration at the step's start, as far as each block may
+  //    reach in the first attempt (a cut attempt reaches less); contacts keep the state
   //    they had last step. A redone attempt starts again from these. (The pair list the
   //    workspace carries is only a shortcut: the contacts are those of a full detection.)
+  set_reaches(world, first_dt);
   detect_contacts(world, world.contacts, ws.detection);
   stats.candidate_pairs_max =
       std::max(stats.candidate_pairs_max, static_cast<long>(ws.detection.close.size()));

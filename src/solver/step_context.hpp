@@ -24,9 +24,10 @@ struct StepContext {
   // Base shaking: the ground's mean acceleration over this attempt's step (m/s^2; zero
   // without base_motion). The step is solved in the ground's frame (solver/base_motion.hpp).
   Vec2 base_acceleration = Vec2::Zero();
-  // The rotation column of T for each block (by block index), for the treatments that
-  // change T inside the step (sin_variable, finite_rotation). Empty: Shi's column for all.
-  std::vector<Mat2> rotation_columns;
+  // Each block's T (by block index) for the treatments that change its rotation column
+  // inside the step (sin_variable, finite_rotation), made once per change of the columns,
+  // not at every contact that reads it. Empty: Shi's T for all.
+  std::vector<LinearT> block_ts;
   // The plastic blocks' material linearisation (by block index) for the Newton iteration
   // nested in the open-close loop. Empty when the scene has no plastic block.
   std::vector<MaterialLinearization> material_terms;
@@ -38,9 +39,9 @@ struct StepContext {
 
 // The T that this step uses for block `block` (everything that builds the step equations
 // calls this: inertia, loads, pins, contacts).
-inline LinearT step_t(const StepContext& ctx, int block) {
-  if (ctx.rotation_columns.empty()) return shi_t();
-  return t_with_rotation_column(ctx.rotation_columns[static_cast<std::size_t>(block)]);
+inline const LinearT& step_t(const StepContext& ctx, int block) {
+  if (ctx.block_ts.empty()) return shi_t();
+  return ctx.block_ts[static_cast<std::size_t>(block)];
 }
 
 }  // namespace dda

@@ -82,6 +82,7 @@ World make_world(const Scene& scene) {
     const Box own = bounding_box(b.initial_vertices);
     b.size = 0.5 * (own.max - own.min).maxCoeff();
     b.step_limit = scene.control.max_displacement_ratio * b.size;
+    b.reach = b.step_limit;
     largest_limit = std::max(largest_limit, b.step_limit);
   }
   world.search_distance = kSearchDistanceFactor * largest_limit + world.allowed_penetration;
@@ -104,6 +105,16 @@ World make_world(const Scene& scene) {
   start_energy_account(world);
   start_stages(world, scene);  // the first stage's settings, if the scene has stages
   return world;
+}
+
+void set_reaches(World& world, double dt) {
+  const double k = world.control.dynamic_coefficient;  // a static step starts from rest
+  const double fall = 0.5 * world.gravity.norm() * dt * dt;
+  for (Block& b : world.blocks) {
+    if (b.fixed) continue;
+    const double translation = k * b.velocity.head<2>().norm() * dt + fall;
+    b.reach = b.step_limit + kReachSafety * translation;
+  }
 }
 
 int joint_of_pair(const World& world, int i, int j) {

@@ -24,6 +24,10 @@ namespace dda {
 // pair of vertices cannot close a gap wider than the sum of their step limits, so contacts
 // the step could make are all found (Shi's 2.5 x g2 x w0 for two blocks of the scene's size).
 inline constexpr double kSearchDistanceFactor = 2.5;
+// A block's reach (Block::reach) counts its predicted translation this many times: the
+// prediction takes velocity and gravity only (contacts and loads change it); a step that
+// moves a vertex beyond the reach is cut all the same (max_displacement_share).
+inline constexpr double kReachSafety = 1.5;
 
 struct Block {
   // ---- cold: fixed at construction ----
@@ -47,6 +51,13 @@ struct Block {
   // pair by pair: contact_detection.hpp) stays as local as the blocks (docs/contacts.md,
   // "Search distance").
   double step_limit = 0.0;
+  // The most any of its vertices may move this step (m), its translation included: the step
+  // limit plus kReachSafety x the translation its velocity and gravity predict for the
+  // step's first attempt (set_reaches, at each step's start; step_limit until the first
+  // step). The motion relative to the block's translation is held to step_limit (the
+  // rotation and strain a step linearises); the translation, which every treatment takes
+  // exactly, only to the reach, which the contact search covers (docs/contacts.md).
+  double reach = 0.0;
   double size = 0.0;  // half the larger side of its bounding box at the start (m), as w0
   // A rigid block (issue 10, item 7) keeps the six slots of d like any block, but the
   // linear system solves only its u0, v0, r0 (BlockSystem's dof map): its strain increments
@@ -221,15 +232,18 @@ inline Vec4 initial_stress4(const World& world, const Block& b) {
 
 
 // Contact search distance between blocks i and j (m): 1.25 x the sum of what their vertices
-// may move in a step, so every contact the step could close is found with a quarter to
+// may move in a step (their reaches), so every contact the step could close is found with a quarter to
 // spare, plus the allowed penetration, so a contact that starts the step that deep (the most
 // a step may leave) is found from inside too.
 inline double pair_search_distance(const World& world, int i, int j) {
   return world.allowed_penetration +
          0.5 * kSearchDistanceFactor *
-             (world.blocks[static_cast<std::size_t>(i)].step_limit +
-              world.blocks[static_cast<std::size_t>(j)].step_limit);
+             (world.blocks[static_cast<std::size_t>(i)].reach +
+              world.blocks[static_cast<std::size_t>(j)].reach);
 }
+
+// Sets every free block's reach (Block::reach) for a step whose first attempt is dt long.
+void set_reaches(World& world, double dt);
 
 // The joint law index for contacts between blocks i and j.
 int joint_of_pair(const World& world, int i, int j);

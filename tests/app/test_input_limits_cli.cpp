@@ -251,27 +251,36 @@ TEST_CASE("the contact search and the step limit are the blocks', not the scene'
           Approx(2.5 * 0.05 * 0.5 + allowed).epsilon(1e-12));
     CHECK(summary["contacts"]["candidate_pairs_max"] == 0);
   }
-  SECTION("a 1 m block beside a 100 m floor moves at most 1/100 of its half side a step") {
-    // At dt = 0.01 s the block falls up to 0.098 m a step (v = 9.81 m/s at 1 s): Shi's limit
-    // 0.01 x w0 = 0.5 m never cut it. Its own limit, 0.01 x 0.5 m = 5 mm, cuts every step
-    // beyond 0.51 m/s to 0.9 of the limit.
+  SECTION("a 1 m block beside a 100 m floor turns at most 1/100 of its half side a step") {
+    // At dt = 0.01 s the block falls up to 0.029 m a step (v = 2.9 m/s at 0.3 s) while
+    // spinning at 2 rad/s, which turns its corners 14 mm a step. Shi's limit 0.01 x w0 =
+    // 0.5 m would cut neither. Its own limit, 0.01 x 0.5 m = 5 mm, holds the turn (the
+    // motion relative to its translation) and cuts every step to it; the fall, which the
+    // step takes exactly, is held only to the block's reach, which the search covers.
     json s = base_scene();
     s["control"]["output_every"] = 1;
     s["control"].erase("steps");
     s["control"]["end_time"] = 0.3;
     s["blocks"][0]["vertices"] = {{-50, -1}, {50, -1}, {50, 0}, {-50, 0}};
     s["blocks"][1]["vertices"] = {{0, 10}, {1, 10}, {1, 11}, {0, 11}};
+    s["blocks"][1]["velocity"] = {0, 0, 2};
+    s["blocks"][1]["rigid"] = true;  // a spinning elastic block would stretch a little
     const Run r = run_scene(dir, "limit", s);
     INFO(r.result.output);
     REQUIRE(r.result.exit_code == 0);
     const auto rows = history_rows(r.out, 1);
-    double largest = 0.0;
-    for (std::size_t k = 1; k < rows.size(); ++k) largest = std::max(largest, rows[k - 1][4] - rows[k][4]);
-    // A translation moves every vertex by the centroid's motion; the limit holds to
-    // round-off (1e-12 of it), and the fastest steps come within a quarter of it (the cut
-    // aims at 0.9 of the limit; gravity's share per step then varies a little).
-    CHECK(largest <= 0.005 * (1 + 1e-12));
-    CHECK(largest > 0.75 * 0.005);
+    double largest_turn = 0.0, largest_fall = 0.0;
+    const double corner = std::sqrt(0.5);  // m, a corner from the centroid
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+      largest_turn = std::max(largest_turn, std::abs(rows[k][5] - rows[k - 1][5]) * corner);
+      largest_fall = std::max(largest_fall, rows[k - 1][4] - rows[k][4]);
+    }
+    // The turn's limit holds to round-off (1e-12 of it), and the steps come within a tenth
+    // of it (the cut aims at 0.9 of the limit and the spin is steady).
+    CHECK(largest_turn <= 0.005 * (1 + 1e-12));
+    CHECK(largest_turn > 0.85 * 0.005);
+    // The fall is not held to the limit: at 2.9 m/s a step of 2.2 ms falls 6 mm.
+    CHECK(largest_fall > 0.005);
     const json summary = json::parse(dda::test::read_file(r.out / "summary.json"));
     CHECK(summary["cuts"]["displacement"].get<int>() > 0);
   }

@@ -87,6 +87,7 @@ Comparison compare_paths(World& world, int steps, double end_time = INFINITY) {
   RunStats stats;
   DetectionCache cache;
   for (int step = 0; step < steps && world.time < end_time; ++step) {
+    set_reaches(world, time_step_to_try(world));  // as the step will (advance_step)
     std::vector<Contact> full = world.contacts;
     std::vector<Contact> carried = world.contacts;
     detect_contacts_full(world, full);
