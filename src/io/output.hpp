@@ -13,8 +13,8 @@
 
 namespace dda {
 
-// A number as the CSV files write it: 17 significant digits ("%.17g"), which reads back as
-// the same double.
+// A number as the CSV and VTK files write it: the shortest text that reads back as the same
+// double.
 std::string format_full_precision(double x);
 
 class OutputWriter {

@@ -64,7 +64,7 @@ std::vector<Row> read_csv(const fs::path& path, std::string& header) {
       } else if (names[i] == "branch") {
         row.branch = field;
       } else {
-        row.value[names[i]] = std::stod(field);  // %.17g reads back as the same double
+        row.value[names[i]] = std::stod(field);  // the shortest round-trip text reads back as the same double
       }
     }
     if (i != names.size()) throw std::runtime_error("too few fields: " + line);
@@ -175,9 +175,10 @@ TEST_CASE("material-point: the CSV header and step 0 are exact", "[materials][cl
   REQUIRE(r.exit_code == 0);
   const std::string text = read_file(csv);
   CHECK(text.substr(0, text.find('\n')) == kHeader);
-  // Step 0 is the initial stress at zero strain, written in full precision.
+  // Step 0 is the initial stress at zero strain, each number as the shortest text that
+  // reads back as it (-1e5 is shorter in scientific notation).
   const std::string second = text.substr(text.find('\n') + 1);
-  CHECK(second.substr(0, second.find('\n')) == "0,0,0,0,-100000,0,0,30000,0,elastic");
+  CHECK(second.substr(0, second.find('\n')) == "0,0,0,0,-1e+05,0,0,30000,0,elastic");
   std::string header;
   const std::vector<Row> rows = read_csv(csv, header);
   REQUIRE(rows.size() == 4);
