@@ -1,6 +1,8 @@
 #include "solver/step.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -546,6 +548,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
     }
     clock.lap(times.contact_update);
+    if (std::getenv("DDA_TRACE")) std::fprintf(stderr, "TRACE %d %.6g %.6g %d %d %d %d %d %d %zu %d %ld %ld\n", world.step, world.time, ctx.dt, r.iterations, check.mismatched, check.normal_mismatched, secants_moved, points_moved, (int)friction_follows, world.contacts.size(), (int)ws.solver.last_path(), (long)ws.springs_added.size(), (long)ws.springs_removed.size());
     if (check.mismatched == 0 && secants_moved == 0 && points_moved == 0 &&
         materials.unconverged == 0) {
       // Converged: bonds the answer breaks break now, and contacts deeper than allowed grow
