@@ -1,8 +1,6 @@
 #include "solver/step.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -19,6 +17,7 @@
 #include "solver/contact_newton.hpp"
 #include "solver/energy.hpp"
 #include "solver/material_coupling.hpp"
+#include "solver/secant_angles.hpp"
 #include "solver/step_solve.hpp"
 
 namespace dda {
@@ -80,13 +79,6 @@ constexpr double kTimeRoundOff = 1e-9;
 // that fails again loses one attempt in about 7 accepted steps rather than one in each.
 constexpr double kStepGrowth = 1.2;
 
-// finite_rotation iterates each block's secant angle r* to the step's own r0. A secant
-// column at r* instead of r0 moves a point at distance l from the reference point by about
-// l |r0| |r0 - r*| / 2 off the exact rotation (the column's derivative at small angles is
-// -I/2): the iteration stops when that is below this share of w0 for every block, e.g.
-// 1e-12 x 5 m per step on the paper's swinging octagon (5e-9 m over its 5000 steps). A
-// block that barely turns is done after one solve.
-constexpr double kSecantDisplacementShare = 1e-12;
 // Penetration control at a fixed penalty (Lin, Amadei et al. 1996): when the settled loop
 // leaves a contact deeper than the allowed penetration, every closed contact deeper than
 // kAugmentTargetShare of it adds the excess to its multiplier (ContactState::rest_shift) and
@@ -151,23 +143,6 @@ std::vector<double> last_rotation_increments(const World& world) {
   return angles;
 }
 
-// finite_rotation: moves every block's secant angle to the r0 just solved; returns how many
-// were further from it than the tolerance (0: the step's T is consistent with its r0).
-int follow_secant_angles(const World& world, const Eigen::VectorXd& d,
-                         std::vector<double>& angles) {
-  const double tolerance = kSecantDisplacementShare * world.w0;
-  int moved = 0;
-  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
-    const Block& b = world.blocks[i];
-    if (b.fixed) continue;
-    const double r0 = d[b.first_dof + kR0];
-    double reach = 0.0;  // farthest vertex from the reference point
-    for (const Vec2& v : b.vertices) reach = std::max(reach, (v - b.moments.centroid).norm());
-    if (0.5 * reach * std::abs(r0) * std::abs(r0 - angles[i]) > tolerance) ++moved;
-    angles[i] = r0;
-  }
-  return moved;
-}
 
 // The rotating-frame inertia's spins (kinematics/rotating_inertia.hpp), with the
 // pseudo-rigid body's inertia (which needs a block frame), in dynamic runs (a static step
@@ -378,7 +353,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     r.d = *solved;
     contacts = update_contact_modes(world, world.contacts, r.d, ctx);
     if (uses_secant_rotation(treatment)) {
-      secants_moved = follow_secant_angles(world, r.d, angles);
+      secants_moved = follow_secant_angles(world, world.contacts, r.d, angles);
       if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
       if (spinning) follow_spins(world, r.d, ctx);
     }
@@ -529,7 +504,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       newton.respond(world, world.contacts, d);
       points_moved = newton.follow_measure_points(world, world.contacts, ctx, d);
       if (uses_secant_rotation(treatment)) {
-        secants_moved = follow_secant_angles(world, d, angles);
+        secants_moved = follow_secant_angles(world, world.contacts, d, angles);
         if (secants_moved > 0) {
           set_rotation_columns(world, angles, ctx);
           newton.measure(world, world.contacts, ctx);
@@ -548,7 +523,6 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
     }
     clock.lap(times.contact_update);
-    if (std::getenv("DDA_TRACE")) std::fprintf(stderr, "TRACE %d %.6g %.6g %d %d %d %d %d %d %zu %d %ld %ld\n", world.step, world.time, ctx.dt, r.iterations, check.mismatched, check.normal_mismatched, secants_moved, points_moved, (int)friction_follows, world.contacts.size(), (int)ws.solver.last_path(), (long)ws.springs_added.size(), (long)ws.springs_removed.size());
     if (check.mismatched == 0 && secants_moved == 0 && points_moved == 0 &&
         materials.unconverged == 0) {
       // Converged: bonds the answer breaks break now, and contacts deeper than allowed grow
