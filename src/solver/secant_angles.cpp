@@ -5,8 +5,25 @@
 
 namespace dda {
 
+namespace {
+
+// The secant column's displacement error at the block's farthest vertex.
+double secant_error(const Block& b, double r0, double angle) {
+  double reach = 0.0;  // farthest vertex from the reference point
+  for (const Vec2& v : b.vertices) reach = std::max(reach, (v - b.moments.centroid).norm());
+  return 0.5 * reach * std::abs(r0) * std::abs(r0 - angle);
+}
+
+}  // namespace
+
+bool free_secant_off(const World& world, const Block& b, double r0, double angle) {
+  return secant_error(b, r0, angle) > kSecantDisplacementShare * world.w0;
+}
+
 int follow_secant_angles(const World& world, const std::vector<Contact>& contacts,
-                         const Eigen::VectorXd& d, std::vector<double>& angles) {
+                         const Eigen::VectorXd& d, std::vector<double>& angles,
+                         std::vector<int>* off) {
+  if (off != nullptr) off->clear();
   const double strict = kSecantDisplacementShare * world.w0;
   std::vector<double> tolerance(world.blocks.size(), strict);
   for (const Contact& c : contacts) {
@@ -22,9 +39,10 @@ int follow_secant_angles(const World& world, const std::vector<Contact>& contact
     const Block& b = world.blocks[i];
     if (b.fixed) continue;
     const double r0 = d[b.first_dof + kR0];
-    double reach = 0.0;  // farthest vertex from the reference point
-    for (const Vec2& v : b.vertices) reach = std::max(reach, (v - b.moments.centroid).norm());
-    if (0.5 * reach * std::abs(r0) * std::abs(r0 - angles[i]) > tolerance[i]) ++moved;
+    if (secant_error(b, r0, angles[i]) > tolerance[i]) {
+      ++moved;
+      if (off != nullptr) off->push_back(static_cast<int>(i));
+    }
     angles[i] = r0;
   }
   return moved;

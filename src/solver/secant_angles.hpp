@@ -30,7 +30,13 @@ inline constexpr double kSecantContactShare = 1e-3;
 // were further from it than their tolerance (0: the step's T is consistent with its r0):
 // kSecantDisplacementShare of w0, or for a block in closed contact kSecantContactShare of
 // its contacts' smallest allowance if that is more.
+// `off`, if given, receives the indices of the blocks beyond their tolerance.
 int follow_secant_angles(const World& world, const std::vector<Contact>& contacts,
-                         const Eigen::VectorXd& d, std::vector<double>& angles);
+                         const Eigen::VectorXd& d, std::vector<double>& angles,
+                         std::vector<int>* off = nullptr);
+
+// Whether block b's secant angle `angle` is off the r0 it was solved with by more than the
+// free blocks' tolerance (kSecantDisplacementShare of w0).
+bool free_secant_off(const World& world, const Block& b, double r0, double angle);
 
 }  // namespace dda

@@ -176,6 +176,65 @@ void follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx
   }
 }
 
+// finite_rotation, once the contacts agree: when every block whose secant angle is off
+// (`off`, from follow_secant_angles) touches nothing (its contacts all open, which add no
+// terms), its rows of the step's system are its own block terms alone, so its increments are
+// solved block by block (6 x 6, or 3 x 3 for a rigid block) until its angle agrees, with no
+// global solve (a third of the solves of the hopper's first 1.5 s were for tumbling blocks in
+// flight). The other blocks keep the angles they were solved with. On success `angles`,
+// ctx's T, the spins and `block_terms` are those of the increments in d; false (nothing
+// changed) when an off block touches another, or after kLocalSecantRounds rounds.
+constexpr int kLocalSecantRounds = 10;
+
+bool settle_free_secants(const World& world, const std::vector<int>& off, bool spinning,
+                         std::vector<double>& angles, StepContext& ctx, BlockSystem& block_terms,
+                         Eigen::VectorXd& d) {
+  std::vector<unsigned char> touching(world.blocks.size(), 0);
+  for (const Contact& c : world.contacts) {
+    if (c.state.mode == ContactMode::Open) continue;
+    touching[static_cast<std::size_t>(c.key.vertex_block)] = 1;
+    touching[static_cast<std::size_t>(c.key.edge_block)] = 1;
+  }
+  for (const int i : off) {
+    if (touching[static_cast<std::size_t>(i)] != 0) return false;
+  }
+  std::vector<double> local = angles;  // the off blocks' from the r0 just solved
+  for (const int i : off) {
+    local[static_cast<std::size_t>(i)] = d[world.blocks[static_cast<std::size_t>(i)].first_dof + kR0];
+  }
+  Eigen::VectorXd x = d;
+  for (int round = 0; round < kLocalSecantRounds; ++round) {
+    set_rotation_columns(world, local, ctx);
+    if (spinning) follow_spins(world, x, ctx);
+    assemble(world, ctx, block_terms);
+    bool agrees = true;
+    std::vector<double> next = local;
+    for (const int i : off) {
+      const Block& b = world.blocks[static_cast<std::size_t>(i)];
+      const int n = b.rigid ? BlockSystem::kRigidUnknowns : 6;
+      const int row = block_row(b);
+      const Mat6& k = block_terms.diagonal[static_cast<std::size_t>(row)];
+      Vec6 xb = Vec6::Zero();
+      xb.head(n) = k.topLeftCorner(n, n).ldlt().solve(block_terms.rhs.segment(b.first_dof, n));
+      x.segment<6>(b.first_dof) = xb;
+      if (free_secant_off(world, b, xb[kR0], local[static_cast<std::size_t>(i)])) agrees = false;
+      next[static_cast<std::size_t>(i)] = xb[kR0];
+    }
+    if (agrees) {
+      // T, spins and block terms are those the increments were solved with.
+      angles = local;
+      d = x;
+      return true;
+    }
+    local = next;
+  }
+  // Not settled: ctx's T and the block terms are put back to the angles the caller holds.
+  set_rotation_columns(world, angles, ctx);
+  if (spinning) follow_spins(world, d, ctx);
+  assemble(world, ctx, block_terms);
+  return false;
+}
+
 // sin_variable solves for sin r0 in the rotation slot; the stages after the loop want r0.
 void sine_unknowns_to_angles(const World& world, Eigen::VectorXd& d) {
   for (const Block& b : world.blocks) {
@@ -409,6 +468,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
   LoopResult r;
   int extra_rounds = 0;  // bond breaks and augmentations: each earns one more iteration
   int fewest_mismatched = std::numeric_limits<int>::max();
+  std::vector<int> off_secants;  // blocks whose secant angle is off (follow_secant_angles)
   // The last solves' (mismatched, largest): a cycle of up to kCycleWindow solves is seen.
   std::array<std::pair<int, double>, kCycleWindow> recent{};
   for (;;) {
@@ -504,7 +564,22 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       newton.respond(world, world.contacts, d);
       points_moved = newton.follow_measure_points(world, world.contacts, ctx, d);
       if (uses_secant_rotation(treatment)) {
-        secants_moved = follow_secant_angles(world, world.contacts, d, angles);
+        const std::vector<double> solved_angles = angles;
+        secants_moved = follow_secant_angles(world, world.contacts, d, angles, &off_secants);
+        if (secants_moved > 0 && points_moved == 0 && !plastic) {
+          // Blocks in flight: their angles settle block by block (settle_free_secants); the
+          // contacts then see the new increments and T, and only a contact they change
+          // takes the loop on.
+          std::vector<double> local_angles = solved_angles;
+          if (settle_free_secants(world, off_secants, spinning, local_angles, ctx, ws.block_terms, d)) {
+            angles = local_angles;
+            secants_moved = 0;
+            ++stats.local_secant_settles;
+            newton.measure(world, world.contacts, ctx);
+            check = newton.check(world, world.contacts, d, friction_follows);
+            if (check.mismatched > 0) newton.respond(world, world.contacts, d);
+          }
+        }
         if (secants_moved > 0) {
           set_rotation_columns(world, angles, ctx);
           newton.measure(world, world.contacts, ctx);
