@@ -104,6 +104,11 @@ constexpr int kNewtonIterations = 30;
 // of the last kCycleWindow solves', the iterate moves kCycleDamping of the way the line search
 // says (relaxation: the next modes are read between the cycle's states).
 constexpr std::size_t kCycleWindow = 8;
+// Two solves' mismatches are the same when their counts are and their largest mismatches
+// agree to this share: a cycle's states come back with round-off (in the hopper, three
+// solves repeating 570099.2229319, 406798.7983620, 102502.2508638 to 1e-12 relative ran to
+// the limit unseen and cut the step: 29 open-close cuts in its first 1.5 s, 12 with this).
+constexpr double kCycleMatch = 1e-9;
 constexpr double kCycleDamping = 0.5;
 
 StepContext make_step_context(const World& world, double dt) {
@@ -522,8 +527,12 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
     // the account books as it acted. The attempt is accepted as solved, as Shi's code
     // accepts one after its loop's cap, and counted with its residual.
     const std::pair<int, double> signature{check.mismatched, check.largest_mismatch};
-    const bool cycling = check.mismatched > 0 &&
-                         std::find(recent.begin(), recent.end(), signature) != recent.end();
+    const auto same = [&signature](const std::pair<int, double>& seen) {
+      return seen.first == signature.first &&
+             std::abs(seen.second - signature.second) <= kCycleMatch * std::abs(signature.second);
+    };
+    const bool cycling =
+        check.mismatched > 0 && std::find_if(recent.begin(), recent.end(), same) != recent.end();
     recent[static_cast<std::size_t>(r.iterations) % recent.size()] = signature;
     if (check.mismatched > 0 && check.normal_mismatched == 0 &&
         (cycling || r.iterations >= iteration_limit + extra_rounds)) {
