@@ -196,7 +196,10 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
                          resolution;
     out.largest_mismatch = std::max(out.largest_mismatch, share);
     if (share > 1.0) ++out.mismatched;
-    if (std::abs(t.response.normal_force - normal) / kn_ > resolution) ++out.normal_mismatched;
+    if (std::abs(t.response.normal_force - normal) / kn_ > resolution) {
+      ++out.normal_mismatched;
+      if (c.state.mode != ContactMode::Open) ++out.normal_mismatched_closed;
+    }
   }
   return out;
 }

@@ -40,6 +40,9 @@ namespace dda {
 struct NewtonCheck {
   int mismatched = 0;
   int normal_mismatched = 0;  // whose normal force differs (open against closed, or its gap)
+  // Those of them solved closed (their solved force may pull, or push where the response
+  // says open); the others were solved open and push nothing.
+  int normal_mismatched_closed = 0;
   double largest_mismatch = 0.0;  // the largest force difference, as a share of k x resolution
 };
 
