@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "support/contact_scenes.hpp"
+#include "solver/contact_detection.hpp"
+#include "solver/contact_newton.hpp"
 #include "solver/energy.hpp"
 #include "solver/run.hpp"
 #include "solver/world.hpp"
@@ -271,4 +273,49 @@ TEST_CASE("a static masonry arch collapses below its thrust-line limit and stand
   INFO(n << " voussoirs");
   CHECK(static_arch_crown_drop(n, 0.103) > 0.01);
   CHECK(static_arch_crown_drop(n, 0.11) < 0.01);
+}
+
+TEST_CASE("the Newton check tells a normal force undecided on a contact solved open from one "
+          "solved closed",
+          "[contact][newton]") {
+  // A 1 m square resting on a fixed floor: its two bottom corners touch the floor's top edge.
+  // Solved open while the increments push it 1e-6 m down (5000 resolutions: 1e-6 of its
+  // allowance, 4e-4 of its 0.5 m half side), each corner's response would close: a normal
+  // mismatch that pushes nothing.
+  // Solved closed while the increments lift it 1e-6 m, each corner's solved force would pull:
+  // a normal mismatch on a contact solved closed, which an accepted attempt may not leave.
+  Scene s = test::base_scene(1, 0.01);
+  s.control.contact_solver = ContactSolver::Newton;
+  BlockSpec floor = test::block(test::rectangle(-2.0, -1.0, 4.0, 1.0));
+  floor.fixed = true;
+  s.blocks.push_back(floor);
+  s.blocks.push_back(test::block(test::rectangle(-0.5, 0.0, 1.0, 1.0)));
+  World world = make_world(s);
+  detect_contacts(world, world.contacts);
+  StepContext ctx;
+  ctx.dt = 0.01;
+  ctx.penalty = world.penalty;
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(world.dof_count);
+  const int v0 = world.blocks[1].first_dof + kV0;
+  std::vector<Contact> corners;
+  for (const Contact& c : world.contacts) {
+    if (c.key.vertex_block == 1 && c.key.edge_block == 0) corners.push_back(c);
+  }
+  REQUIRE(corners.size() == 2);
+  const auto check_with = [&](ContactMode mode, double lift) {
+    std::vector<Contact> contacts = corners;
+    for (Contact& c : contacts) c.state.mode = mode;
+    ContactNewton newton(world, contacts, ctx);
+    d[v0] = lift;
+    return newton.check(world, contacts, d, false);
+  };
+  const NewtonCheck pushed = check_with(ContactMode::Open, -1e-6);
+  CHECK(pushed.normal_mismatched == 2);
+  CHECK(pushed.normal_mismatched_closed == 0);
+  const NewtonCheck lifted = check_with(ContactMode::Lock, 1e-6);
+  CHECK(lifted.normal_mismatched == 2);
+  CHECK(lifted.normal_mismatched_closed == 2);
+  // At rest, closed and unloaded: nothing to decide.
+  const NewtonCheck rest = check_with(ContactMode::Lock, 0.0);
+  CHECK(rest.mismatched == 0);
 }
