@@ -9,7 +9,7 @@ namespace {
 void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6& k,
                      Eigen::Ref<Vec6> f) {
   const Block& b = world.blocks[static_cast<std::size_t>(index)];
-  const LinearT t = step_t(ctx, index);
+  const LinearT& t = step_t(ctx, index);
   const double density = density_now(world, b);
   const Mat6 mass = mass_matrix(t, b.moments, density);
   const Vec6 v0 = ctx.dynamic_coefficient * b.velocity;

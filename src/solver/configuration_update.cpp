@@ -230,7 +230,7 @@ Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const
 }
 
 double max_displacement_share(const World& world, const Eigen::VectorXd& d) {
-  const LinearT t = shi_t();
+  const LinearT& t = shi_t();
   double largest = 0.0;
   for (const Block& b : world.blocks) {
     if (b.fixed) continue;

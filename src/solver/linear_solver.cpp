@@ -14,38 +14,32 @@ std::optional<Eigen::VectorXd> solve_dense(const BlockSystem& system) {
 // acts by its leading unknowns_of(row) x unknowns_of(col) corner (BlockSystem) ----
 namespace {
 
-// y[0, R) += A[0, R) x [0, C) x[0, C) and, with `both`, z[0, C) += A^T y-side x: one 6 x 6
-// block (or its rigid 3-unknown corner) of the block system, at fixed sizes the compiler
-// unrolls (the dynamic-size product of the corner was a tenth of a moving scene's time).
-template <int R, int C>
+// y[0, Out) += B x[0, In) for one 6 x 6 block A of the block system (or its rigid 3-unknown
+// corner): B = A's leading Out x In corner, or with kTransposed A's leading In x Out corner
+// transposed. At fixed sizes the compiler unrolls it (the dynamic-size product of the corner
+// was a tenth of a moving scene's time).
+template <int Out, int In, bool kTransposed>
 void block_product(const Mat6& a, const double* x, double* y) {
-  for (int i = 0; i < R; ++i) {
+  for (int i = 0; i < Out; ++i) {
     double sum = 0.0;
-    for (int j = 0; j < C; ++j) sum += a(i, j) * x[j];
+    for (int j = 0; j < In; ++j) sum += (kTransposed ? a(j, i) : a(i, j)) * x[j];
     y[i] += sum;
   }
 }
 
-template <int R, int C>
-void block_product_transposed(const Mat6& a, const double* x, double* y) {
-  for (int j = 0; j < C; ++j) {
-    double sum = 0.0;
-    for (int i = 0; i < R; ++i) sum += a(i, j) * x[i];
-    y[j] += sum;
-  }
-}
-
+// The same for A's leading rows x cols corner (each 6 or kRigidUnknowns), or its transpose.
 template <bool kTransposed>
 void corner_product(const Mat6& a, int rows, int cols, const double* x, double* y) {
   constexpr int kR = BlockSystem::kRigidUnknowns;
-  if (rows == 6 && cols == 6) {
-    kTransposed ? block_product_transposed<6, 6>(a, x, y) : block_product<6, 6>(a, x, y);
-  } else if (rows == 6) {
-    kTransposed ? block_product_transposed<6, kR>(a, x, y) : block_product<6, kR>(a, x, y);
-  } else if (cols == 6) {
-    kTransposed ? block_product_transposed<kR, 6>(a, x, y) : block_product<kR, 6>(a, x, y);
+  const int out = kTransposed ? cols : rows, in = kTransposed ? rows : cols;
+  if (out == 6 && in == 6) {
+    block_product<6, 6, kTransposed>(a, x, y);
+  } else if (out == 6) {
+    block_product<6, kR, kTransposed>(a, x, y);
+  } else if (in == 6) {
+    block_product<kR, 6, kTransposed>(a, x, y);
   } else {
-    kTransposed ? block_product_transposed<kR, kR>(a, x, y) : block_product<kR, kR>(a, x, y);
+    block_product<kR, kR, kTransposed>(a, x, y);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "contact/narrow_phase.hpp"
 #include "kinematics/polygon.hpp"
@@ -187,8 +188,10 @@ void follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx
 // solved block by block (6 x 6, or 3 x 3 for a rigid block) until its angle agrees, with no
 // global solve (a third of the solves of the hopper's first 1.5 s were for tumbling blocks in
 // flight). The other blocks keep the angles they were solved with. On success `angles`,
-// ctx's T, the spins and `block_terms` are those of the increments in d; false (nothing
-// changed) when an off block touches another, or after kLocalSecantRounds rounds.
+// ctx's T, the spins and `block_terms` are those of the increments in d. False when an off
+// block touches another (nothing changed), or after kLocalSecantRounds rounds: `angles` and
+// d are as they came, but ctx's T, the spins and `block_terms` are the last round's, for the
+// caller to set from its angles as it does after any secant change.
 constexpr int kLocalSecantRounds = 10;
 
 bool settle_free_secants(const World& world, const std::vector<int>& off, bool spinning,
@@ -233,10 +236,6 @@ bool settle_free_secants(const World& world, const std::vector<int>& off, bool s
     }
     local = next;
   }
-  // Not settled: ctx's T and the block terms are put back to the angles the caller holds.
-  set_rotation_columns(world, angles, ctx);
-  if (spinning) follow_spins(world, d, ctx);
-  assemble(world, ctx, block_terms);
   return false;
 }
 
@@ -577,15 +576,15 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       newton.respond(world, world.contacts, d);
       points_moved = newton.follow_measure_points(world, world.contacts, ctx, d);
       if (uses_secant_rotation(treatment)) {
-        const std::vector<double> solved_angles = angles;
+        std::vector<double> solved_angles = angles;
         secants_moved = follow_secant_angles(world, world.contacts, d, angles, &off_secants);
         if (secants_moved > 0 && points_moved == 0 && !plastic) {
           // Blocks in flight: their angles settle block by block (settle_free_secants); the
           // contacts then see the new increments and T, and only a contact they change
-          // takes the loop on.
-          std::vector<double> local_angles = solved_angles;
-          if (settle_free_secants(world, off_secants, spinning, local_angles, ctx, ws.block_terms, d)) {
-            angles = local_angles;
+          // takes the loop on. (Otherwise T, spins and block terms are set from `angles`
+          // below, as after any secant change.)
+          if (settle_free_secants(world, off_secants, spinning, solved_angles, ctx, ws.block_terms, d)) {
+            angles = std::move(solved_angles);
             secants_moved = 0;
             ++stats.local_secant_settles;
             newton.measure(world, world.contacts, ctx);
