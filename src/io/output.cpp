@@ -476,6 +476,7 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
       {"contact_solver", {{"line_searches_shortened", stats.line_searches_shortened},
                           {"unconverged_mismatch", stats.newton_unconverged_mismatch},
                           {"accepted_unconverged", stats.newton_accepted_unconverged},
+                          {"held_open", stats.newton_held_open},
                           {"local_secant_settles", stats.local_secant_settles}}},
       {"energy", energy_json(world)},
       {"stages_run", stages_run_json(world)},

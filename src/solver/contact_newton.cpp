@@ -49,6 +49,7 @@ ContactNewton::ContactNewton(const World& world, const std::vector<Contact>& con
   start_.resize(contacts.size());
   solved_strength_.assign(contacts.size(), 0.0);
   solved_mode_.assign(contacts.size(), {ContactMode::Open, 0});
+  held_open_.assign(contacts.size(), 0);
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& c = contacts[i];
     Start& s = start_[i];
@@ -154,11 +155,18 @@ void ContactNewton::set_responses(const World& world, std::vector<Contact>& cont
     const bool reversed = reversal_locks && c.state.mode == ContactMode::Slide &&
                           t.response.mode == ContactMode::Slide &&
                           t.response.slide_sign != c.state.slide_sign;
+    c.state.t_lock = start_[i].anchor;
+    c.iterate.new_gap = t.gap;
+    if (held_open_[i]) {
+      c.state.mode = ContactMode::Open;
+      c.state.slide_sign = 0;
+      c.state.normal_force = 0.0;
+      c.iterate.shear_force = 0.0;
+      continue;
+    }
     c.state.mode = reversed ? ContactMode::Lock : t.response.mode;
     c.state.slide_sign = reversed ? 0 : t.response.slide_sign;
-    c.state.t_lock = start_[i].anchor;
     c.state.normal_force = std::max(t.response.normal_force, 0.0);
-    c.iterate.new_gap = t.gap;
     c.iterate.shear_force = t.response.shear_force;
   }
 }
@@ -168,6 +176,12 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
   NewtonCheck out;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& c = contacts[i];
+    if (held_open_[i]) {
+      solved_strength_[i] = 0.0;
+      solved_mode_[i] = {ContactMode::Open, 0};
+      ++out.held_open;
+      continue;
+    }
     const double resolution = kNewtonResolutionShare * c.allowed_penetration;
     const Trial t = trial_at(world, c, i, d_hat);
     // The forces the solve gave this contact at d_hat, in the mode it was solved with.
@@ -202,6 +216,21 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
     }
   }
   return out;
+}
+
+int ContactNewton::hold_open_pulling(const World& world, const std::vector<Contact>& contacts,
+                                     const Eigen::VectorXd& d_hat) {
+  int held = 0;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    if (held_open_[i] || c.state.mode == ContactMode::Open || c.state.bonded) continue;
+    const double resolution = kNewtonResolutionShare * c.allowed_penetration;
+    const double solved = kn_ * (c.state.rest_shift - trial_at(world, c, i, d_hat).gap);
+    if (solved >= -kn_ * resolution) continue;  // pushes, or pulls within the resolution
+    held_open_[i] = 1;
+    ++held;
+  }
+  return held;
 }
 
 bool ContactNewton::friction_coupling(const World& world, const std::vector<Contact>& contacts,
@@ -258,6 +287,7 @@ double ContactNewton::line_search(const World& world, const std::vector<Contact>
   std::vector<Line> lines;
   lines.reserve(contacts.size());
   for (std::size_t i = 0; i < contacts.size(); ++i) {
+    if (held_open_[i]) continue;  // pushes nothing anywhere on the line
     const Contact& c = contacts[i];
     const Measure& mn = measures_[i].normal;
     const double anchor = start_[i].anchor;

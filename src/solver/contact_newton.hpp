@@ -15,7 +15,7 @@
 // settles with the modes).
 //
 // A step has converged when the contacts' responses at the solved increments agree with the
-// modes they were solved with, up to the contact resolution (a force of k x 1e-5 of the
+// modes they were solved with, up to the contact resolution (a force of k x 1e-6 of the
 // allowed penetration at a spring of stiffness k), together with the secant rotation and
 // the plastic blocks' Newton (solver/step.cpp). Bonds break only on a converged step, then
 // the step is solved again without them.
@@ -43,6 +43,7 @@ struct NewtonCheck {
   // Those of them solved closed (their solved force may pull, or push where the response
   // says open); the others were solved open and push nothing.
   int normal_mismatched_closed = 0;
+  int held_open = 0;  // contacts held open (hold_open_pulling), which the counts leave out
   double largest_mismatch = 0.0;  // the largest force difference, as a share of k x resolution
 };
 
@@ -96,6 +97,14 @@ class ContactNewton {
   NewtonCheck check(const World& world, const std::vector<Contact>& contacts,
                     const Eigen::VectorXd& d_hat, bool friction_follows);
 
+  // A way out of a cycle whose contacts solved closed pull at d_hat (unbonded, their
+  // response open): each of them is held open for the rest of the attempt, whatever its
+  // response (its vertex may then end inside the edge's block: the overshoot and
+  // penetration checks of the step judge how far). Contacts only leave the closed set this
+  // way, so the modes cannot cycle through them again, and nothing pulls. Returns how many.
+  int hold_open_pulling(const World& world, const std::vector<Contact>& contacts,
+                        const Eigen::VectorXd& d_hat);
+
   // How far to move from d towards d_hat: the root in (0, 1] of the work rate of all forces
   // along the line (blocks: `block_terms`, the assembled terms without contacts; contacts:
   // their responses), 1 when the forces still oppose the motion at d_hat.
@@ -146,6 +155,7 @@ class ContactNewton {
   // What the last checked solve gave each contact: its mode and slip direction, and a
   // sliding one's friction strength (taken at the normal force of the iterate before).
   std::vector<double> solved_strength_;
+  std::vector<char> held_open_;  // hold_open_pulling's contacts: open whatever their response
   std::vector<std::pair<ContactMode, int>> solved_mode_;
   double kn_ = 0.0;  // the normal spring (the penalty) and the shear spring (N/m)
   double ks_ = 0.0;

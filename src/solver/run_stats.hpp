@@ -62,6 +62,9 @@ struct RunStats {
   // Attempts it accepted unconverged (a cycle or its limit with only shear modes left,
   // solver/step.cpp), as Shi's code accepts a step after its loop's cap.
   long newton_accepted_unconverged = 0;
+  // Contacts it held open for the rest of an attempt that was stuck with contacts solved
+  // closed pulling (ContactNewton::hold_open_pulling).
+  long newton_held_open = 0;
   // finite_rotation: converged solves whose off secant angles were all of blocks touching
   // nothing, settled block by block instead of by one more solve (settle_free_secants).
   long local_secant_settles = 0;

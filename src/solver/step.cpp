@@ -111,6 +111,13 @@ constexpr std::size_t kCycleWindow = 8;
 // the limit unseen and cut the step: 29 open-close cuts in its first 1.5 s, 12 with this).
 constexpr double kCycleMatch = 1e-9;
 constexpr double kCycleDamping = 0.5;
+// How often an attempt may hold pulling contacts open (ContactNewton::hold_open_pulling),
+// and the iterations each time earns. On the 1965-block slope's consolidation and its
+// failing strength-reduction trial, 1 to 3 rounds of 5 or 10 iterations gave the same
+// cuts and times to within their chaotic spread; an attempt that wanders with hundreds of
+// contacts out of their mode is not saved by holding, and each round adds to its cost.
+constexpr int kHoldOpenRounds = 2;
+constexpr int kHeldOpenIterations = 5;
 
 StepContext make_step_context(const World& world, double dt) {
   StepContext ctx;
@@ -471,6 +478,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
   clock.lap(times.contact_update);
   LoopResult r;
   int extra_rounds = 0;  // bond breaks and augmentations: each earns one more iteration
+  int holds = 0;         // times contacts were held open (hold_open_pulling)
   int fewest_mismatched = std::numeric_limits<int>::max();
   std::vector<int> off_secants;  // blocks whose secant angle is off (follow_secant_angles)
   // The last solves' (mismatched, largest): a cycle of up to kCycleWindow solves is seen.
@@ -537,14 +545,32 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
     const bool cycling =
         check.mismatched > 0 && std::find_if(recent.begin(), recent.end(), same) != recent.end();
     recent[static_cast<std::size_t>(r.iterations) % recent.size()] = signature;
-    if (check.mismatched > 0 && check.normal_mismatched_closed == 0 &&
-        (cycling || r.iterations >= iteration_limit + extra_rounds)) {
+    const bool at_limit = r.iterations >= iteration_limit + extra_rounds;
+    if (check.mismatched > 0 && check.normal_mismatched_closed == 0 && (cycling || at_limit)) {
       newton.finish_as_solved(world, world.contacts, d_hat);
       ++stats.newton_accepted_unconverged;
       stats.newton_unconverged_mismatch =
           std::max(stats.newton_unconverged_mismatch, check.largest_mismatch);
       d = d_hat;
       break;
+    }
+    // At the limit with contacts solved closed that pull: they are held open from here on
+    // (hold_open_pulling), so the closed set can only shrink through them, and the
+    // iteration goes on kHeldOpenIterations more. (A jammed group of eight blocks against
+    // the fixed boundary of a 2000-block slope wandered between 3 and 100 mismatched
+    // contacts, a dozen of them pulling, until the limit cut the step, at every dt it was
+    // tried.) Not at a mere cycle: the damped iterate leaves most cycles that pass through
+    // a pulling contact, and holding there sent a 300-polygon hopper into 80 % more
+    // overshoot cuts (vertices of held contacts ending inside their edges' blocks).
+    if (check.mismatched > 0 && at_limit && holds < kHoldOpenRounds) {
+      const int held = newton.hold_open_pulling(world, world.contacts, d_hat);
+      if (held > 0) {
+        ++holds;
+        stats.newton_held_open += held;
+        extra_rounds += kHeldOpenIterations;
+        recent.fill({});
+        fewest_mismatched = std::numeric_limits<int>::max();
+      }
     }
     // The contacts first, on the present T and material linearisation; once they agree with
     // the solve, the secant angles and the plastic blocks follow it (an outer fixed point:

@@ -319,3 +319,55 @@ TEST_CASE("the Newton check tells a normal force undecided on a contact solved o
   const NewtonCheck rest = check_with(ContactMode::Lock, 0.0);
   CHECK(rest.mismatched == 0);
 }
+
+TEST_CASE("a contact held open stays open and pushes nothing, however far the increments drive "
+          "it in",
+          "[contact][newton]") {
+  // The square on the floor of the test above. Solved locked while the increments lift it
+  // 1e-6 m, both corners pull (5000 resolutions): hold_open_pulling holds both open. Then
+  // increments that push the square 1e-6 m into the floor leave them open, with no force,
+  // and the check counts them apart from the mismatches (their decision is final; the
+  // step's overshoot and penetration checks judge how far they went in).
+  Scene s = test::base_scene(1, 0.01);
+  s.control.contact_solver = ContactSolver::Newton;
+  BlockSpec floor = test::block(test::rectangle(-2.0, -1.0, 4.0, 1.0));
+  floor.fixed = true;
+  s.blocks.push_back(floor);
+  s.blocks.push_back(test::block(test::rectangle(-0.5, 0.0, 1.0, 1.0)));
+  World world = make_world(s);
+  detect_contacts(world, world.contacts);
+  StepContext ctx;
+  ctx.dt = 0.01;
+  ctx.penalty = world.penalty;
+  const int v0 = world.blocks[1].first_dof + kV0;
+  std::vector<Contact> corners;
+  for (const Contact& c : world.contacts) {
+    if (c.key.vertex_block == 1 && c.key.edge_block == 0) corners.push_back(c);
+  }
+  REQUIRE(corners.size() == 2);
+  for (Contact& c : corners) c.state.mode = ContactMode::Lock;
+  ContactNewton newton(world, corners, ctx);
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(world.dof_count);
+
+  // Pushed in, nothing pulls: nothing to hold.
+  d[v0] = -1e-6;
+  CHECK(newton.hold_open_pulling(world, corners, d) == 0);
+  // Lifted, both pull.
+  d[v0] = 1e-6;
+  CHECK(newton.check(world, corners, d, false).normal_mismatched_closed == 2);
+  CHECK(newton.hold_open_pulling(world, corners, d) == 2);
+  CHECK(newton.hold_open_pulling(world, corners, d) == 0);  // held already
+
+  d[v0] = -1e-6;
+  newton.respond(world, corners, d);
+  for (const Contact& c : corners) {
+    CHECK(c.state.mode == ContactMode::Open);
+    CHECK(c.state.normal_force == 0.0);
+    CHECK(c.iterate.shear_force == 0.0);
+    CHECK(c.iterate.new_gap < 0.0);  // in, as the increments put it
+  }
+  const NewtonCheck held = newton.check(world, corners, d, false);
+  CHECK(held.held_open == 2);
+  CHECK(held.mismatched == 0);
+  CHECK(held.normal_mismatched == 0);
+}
