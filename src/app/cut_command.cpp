@@ -9,6 +9,7 @@
 #include "cutting/model.hpp"
 #include "io/block_picture.hpp"
 #include "io/cut_scene.hpp"
+#include "io/text_file.hpp"
 #include "io/json_input.hpp"
 #include "io/model_reader.hpp"
 #include "io/scene_reader.hpp"

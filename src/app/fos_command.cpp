@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/interrupt.hpp"
 #include "app/progress.hpp"
 #include "io/block_picture.hpp"
 #include "io/fos_report.hpp"
@@ -63,11 +64,15 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   if (!any_free) throw InputError(scene_path + ": blocks: every block is fixed; nothing can fail");
 
   std::cerr << "dda: consolidating " << scene_path << " at F = " << settings.consolidation_factor << "\n";
+  // SIGINT or SIGTERM: the consolidation or the running trials stop at their next step, and
+  // the report holds the trials judged so far (a second signal ends the program at once).
+  watch_for_interrupts();
+  const auto interrupted = [] { return interrupt_signal() != 0; };
   ProgressBar progress(run_length(scene), run_unit(scene));
   const Consolidation consolidation =
       consolidate(scene, settings.consolidation_factor, [&](const World& w, const RunStats&) {
         progress.update(run_position(scene, w));
-        return true;
+        return !interrupted();
       });
   progress.finish();
   if (consolidation.stats.diverged) {
@@ -79,17 +84,37 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   const ConsolidationInfo info{consolidation.stats.steps, world.time,
                                consolidation.stats.wall_time_s, scene_energy(world).kinetic};
   settings = resolve_fos_settings(world, settings);
+  const auto stop_message = [&](const std::string& when) {
+    return "interrupted (signal " + std::to_string(interrupt_signal()) + ") " + when;
+  };
+  if (consolidation.stats.interrupted) {
+    FosResult none;
+    none.interrupted = true;
+    none.message = stop_message("during the consolidation, at t = " + format(world.time, "%g") +
+                                " s; no trial was run");
+    write_fos_report(out_dir, scene, settings, info, none, consolidation.stats.wall_time_s);
+    std::cerr << "dda: " << none.message << "; report in " << out_dir << "\n";
+    return interrupted_exit_code();
+  }
   std::cerr << "dda: trials of " << settings.trial_time << " s, failing beyond "
             << settings.failure_displacement << " m, " << settings.jobs << " at once\n";
 
   const auto start = std::chrono::steady_clock::now();
   const FosResult result = find_factor_of_safety(settings, [&](const std::vector<double>& factors) {
-    return run_trials(world, settings, factors, [](const TrialResult& t) {
-      std::cerr << "dda: " << trial_line(t) << "\n";
-    });
+    return run_trials(
+        world, settings, factors,
+        [](const TrialResult& t) { std::cerr << "dda: " << trial_line(t) << "\n"; }, interrupted);
   });
   const double wall = consolidation.stats.wall_time_s +
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (result.interrupted) {
+    FosResult kept = result;
+    kept.message = stop_message(result.message);
+    write_fos_report(out_dir, scene, settings, info, kept, wall);
+    std::cerr << "dda: " << kept.message << "; report of the trials so far in " << out_dir
+              << " (report.json: \"interrupted\": true)\n";
+    return interrupted_exit_code();
+  }
   write_fos_report(out_dir, scene, settings, info, result, wall);
   if (!result.found) {
     std::cerr << "dda: error: no factor of safety: " << result.message << "; trials in "

@@ -1,11 +1,15 @@
 #include "app/interrupt.hpp"
 
+#include <atomic>
 #include <csignal>
 
 namespace dda {
 namespace {
 
-volatile std::sig_atomic_t received = 0;
+// Lock-free, so safe to set in the handler, and read by every thread (dda fos polls it from
+// its trials' threads).
+std::atomic<int> received{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 void on_interrupt(int signal) {
   received = signal;

@@ -101,22 +101,4 @@ CutScene cut_scene(const Model& model, const CutModel& cut) {
 
 std::string scene_text(const ordered_json& scene) { return layout(scene, "") + "\n"; }
 
-// Through a temporary file and a rename, as the run's output is written (io/output.cpp), so
-// that an edited scene is never left half overwritten.
-void write_text_file(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot open " + tmp + " (" + std::strerror(errno) + ")");
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    throw std::runtime_error("cannot rename " + tmp + " to " + path + " (" + ec.message() + ")");
-  }
-}
-
 }  // namespace dda

@@ -28,7 +28,4 @@ CutScene cut_scene(const Model& model, const CutModel& cut);
 // one line; numbers as the shortest text that reads back as the same double.
 std::string scene_text(const nlohmann::ordered_json& scene);
 
-// Writes `text` to `path`. Throws std::runtime_error naming the path when it cannot.
-void write_text_file(const std::string& path, const std::string& text);
-
 }  // namespace dda

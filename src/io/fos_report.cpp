@@ -1,10 +1,11 @@
 #include "io/fos_report.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/text_file.hpp"
 
 namespace dda {
 namespace {
@@ -23,11 +24,11 @@ std::string general(double x) {
   return buf;
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+
+// What a trial decided: "stable", "failing", or "–" when it was interrupted (no verdict).
+std::string outcome(const TrialResult& t) {
+  if (t.interrupted) return "–";
+  return t.stable ? "stable" : "failing";
 }
 
 json trial_json(const TrialResult& t) {
@@ -42,14 +43,15 @@ json trial_json(const TrialResult& t) {
           {"steps", t.steps},
           {"simulated_time", t.simulated_time},
           {"wall_time_s", t.wall_time_s},
-          {"watched_point", t.watched_point}};
+          {"watched_point", t.watched_point},
+          {"interrupted", t.interrupted}};
 }
 
 }  // namespace
 
 std::string trial_line(const TrialResult& t) {
-  return "trial F = " + fixed(t.factor, 4) + ": " + (t.stable ? "stable" : "failing") + " (" +
-         t.verdict + "), largest displacement " + general(t.largest_displacement) + " m, " +
+  return "trial F = " + fixed(t.factor, 4) + ": " + outcome(t) + " (" + t.verdict +
+         "), largest displacement " + general(t.largest_displacement) + " m, " +
          std::to_string(t.steps) + " steps, " + fixed(t.wall_time_s, 1) + " s";
 }
 
@@ -71,6 +73,10 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
       {"bracket", result.found ? json::array({result.last_stable, result.first_failing})
                                : json(nullptr)},
       {"message", result.message},
+      {"interrupted", result.interrupted},
+      {"bracket_so_far", result.has_bracket
+                             ? json::array({result.last_stable, result.first_failing})
+                             : json(nullptr)},
       {"settings",
        {{"tolerance", s.tolerance},
         {"min_factor", s.min_factor},
@@ -91,7 +97,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
       {"trials", trials},
       {"wall_time_s", wall_time_s},
   };
-  write_text(dir / "report.json", report.dump(2) + "\n");
+  write_text_file((dir / "report.json").string(), report.dump(2) + "\n");
 
   std::ostringstream md;
   md << "# Factor of safety: " << scene.source << "\n\n";
@@ -99,6 +105,8 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
     md << "**F = " << fixed(result.factor_of_safety, 3) << "**, between the last stable trial "
        << fixed(result.last_stable, 4) << " and the first failing " << fixed(result.first_failing, 4)
        << " (tolerance " << general(s.tolerance) << ").\n\n";
+  } else if (result.interrupted) {
+    md << "**" << result.message << "**. The trials below are those run so far; an interrupted trial has no verdict.\n\n";
   } else {
     md << "**No factor found**: " << result.message << "\n\n";
   }
@@ -121,12 +129,12 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   md << "| F | verdict | why | largest displacement (m) | end speed (m/s) | speed limit (m/s) | steps | wall time (s) |\n"
      << "|---|---|---|---|---|---|---|---|\n";
   for (const TrialResult& t : result.trials) {
-    md << "| " << fixed(t.factor, 4) << " | " << (t.stable ? "stable" : "failing") << " | "
+    md << "| " << fixed(t.factor, 4) << " | " << outcome(t) << " | "
        << t.verdict << " | " << general(t.largest_displacement) << " | " << general(t.end_speed)
        << " | " << general(t.end_speed_limit) << " | " << t.steps << " | " << fixed(t.wall_time_s, 2) << " |\n";
   }
   md << "\nWall time " << fixed(wall_time_s, 1) << " s in all.\n";
-  write_text(dir / "report.md", md.str());
+  write_text_file((dir / "report.md").string(), md.str());
 }
 
 }  // namespace dda

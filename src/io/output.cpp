@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/contact_output.hpp"
+#include "io/text_file.hpp"
 #include "kinematics/block_matrices.hpp"
 #include "solver/energy.hpp"
 
@@ -43,23 +44,6 @@ std::string num(double x) { return format_full_precision(x); }
 
 [[noreturn]] void fail(const std::string& what, const fs::path& path) {
   throw std::runtime_error("output: " + what + " " + path.string());
-}
-
-// Writes `text` to `path` through a temporary file and a rename, so a reader (or a run that
-// dies half-way) never sees a half-written file.
-void write_atomically(const fs::path& path, const std::string& text) {
-  fs::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) fail("cannot open", tmp);
-    out << text;
-    out.flush();
-    if (!out) fail("cannot write", tmp);
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) fail("cannot rename " + tmp.string() + " to", path);
 }
 
 std::string frame_name(int step) {
@@ -355,18 +339,18 @@ void OutputWriter::record(const World& world) {
   if (!world.monitors.empty()) record_monitors(world);
 
   const std::string name = frame_name(world.step);
-  write_atomically(dir_ / name, vtp_text(world));
+  write_text_file((dir_ / name).string(), vtp_text(world));
   // Recording the same step twice (e.g. the final step is also an output step) overwrites
   // the frame; the index lists it once.
   if (frames_.empty() || frames_.back().second != name) frames_.emplace_back(world.time, name);
-  write_atomically(dir_ / "blocks.pvd", pvd_text(frames_));
+  write_text_file((dir_ / "blocks.pvd").string(), pvd_text(frames_));
 
   const std::string contacts = contact_frame_name(world.step);
-  write_atomically(dir_ / contacts, contacts_vtp_text(world));
+  write_text_file((dir_ / contacts).string(), contacts_vtp_text(world));
   if (contact_frames_.empty() || contact_frames_.back().second != contacts) {
     contact_frames_.emplace_back(world.time, contacts);
   }
-  write_atomically(dir_ / "contacts.pvd", pvd_text(contact_frames_));
+  write_text_file((dir_ / "contacts.pvd").string(), pvd_text(contact_frames_));
 }
 
 // One row per monitor: where its material point is, how far it has moved since the start,
@@ -424,8 +408,8 @@ json energy_json(const World& world) {
 }  // namespace
 
 void OutputWriter::finish(const World& world, const RunStats& stats) {
-  write_atomically(dir_ / "blocks.pvd", pvd_text(frames_));
-  write_atomically(dir_ / "contacts.pvd", pvd_text(contact_frames_));
+  write_text_file((dir_ / "blocks.pvd").string(), pvd_text(frames_));
+  write_text_file((dir_ / "contacts.pvd").string(), pvd_text(contact_frames_));
   json modes = json::object();
   const std::vector<ContactModeCounts> counts =
       contact_modes_by_joint(world, scene_.joint_materials.size());
@@ -488,8 +472,8 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
       {"blocks", blocks},
   };
   // Replace rather than throw on invalid UTF-8 (a scene path or message from the system).
-  write_atomically(dir_ / "summary.json",
-                   summary.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
+  write_text_file((dir_ / "summary.json").string(),
+                  summary.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
 }  // namespace dda

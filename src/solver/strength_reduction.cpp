@@ -55,13 +55,14 @@ struct Bracket {
   bool monotone = true;           // no stable trial above a failing one
 };
 
+// Over the judged trials (an interrupted one has no verdict).
 Bracket bracket_of(const std::vector<TrialResult>& trials) {
   Bracket b;
   for (const TrialResult& t : trials) {
-    if (!t.stable && (!b.failing || t.factor < *b.failing)) b.failing = t.factor;
+    if (!t.interrupted && !t.stable && (!b.failing || t.factor < *b.failing)) b.failing = t.factor;
   }
   for (const TrialResult& t : trials) {
-    if (!t.stable) continue;
+    if (t.interrupted || !t.stable) continue;
     if (b.failing && t.factor >= *b.failing) {
       b.monotone = false;
       continue;
@@ -149,7 +150,8 @@ FosSettings resolve_fos_settings(const World& consolidated, FosSettings s) {
   return s;
 }
 
-TrialResult run_trial(const World& consolidated, const FosSettings& s, double factor) {
+TrialResult run_trial(const World& consolidated, const FosSettings& s, double factor,
+                      const StopQuery& stop) {
   assert(s.failure_displacement > 0.0 && s.trial_time > 0.0);
   const auto start = std::chrono::steady_clock::now();
   TrialResult r;
@@ -234,6 +236,10 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
       break;
     }
     ++r.steps;
+    if (stop && stop()) {
+      r.interrupted = true;
+      break;
+    }
     const std::vector<Vec2> now = watched_points(w);
     const double elapsed = w.time - consolidated.time;
     for (std::size_t i = 0; i < start_points.size(); ++i) {
@@ -287,7 +293,10 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
     r.end_speed = last.speed;
     r.end_speed_limit = last.limit;
   }
-  if (!r.verdict.empty()) {
+  if (r.interrupted) {
+    r.stable = false;
+    r.verdict = "interrupted";
+  } else if (!r.verdict.empty()) {
     r.stable = false;  // diverged
   } else if (moved_too_far) {
     r.stable = false;
@@ -319,7 +328,8 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
 
 std::vector<TrialResult> run_trials(const World& consolidated, const FosSettings& s,
                                     const std::vector<double>& factors,
-                                    const std::function<void(const TrialResult&)>& done) {
+                                    const std::function<void(const TrialResult&)>& done,
+                                    const StopQuery& stop) {
   std::vector<TrialResult> results(factors.size());
   std::mutex report;
   std::size_t next = 0;
@@ -333,7 +343,14 @@ std::vector<TrialResult> run_trials(const World& consolidated, const FosSettings
         if (next >= factors.size()) return;
         k = next++;
       }
-      TrialResult r = run_trial(consolidated, s, factors[k]);
+      TrialResult r;
+      if (stop && stop()) {
+        r.factor = factors[k];
+        r.interrupted = true;
+        r.verdict = "interrupted";
+      } else {
+        r = run_trial(consolidated, s, factors[k], stop);
+      }
       const std::lock_guard<std::mutex> lock(report);
       if (done) done(r);
       results[k] = std::move(r);
@@ -380,11 +397,29 @@ FosResult find_factor_of_safety(const FosSettings& s, const TrialEvaluator& eval
   for (;;) {
     const std::vector<double> factors = next_factors(result.trials, s);
     if (factors.empty()) break;
-    for (TrialResult& t : evaluate(factors)) result.trials.push_back(std::move(t));
+    for (TrialResult& t : evaluate(factors)) {
+      result.interrupted = result.interrupted || t.interrupted;
+      result.trials.push_back(std::move(t));
+    }
+    if (result.interrupted) break;
   }
   const Bracket b = bracket_of(result.trials);
+  if (result.interrupted) {
+    long judged = 0;
+    for (const TrialResult& t : result.trials) judged += t.interrupted ? 0 : 1;
+    result.message = "after " + std::to_string(judged) + " judged trials";
+    if (b.stable && b.failing) {
+      result.has_bracket = true;
+      result.last_stable = *b.stable;
+      result.first_failing = *b.failing;
+      result.message += "; the factor lies in their bracket [" + std::to_string(*b.stable) +
+                        ", " + std::to_string(*b.failing) + "], not yet as narrow as the tolerance";
+    }
+    return result;
+  }
   if (b.stable && b.failing) {
     result.found = true;
+    result.has_bracket = true;
     result.last_stable = *b.stable;
     result.first_failing = *b.failing;
     result.factor_of_safety = 0.5 * (*b.stable + *b.failing);

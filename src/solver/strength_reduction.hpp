@@ -86,6 +86,9 @@ struct TrialResult {
   double simulated_time = 0.0;        // s
   double wall_time_s = 0.0;
   int watched_point = -1;             // monitor index (monitors given) or block index that moved most
+  // Stopped by the caller (StopQuery) before a verdict: `verdict` is "interrupted" and
+  // `stable` false, and the search leaves the trial out of its bracket.
+  bool interrupted = false;
   World world;                        // the state where the trial ended (for pictures)
 };
 
@@ -108,17 +111,25 @@ std::vector<JointLaw> scene_joint_laws(const World& consolidated);
 // world. The world must have at least one free block.
 FosSettings resolve_fos_settings(const World& consolidated, FosSettings settings);
 
+// Asked after every step of a trial: true stops it (dda fos: SIGINT or SIGTERM).
+using StopQuery = std::function<bool()>;
+
 // Runs one trial: a copy of `consolidated` with every joint's strength divided by `factor`
 // (and plastic blocks' when settings.reduce_materials), the scene's last time steps, the
 // trial's dynamic coefficient, until it fails or trial_time has passed. Settings resolved.
-TrialResult run_trial(const World& consolidated, const FosSettings& settings, double factor);
+// `stop` (may be empty) ends it early, marked interrupted.
+TrialResult run_trial(const World& consolidated, const FosSettings& settings, double factor,
+                      const StopQuery& stop = {});
 
 // Runs the trials at `factors`, up to settings.jobs at once (threads, each trial with its
 // own copy of the world), and returns them in the order of `factors`. `done` (may be
-// empty) is called once per finished trial, one call at a time.
+// empty) is called once per finished trial, one call at a time. Once `stop` (may be empty)
+// says so, running trials end interrupted and those not started are returned interrupted
+// with no step.
 std::vector<TrialResult> run_trials(const World& consolidated, const FosSettings& settings,
                                     const std::vector<double>& factors,
-                                    const std::function<void(const TrialResult&)>& done);
+                                    const std::function<void(const TrialResult&)>& done,
+                                    const StopQuery& stop = {});
 
 // ---- the search (pure over an evaluator) ----
 
@@ -132,6 +143,11 @@ struct FosResult {
   double first_failing = 0.0;
   std::string message;            // why none was found, or a note (non-monotone verdicts)
   std::vector<TrialResult> trials;  // in the order they ran
+  // The search stopped before its end (a trial came back interrupted): not found, and the
+  // bracket of the trials judged so far, when they have one, in last_stable/first_failing
+  // with has_bracket.
+  bool interrupted = false;
+  bool has_bracket = false;
 };
 
 // The next factors to try given the trials so far: from F = 1 (and, with more jobs, F = 2)
@@ -142,6 +158,7 @@ std::vector<double> next_factors(const std::vector<TrialResult>& trials, const F
 
 // Runs the search; always ends: each round either narrows the bracket by a factor of
 // jobs + 1 or moves a search end by a factor of 2 towards the range's limits.
+// A round that returns an interrupted trial ends it, interrupted.
 FosResult find_factor_of_safety(const FosSettings& settings, const TrialEvaluator& evaluate);
 
 }  // namespace dda

@@ -254,6 +254,55 @@ TEST_CASE("a failing trial slides at the closed-form acceleration of its reduced
   CHECK(t.largest_displacement == Approx(0.5 * a * t.simulated_time * t.simulated_time).epsilon(1e-4));
 }
 
+TEST_CASE("a stopped trial has no verdict, and a search with one ends with the bracket of "
+          "the trials judged",
+          "[fos]") {
+  // A trial asked to stop after its third step ends there, marked interrupted, and counts
+  // as neither stable nor failing.
+  const Planar planar;
+  const World w = consolidated(planar);
+  const FosSettings s = resolve_fos_settings(w, FosSettings{});
+  int asked = 0;
+  const TrialResult t = run_trial(w, s, 1.3, [&asked] { return ++asked >= 3; });
+  CHECK(t.interrupted);
+  CHECK_FALSE(t.stable);
+  CHECK(t.verdict == "interrupted");
+  CHECK(t.steps == 3);
+  // Not started once the stop is asked: returned interrupted, with no step.
+  const std::vector<TrialResult> none =
+      run_trials(w, s, {1.1, 1.2}, {}, [] { return true; });
+  REQUIRE(none.size() == 2);
+  CHECK(none[1].factor == 1.2);
+  CHECK((none[0].interrupted && none[1].interrupted && none[1].steps == 0));
+
+  // A made-up threshold of 1.37 with one job: F = 1 stands, 2 fails, 1.5 fails; the round
+  // after that comes back interrupted. The search stops there, not found, with the bracket
+  // [1, 1.5] of the judged trials and the interrupted one kept in the list.
+  FosSettings one;
+  one.jobs = 1;
+  int rounds = 0;
+  const FosResult r = find_factor_of_safety(one, [&rounds](const std::vector<double>& factors) {
+    std::vector<TrialResult> out;
+    for (double f : factors) {
+      TrialResult tr;
+      tr.factor = f;
+      tr.stable = f < 1.37;
+      tr.interrupted = rounds == 3;
+      out.push_back(tr);
+    }
+    ++rounds;
+    return out;
+  });
+  CHECK(r.interrupted);
+  CHECK_FALSE(r.found);
+  REQUIRE(r.has_bracket);
+  CHECK(r.last_stable == 1.0);
+  CHECK(r.first_failing == 1.5);
+  CHECK(r.trials.size() == 4);
+  CHECK(r.trials.back().interrupted);
+  CHECK_THAT(r.message, Catch::Contains("after 3 judged trials"));
+}
+
 TEST_CASE("a failing static trial moves a dt^2 / 2 a step, and a damped one its steady speed",
           "[fos]") {
   // The same block at F = 1.3. A static trial (dynamic coefficient 0, the default) starts
@@ -332,6 +381,41 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   const json none_report = json::parse(test::read_file(dir.path / "none" / "report.json"));
   CHECK(none_report.at("factor_of_safety").is_null());
   CHECK_THAT(none.output, Catch::Contains("no trial failed up to F"));
+}
+
+TEST_CASE("dda fos stopped by SIGINT writes the report of the trials so far, marked "
+          "interrupted",
+          "[fos][cli]") {
+  // A tolerance of 1e-6 asks for some twenty rounds of trials; the signal lands once the
+  // first trial's line is out. The running trial stops at its next step, and the report
+  // keeps every judged trial (a 2000-block search lost 571 s of trials to Ctrl-C before).
+  const test::TempDir dir("dda-fos-");
+  const Planar planar;
+  test::write_file(dir.path / "planar.json", planar.scene_text());
+  const std::filesystem::path log = dir.path / "err.txt";
+  const std::string command = std::string(DDA_EXE) + " fos " +
+                              test::shell_quote((dir.path / "planar.json").string()) +
+                              " --jobs 1 --tolerance 1e-6 --out " +
+                              test::shell_quote((dir.path / "out").string()) + " 2> " +
+                              test::shell_quote(log.string());
+  const std::string f = test::shell_quote(log.string());
+  // Waits (at most 60 s) for a line naming a trial, then sends SIGINT and reports the exit code.
+  const auto r = test::run_command(
+      "(" + command + " & pid=$!; n=0; while [ $n -lt 1200 ] && ! grep -q 'trial F' " + f +
+      " 2>/dev/null; do sleep 0.05; n=$((n+1)); done; kill -INT $pid; wait $pid; echo rc=$?)");
+  const std::string err = test::read_file(log);
+  INFO(r.output << err);
+  CHECK_THAT(r.output, Catch::Contains("rc=130"));  // 128 + SIGINT, as a shell reports it
+  CHECK_THAT(err, Catch::Contains("interrupted (signal 2) after"));
+  const json report = json::parse(test::read_file(dir.path / "out" / "report.json"));
+  CHECK(report.at("interrupted").get<bool>());
+  CHECK_FALSE(report.at("found").get<bool>());
+  CHECK(report.at("factor_of_safety").is_null());
+  int judged = 0;
+  for (const auto& t : report.at("trials")) judged += t.at("interrupted").get<bool>() ? 0 : 1;
+  CHECK(judged >= 1);
+  CHECK_THAT(test::read_file(dir.path / "out" / "report.md"), Catch::Contains("interrupted (signal 2)"));
+  CHECK_FALSE(std::filesystem::exists(dir.path / "out" / "report.json.tmp"));
 }
 
 TEST_CASE("trials run on two threads give exactly what they give one at a time", "[fos]") {

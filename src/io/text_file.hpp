@@ -1,0 +1,13 @@
+// Writing a whole text file so that nothing is ever left half written under its final name.
+#pragma once
+
+#include <string>
+
+namespace dda {
+
+// Writes `text` to `path` through a temporary file (path + ".tmp") and a rename: a reader,
+// or a run that dies half-way, sees the old file or the new one, never a part. Throws
+// std::runtime_error naming the file when it cannot.
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace dda
