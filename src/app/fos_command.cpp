@@ -57,7 +57,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     throw InputError(
         "fos: no scene given (dda fos SCENE.json --out DIR; see docs/factor-of-safety.md)");
   }
-  const Scene scene = read_scene_file(scene_path);
+  const Scene scene = with_seismic_coefficient(read_scene_file(scene_path), settings.seismic_coefficient);
   for (const std::string& warning : scene.warnings) std::cerr << "dda: warning: " << warning << "\n";
   bool any_free = false;
   for (const BlockSpec& b : scene.blocks) any_free = any_free || !b.fixed;

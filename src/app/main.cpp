@@ -200,6 +200,10 @@ int main(int argc, char** argv) {
                       "Consolidate with the joints' strengths divided by this (e.g. 0.5 for a "
                       "slope whose factor is below 1)")->capture_default_str()
       ->check(CLI::Range(1e-3, 1.0));
+  fos_app->add_option("--seismic-coefficient", fos.seismic_coefficient,
+                      "Pseudo-static horizontal body force, as a share of the weight, along +x "
+                      "(negative: along -x)")->capture_default_str()
+      ->check(CLI::Range(-1.0, 1.0));
 
   std::string model_path;
   std::string scene_out = "scene.json";

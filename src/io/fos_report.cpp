@@ -87,6 +87,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         {"dynamic_coefficient", s.dynamic_coefficient},
         {"reduce_materials", s.reduce_materials},
         {"jobs", s.jobs},
+        {"seismic_coefficient", s.seismic_coefficient},
         {"watched", scene.monitors.empty() ? "free block centroids" : "monitors"}}},
       {"joint_laws", laws},
       {"consolidation",
@@ -114,7 +115,12 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   md << "Strength reduction: tan(phi)/F, c/F and tensile strength/F on every joint"
      << (s.reduce_materials ? " and on plastic blocks' materials" : "") << ". Joint laws:";
   for (const JointMaterial& j : scene.joint_materials) md << " " << j.name << " (" << joint_law_name(j.law) << ")";
-  md << ".\n\nEach trial starts at rest from the scene consolidated at F = 1 ("
+  md << ".";
+  if (s.seismic_coefficient != 0.0) {
+    md << " Seismic coefficient " << general(s.seismic_coefficient)
+       << " (a horizontal body force of that share of the weight along +x, from the consolidation on).";
+  }
+  md << "\n\nEach trial starts at rest from the scene consolidated at F = 1 ("
      << consolidation.steps << " steps, " << general(consolidation.time) << " s simulated) and runs "
      << general(s.trial_time) << " s with dynamic coefficient " << general(s.dynamic_coefficient)
      << ". It fails when a watched point ("

@@ -98,6 +98,11 @@ MaterialParameters reduced_material(const MaterialParameters& m, double factor) 
   return r;
 }
 
+Scene with_seismic_coefficient(Scene scene, double kh) {
+  scene.gravity.x() += kh * scene.gravity.norm();
+  return scene;
+}
+
 Consolidation consolidate(const Scene& scene, double factor, const StepObserver& observe) {
   assert(factor > 0.0);
   auto reduce = [factor](JointMaterial& j) {

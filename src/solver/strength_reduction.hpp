@@ -60,7 +60,17 @@ struct FosSettings {
   // A slope whose factor is below 1 cannot come to rest at full strength; consolidating it
   // at, say, 0.5 (double strength) gives the trials a state at rest. Range (0, 1].
   double consolidation_factor = 1.0;
+  // Pseudo-static earthquake load: a horizontal body force of this share of each block's
+  // weight, along +x (negative: along -x; give the sign that points out of the slope), as
+  // limit-equilibrium programs apply a seismic coefficient. It acts from the consolidation
+  // on (with_seismic_coefficient). Range [-1, 1].
+  double seismic_coefficient = 0.0;
 };
+
+// The scene with the seismic coefficient kh as part of its gravity: g + kh |g| x (a
+// constant body force, so the energy account books it as it books gravity, and a stage's
+// gravity ramp ramps both).
+Scene with_seismic_coefficient(Scene scene, double kh);
 
 // What one trial found.
 struct TrialResult {

@@ -228,6 +228,39 @@ TEST_CASE("an uplift on the sliding plane lowers the factor as limit equilibrium
   CHECK(std::abs(r.factor_of_safety - planar.le_factor()) <= 0.5 * s.tolerance + resolution);
 }
 
+TEST_CASE("a seismic coefficient lowers the factor of a block on a plane as limit equilibrium "
+          "says",
+          "[fos]") {
+  // The plane rises towards +x, so the block slides towards -x: kh = -0.1 pushes it out of
+  // the slope. Resolving kh W along and across the plane,
+  // FS = (c L + W (cos 30 - 0.1 sin 30) tan 30) / (W (sin 30 + 0.1 cos 30)) = 0.9736.
+  const Planar planar;
+  const double kh = 0.1, psi = deg(30.0);
+  const double le = (1e5 + 1e6 * (std::cos(psi) - kh * std::sin(psi)) * std::tan(psi)) /
+                    (1e6 * (std::sin(psi) + kh * std::cos(psi)));
+  REQUIRE(le == Approx(0.9736).margin(1e-4));
+  // Its factor is below 1: consolidated at double strength (docs/factor-of-safety.md), as
+  // verification/slope's cases below 1 are.
+  const Consolidation c =
+      consolidate(with_seismic_coefficient(parse_scene_text(planar.scene_text(), "planar"), -kh),
+                  0.5, [](const World&, const RunStats&) { return true; });
+  REQUIRE_FALSE(c.stats.diverged);
+  const World& w = c.world;
+  FosSettings settings;
+  settings.seismic_coefficient = -kh;
+  const FosSettings s = resolve_fos_settings(w, settings);
+  const FosResult r = find_factor_of_safety(s, [&](const std::vector<double>& factors) {
+    return run_trials(w, s, factors, {});
+  });
+  REQUIRE(r.found);
+  // The dry case's budget (bracket half-width plus the verdict's resolution), with the
+  // block's driving acceleration g (sin 30 + kh cos 30) instead of g sin 30.
+  const double resolution = le * 2.0 * s.detect_acceleration / (std::sin(psi) + kh * std::cos(psi));
+  INFO("F = " << r.factor_of_safety << ", LE " << le);
+  CHECK(std::abs(r.factor_of_safety - le) <= 0.5 * s.tolerance + resolution);
+  CHECK(r.factor_of_safety > le - 0.5 * s.tolerance);  // never below LE beyond the bracket
+}
+
 TEST_CASE("a failing trial slides at the closed-form acceleration of its reduced strength",
           "[fos]") {
   // At F = 1.3 the reduced resistance (500 + 100) / 1.3 kN falls short of the driving 500 kN
