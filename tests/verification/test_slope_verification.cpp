@@ -125,12 +125,13 @@ TEST_CASE("DDA strength reduction finds Goodman and Bray's toppling factor with 
   }
 }
 
-TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the planar block, the "
+TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the planar block (dry, "
+          "with uplift, with a seismic coefficient), the "
           "tension-crack slope dry and with water, and the active-passive wedges",
           "[slope]") {
   // Each about 0.2 s in the release build (rigid blocks; 12 trials on 2 threads).
   const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
-  for (const char* name : {"planar_c10", "planar_uplift", "hoek_bray_dry", "hoek_bray_half",
+  for (const char* name : {"planar_c10", "planar_uplift", "planar_seismic", "hoek_bray_dry", "hoek_bray_half",
                            "hoek_bray_full", "wedge_smooth", "wedge_rough"}) {
     const SlopeCase& c = find_case(cases, name);
     const CaseResult r = run_case(c, RunOptions{}, {});

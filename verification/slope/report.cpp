@@ -15,6 +15,11 @@ using json = nlohmann::json;
 using verification::fixed;
 using verification::full;
 
+// A case's published factor to its precision, or "–" for a case no one published.
+std::string published(const SlopeCase& c) {
+  return c.published > 0.0 ? fixed(c.published, c.published_decimals) : "–";
+}
+
 std::string status(const CaseResult& r) {
   if (r.skipped) return "skipped";
   if (!r.found) return "no factor";
@@ -40,7 +45,7 @@ json case_json(const SlopeCase& c, const CaseResult& r) {
   json j = {{"name", c.name},
             {"title", c.title},
             {"le_factor", c.le_factor},
-            {"published_factor", c.published},
+            {"published_factor", c.published > 0.0 ? json(c.published) : json(nullptr)},
             {"resolution", c.resolution},
             {"status", status(r)},
             {"note", r.note},
@@ -92,8 +97,7 @@ std::string markdown(const RunInfo& info, const std::vector<SlopeCase>& cases,
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const SlopeCase& c = cases[i];
     const CaseResult& r = results[i];
-    md << "| " << c.name << " | " << fixed(c.le_factor, 4) << " | "
-       << fixed(c.published, c.published_decimals) << " | ";
+    md << "| " << c.name << " | " << fixed(c.le_factor, 4) << " | " << published(c) << " | ";
     if (r.found) {
       md << fixed(r.factor, 4) << " | [" << fixed(r.last_stable, 4) << ", " << fixed(r.first_failing, 4)
          << "] | " << fixed(r.error, 4) << " | " << fixed(r.allowed, 4);
@@ -149,8 +153,7 @@ std::string markdown(const RunInfo& info, const std::vector<SlopeCase>& cases,
 
 std::string case_line(const SlopeCase& c, const CaseResult& r) {
   std::ostringstream s;
-  s << c.name << ": LE " << fixed(c.le_factor, 4) << " (published "
-    << fixed(c.published, c.published_decimals) << ")";
+  s << c.name << ": LE " << fixed(c.le_factor, 4) << " (published " << published(c) << ")";
   if (r.skipped) {
     s << ", skipped: " << r.note;
   } else if (!r.found) {
@@ -175,7 +178,7 @@ std::string write_reports(const std::filesystem::path& dir, const RunInfo& info,
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const SlopeCase& c = cases[i];
     const CaseResult& r = results[i];
-    csv << c.name << ',' << full(c.le_factor) << ',' << full(c.published) << ',';
+    csv << c.name << ',' << full(c.le_factor) << ',' << (c.published > 0.0 ? full(c.published) : "") << ',';
     if (r.found) {
       csv << full(r.factor) << ',' << full(r.last_stable) << ',' << full(r.first_failing) << ','
           << full(r.error) << ',';

@@ -71,8 +71,11 @@ double resolution_of(Fn out_of_balance, double le, double moving_weight, double 
 // ---- case 1: one block on a plane at 30 degrees (Hoek & Bray 1981, ch. 7) ----
 // W = 1000 kN/m, base 10 m on the plane, 2500 kg/m^3: the block is W / (rho g L) thick.
 SlopeCase planar_case(const std::string& name, double cohesion_kpa, double uplift_kn,
-                      double published, double a_det) {
-  const PlaneBlock pb = planar_block(cohesion_kpa, uplift_kn);
+                      double published, double a_det, double seismic = 0.0) {
+  PlaneBlock pb = planar_block(cohesion_kpa, uplift_kn);
+  // A seismic coefficient kh pushes the block horizontally out of the face with kh W: the
+  // closed form's horizontal force V (its tension-crack water thrust).
+  pb.crack_push = seismic * pb.weight;
   SlopeCase c;
   c.name = name;
   c.published = published;
@@ -102,6 +105,11 @@ SlopeCase planar_case(const std::string& name, double cohesion_kpa, double uplif
     scene["water"] = {{"phreatic_line", {{a.x, a.y + hw}, {b.x, b.y + hw}}}, {"unit_weight", kWaterWeight}};
     c.needs_water = true;
     c.title += ", uplift U = " + std::to_string(static_cast<int>(uplift_kn)) + " kN/m";
+  }
+  if (seismic > 0.0) {
+    // The plane rises towards +x, so the face, and the way out of the slope, is towards -x.
+    c.seismic_coefficient = -seismic;
+    c.title += ", seismic coefficient " + std::to_string(seismic).substr(0, 4) + " out of the slope";
   }
   c.scene = scene.dump();
   return c;
@@ -301,6 +309,8 @@ std::vector<SlopeCase> all_cases(double a_det) {
   cases.push_back(planar_case("planar_c10", 10.0, 0.0, 1.200, a_det));
   cases.back().in_smoke = true;
   cases.push_back(planar_case("planar_uplift", 10.0, 200.0, 0.969, a_det));
+  // No published value: the closed form only (published 0 is printed as none).
+  cases.push_back(planar_case("planar_seismic", 10.0, 0.0, 0.0, a_det, 0.1));
   cases.push_back(hoek_bray_case("hoek_bray_dry", 0.0, 1.292, a_det));
   cases.back().in_smoke = true;
   cases.push_back(hoek_bray_case("hoek_bray_half", 7.0, 1.128, a_det));

@@ -28,6 +28,8 @@ struct SlopeCase {
   std::vector<int> columns;
   std::vector<std::string> le_modes;
   double limiting_friction = 0.0;  // degrees (toppling), 0 otherwise
+  // dda fos's --seismic-coefficient for the case (FosSettings::seismic_coefficient; 0: none).
+  double seismic_coefficient = 0.0;
 };
 
 // Every case, in report order. `detect_acceleration`: the trials' (FosSettings), which sets

@@ -85,7 +85,7 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
   const auto start = std::chrono::steady_clock::now();
   Scene scene;
   try {
-    scene = parse_scene_text(c.scene, c.name);
+    scene = with_seismic_coefficient(parse_scene_text(c.scene, c.name), c.seismic_coefficient);
   } catch (const InputError& e) {
     const std::string what = e.what();
     if (c.needs_water && what.find("water") != std::string::npos) {
@@ -115,6 +115,7 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
   settings.jobs = options.jobs;
   settings.tolerance = options.tolerance;
   settings.dynamic_coefficient = options.dynamic_coefficient;
+  settings.seismic_coefficient = c.seismic_coefficient;
   settings = resolve_fos_settings(world, settings);
   r.failure_displacement = settings.failure_displacement;
   r.trial_time = settings.trial_time;
