@@ -82,7 +82,8 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   }
   const World& world = consolidation.world;
   const ConsolidationInfo info{consolidation.stats.steps, world.time,
-                               consolidation.stats.wall_time_s, scene_energy(world).kinetic};
+                               consolidation.stats.wall_time_s, scene_energy(world).kinetic,
+                               consolidation.stats.bonds_broken, consolidation.stats.broken_bonds};
   settings = resolve_fos_settings(world, settings);
   const auto stop_message = [&](const std::string& when) {
     return "interrupted (signal " + std::to_string(interrupt_signal()) + ") " + when;
@@ -96,6 +97,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     std::cerr << "dda: " << none.message << "; report in " << out_dir << "\n";
     return interrupted_exit_code();
   }
+  std::cerr << "dda: the consolidation broke " << info.bonds_broken << " bonds\n";
   std::cerr << "dda: trials of " << settings.trial_time << " s, failing beyond "
             << settings.failure_displacement << " m, " << settings.jobs << " at once\n";
 

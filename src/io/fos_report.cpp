@@ -25,6 +25,15 @@ std::string general(double x) {
 }
 
 
+json broken_bonds_json(const std::vector<BrokenBond>& bonds) {
+  json out = json::array();
+  for (const BrokenBond& b : bonds) {
+    out.push_back({{"step", b.step}, {"time", b.time}, {"vertex_block", b.vertex_block},
+                   {"edge_block", b.edge_block}, {"x", b.at.x()}, {"y", b.at.y()}});
+  }
+  return out;
+}
+
 // What a trial decided: "stable", "failing", or "–" when it was interrupted (no verdict).
 std::string outcome(const TrialResult& t) {
   if (t.interrupted) return "–";
@@ -94,7 +103,9 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
        {{"steps", consolidation.steps},
         {"time", consolidation.time},
         {"wall_time_s", consolidation.wall_time_s},
-        {"kinetic_end", consolidation.kinetic_end}}},
+        {"kinetic_end", consolidation.kinetic_end},
+        {"bonds_broken", consolidation.bonds_broken},
+        {"broken_bonds", broken_bonds_json(consolidation.broken_bonds)}}},
       {"trials", trials},
       {"wall_time_s", wall_time_s},
   };
@@ -121,7 +132,8 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
        << " (a horizontal body force of that share of the weight along +x, from the consolidation on).";
   }
   md << "\n\nEach trial starts at rest from the scene consolidated at F = 1 ("
-     << consolidation.steps << " steps, " << general(consolidation.time) << " s simulated) and runs "
+     << consolidation.steps << " steps, " << general(consolidation.time) << " s simulated, "
+     << consolidation.bonds_broken << " bonds broken) and runs "
      << general(s.trial_time) << " s with dynamic coefficient " << general(s.dynamic_coefficient)
      << ". It fails when a watched point ("
      << (scene.monitors.empty() ? "the centroid of a free block" : "a monitor")

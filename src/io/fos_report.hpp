@@ -17,6 +17,9 @@ struct ConsolidationInfo {
   double time = 0.0;         // s, simulated
   double wall_time_s = 0.0;
   double kinetic_end = 0.0;  // J/m, left at its end (the trials start from rest)
+  // Bonds it broke, and where (RunStats::broken_bonds: the first 1000).
+  long bonds_broken = 0;
+  std::vector<BrokenBond> broken_bonds;
 };
 
 // Writes DIR/report.json and DIR/report.md (creating DIR). Throws std::runtime_error naming

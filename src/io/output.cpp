@@ -457,6 +457,7 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
                     {"modes_by_joint_material", modes}}},
       {"penalty_raises", stats.penalty_raises},
       {"augmentations", stats.augmentations},
+      {"bonds_broken", stats.bonds_broken},
       {"contact_solver", {{"line_searches_shortened", stats.line_searches_shortened},
                           {"unconverged_mismatch", stats.newton_unconverged_mismatch},
                           {"accepted_unconverged", stats.newton_accepted_unconverged},

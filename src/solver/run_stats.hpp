@@ -4,6 +4,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "kinematics/types.hpp"
 
 namespace dda {
 
@@ -15,6 +18,15 @@ struct StageTimes {
   double solve = 0;           // linear solves: CHOLMOD (kept factor, its updates, CG) or KLU
   double contact_update = 0;  // each contact's next mode after a solve
   double update = 0;          // configuration, stresses, velocities
+};
+
+// A bond that broke: at which step and time, between which blocks, and where (the vertex
+// of the contact, at the step's end).
+struct BrokenBond {
+  int step = 0;
+  double time = 0.0;
+  int vertex_block = -1, edge_block = -1;
+  Vec2 at = Vec2::Zero();
 };
 
 struct RunStats {
@@ -65,6 +77,11 @@ struct RunStats {
   // Contacts it held open for the rest of an attempt that was stuck with contacts solved
   // closed pulling (ContactNewton::hold_open_pulling).
   long newton_held_open = 0;
+  // Bonds broken in accepted steps (a contact bonded at a step's start and not at its end),
+  // and where: the first kBrokenBondsKept of them, in order.
+  long bonds_broken = 0;
+  std::vector<BrokenBond> broken_bonds;
+  static constexpr std::size_t kBrokenBondsKept = 1000;
   // finite_rotation: converged solves whose off secant angles were all of blocks touching
   // nothing, settled block by block instead of by one more solve (settle_free_secants).
   long local_secant_settles = 0;

@@ -810,6 +810,20 @@ void remember_step(World& world, double scheduled_dt, double first_dt, double dt
   memory.next = next < longest ? next : 0.0;
 }
 
+// The bonds the accepted step broke (bonded as the step entered, not at its end; the
+// contacts keep their order through a step), counted and placed in stats.
+void count_broken_bonds(const World& world, const std::vector<Contact>& at_start, RunStats& stats) {
+  for (std::size_t i = 0; i < at_start.size() && i < world.contacts.size(); ++i) {
+    const Contact& c = world.contacts[i];
+    if (!at_start[i].state.bonded || c.state.bonded) continue;
+    ++stats.bonds_broken;
+    if (stats.broken_bonds.size() >= RunStats::kBrokenBondsKept) continue;
+    const Block& b = world.blocks[static_cast<std::size_t>(c.key.vertex_block)];
+    stats.broken_bonds.push_back({world.step, world.time, c.key.vertex_block, c.key.edge_block,
+                                  b.vertices[static_cast<std::size_t>(c.key.vertex)]});
+  }
+}
+
 }  // namespace
 
 StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
@@ -897,6 +911,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     // 5-6. Commit the step.
     StepEnergy energy_terms;
     commit_step(world, loop.d, ctx, loop.iterations, stats, clock, energy_terms);
+    count_broken_bonds(world, contacts_at_start, stats);
     // 7. The energy guard: a step that leaves the run with more energy than loads put in
     //    (beyond the tolerance) ends it; the step is kept, so the output shows it.
     std::string gained = energy_guard_message(world, energy_terms, world.control.energy_tolerance);

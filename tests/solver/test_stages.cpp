@@ -345,6 +345,15 @@ TEST_CASE("stages: gravity at once breaks a cohesive block's bond, but consolida
     const RunStats stats = run_quietly(world);
     REQUIRE_FALSE(stats.diverged);
     CHECK(moved_down_slope(world, start) > kSlid);
+    // The run counts the bonds that broke and says where: the block's base, held by a
+    // bonded contact at each of its two base corners, lost both.
+    CHECK(stats.bonds_broken == 2);
+    REQUIRE(stats.broken_bonds.size() == 2);
+    for (const BrokenBond& b : stats.broken_bonds) {
+      CHECK(b.vertex_block + b.edge_block == 1);  // between the block (1) and the plane (0)
+      CHECK(b.step >= 1);
+      CHECK(b.time == Approx(b.step * kDynamicDt).epsilon(1e-9));
+    }
   }
 
   SECTION("a static stage ramps gravity up, then a dynamic one: the bond holds") {
@@ -362,6 +371,7 @@ TEST_CASE("stages: gravity at once breaks a cohesive block's bond, but consolida
       return true;
     });
     REQUIRE_FALSE(stats.diverged);
+    CHECK(stats.bonds_broken == 0);
     CHECK(world.stages.current == 1);
     CHECK(world.stages.start_steps == std::vector<int>{0, 50});
     CHECK(dynamic_steps_seen == 1000);
