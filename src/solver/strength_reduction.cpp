@@ -4,6 +4,7 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -429,9 +430,19 @@ FosResult find_factor_of_safety(const FosSettings& s, const TrialEvaluator& eval
     result.first_failing = *b.failing;
     result.factor_of_safety = 0.5 * (*b.stable + *b.failing);
     if (!b.monotone) {
-      result.message =
-          "a trial above the first failing factor was stable: the verdicts are not monotone in F "
-          "(the bracket is the lowest failing factor and the stable one below it)";
+      // Where: every stable trial above the lowest failing one, named by its F.
+      std::string above;
+      for (const TrialResult& t : result.trials) {
+        if (t.interrupted || !t.stable || t.factor < *b.failing) continue;
+        char f[32];
+        std::snprintf(f, sizeof f, "%.4f", t.factor);
+        above += (above.empty() ? "" : ", ") + std::string(f);
+      }
+      char failing[32];
+      std::snprintf(failing, sizeof failing, "%.4f", *b.failing);
+      result.message = "the verdicts are not monotone in F: stable at F = " + above +
+                       ", above the failing F = " + failing +
+                       " (the bracket is the lowest failing factor and the stable one below it)";
     }
   } else if (b.stable) {
     result.message = "no trial failed up to F = " + std::to_string(s.max_factor) +

@@ -176,6 +176,27 @@ TEST_CASE("the search brackets a made-up threshold within its tolerance and alwa
       CHECK(calls <= jobs * rounds);
     }
   }
+  // Verdicts not monotone (stable below 1.2 and between 1.6 and 1.7): with two jobs the
+  // round after 1 and 2 tries 1.3333 (failing) and 1.6667 (stable). The bracket is taken
+  // below the lowest failing F (1.2016 at the end), and the message names the stable trial
+  // above it.
+  {
+    FosSettings s;
+    const FosResult r = find_factor_of_safety(s, [](const std::vector<double>& factors) {
+      std::vector<TrialResult> out;
+      for (double f : factors) {
+        TrialResult t;
+        t.factor = f;
+        t.stable = f < 1.2 || (f > 1.6 && f < 1.7);
+        out.push_back(t);
+      }
+      return out;
+    });
+    REQUIRE(r.found);
+    CHECK(r.first_failing <= 1.2 + s.tolerance);
+    CHECK(r.last_stable < 1.2);
+    CHECK_THAT(r.message, Catch::Contains("stable at F = 1.6667, above the failing F = 1.20"));
+  }
   // Nothing fails up to max_factor, or everything fails down to min_factor: no factor, with
   // a message, after a bounded number of trials.
   for (double threshold : {1e9, 1e-9}) {
