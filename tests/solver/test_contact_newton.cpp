@@ -25,6 +25,32 @@ RunStats run_quietly(World& world) {
   return run(world, [](const World&, const RunStats&) { return true; });
 }
 
+// A 1 m square resting on a fixed 4 m floor, with the contacts of its two bottom corners on
+// the floor's top edge (`corners`), for checks of single Newton solves; v0: the slot of the
+// square's vertical translation.
+struct SquareOnFloor {
+  World world;
+  StepContext ctx;
+  int v0 = 0;
+  std::vector<Contact> corners;
+  SquareOnFloor() {
+    Scene s = test::base_scene(1, 0.01);
+    s.control.contact_solver = ContactSolver::Newton;
+    BlockSpec floor = test::block(test::rectangle(-2.0, -1.0, 4.0, 1.0));
+    floor.fixed = true;
+    s.blocks.push_back(floor);
+    s.blocks.push_back(test::block(test::rectangle(-0.5, 0.0, 1.0, 1.0)));
+    world = make_world(s);
+    detect_contacts(world, world.contacts);
+    ctx.dt = 0.01;
+    ctx.penalty = world.penalty;
+    v0 = world.blocks[1].first_dof + kV0;
+    for (const Contact& c : world.contacts) {
+      if (c.key.vertex_block == 1 && c.key.edge_block == 0) corners.push_back(c);
+    }
+  }
+};
+
 }  // namespace
 
 TEST_CASE("both contact solvers slide a block down an incline at the closed-form acceleration",
@@ -284,24 +310,13 @@ TEST_CASE("the Newton check tells a normal force undecided on a contact solved o
   // mismatch that pushes nothing.
   // Solved closed while the increments lift it 1e-6 m, each corner's solved force would pull:
   // a normal mismatch on a contact solved closed, which an accepted attempt may not leave.
-  Scene s = test::base_scene(1, 0.01);
-  s.control.contact_solver = ContactSolver::Newton;
-  BlockSpec floor = test::block(test::rectangle(-2.0, -1.0, 4.0, 1.0));
-  floor.fixed = true;
-  s.blocks.push_back(floor);
-  s.blocks.push_back(test::block(test::rectangle(-0.5, 0.0, 1.0, 1.0)));
-  World world = make_world(s);
-  detect_contacts(world, world.contacts);
-  StepContext ctx;
-  ctx.dt = 0.01;
-  ctx.penalty = world.penalty;
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(world.dof_count);
-  const int v0 = world.blocks[1].first_dof + kV0;
-  std::vector<Contact> corners;
-  for (const Contact& c : world.contacts) {
-    if (c.key.vertex_block == 1 && c.key.edge_block == 0) corners.push_back(c);
-  }
+  SquareOnFloor sq;
+  World& world = sq.world;
+  const StepContext& ctx = sq.ctx;
+  const int v0 = sq.v0;
+  const std::vector<Contact>& corners = sq.corners;
   REQUIRE(corners.size() == 2);
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(world.dof_count);
   const auto check_with = [&](ContactMode mode, double lift) {
     std::vector<Contact> contacts = corners;
     for (Contact& c : contacts) c.state.mode = mode;
@@ -328,25 +343,13 @@ TEST_CASE("a contact held open stays open and pushes nothing, however far the in
   // increments that push the square 1e-6 m into the floor leave them open, with no force,
   // and the check counts them apart from the mismatches (their decision is final; the
   // step's overshoot and penetration checks judge how far they went in).
-  Scene s = test::base_scene(1, 0.01);
-  s.control.contact_solver = ContactSolver::Newton;
-  BlockSpec floor = test::block(test::rectangle(-2.0, -1.0, 4.0, 1.0));
-  floor.fixed = true;
-  s.blocks.push_back(floor);
-  s.blocks.push_back(test::block(test::rectangle(-0.5, 0.0, 1.0, 1.0)));
-  World world = make_world(s);
-  detect_contacts(world, world.contacts);
-  StepContext ctx;
-  ctx.dt = 0.01;
-  ctx.penalty = world.penalty;
-  const int v0 = world.blocks[1].first_dof + kV0;
-  std::vector<Contact> corners;
-  for (const Contact& c : world.contacts) {
-    if (c.key.vertex_block == 1 && c.key.edge_block == 0) corners.push_back(c);
-  }
+  SquareOnFloor sq;
+  const World& world = sq.world;
+  const int v0 = sq.v0;
+  std::vector<Contact> corners = sq.corners;
   REQUIRE(corners.size() == 2);
   for (Contact& c : corners) c.state.mode = ContactMode::Lock;
-  ContactNewton newton(world, corners, ctx);
+  ContactNewton newton(world, corners, sq.ctx);
   Eigen::VectorXd d = Eigen::VectorXd::Zero(world.dof_count);
 
   // Pushed in, nothing pulls: nothing to hold.
