@@ -1,12 +1,7 @@
 #include "io/cut_scene.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <set>
-#include <stdexcept>
 
 namespace dda {
 namespace {

@@ -24,7 +24,6 @@ std::string general(double x) {
   return buf;
 }
 
-
 json broken_bonds_json(const std::vector<BrokenBond>& bonds) {
   json out = json::array();
   for (const BrokenBond& b : bonds) {

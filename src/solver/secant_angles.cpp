@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace dda {
 
@@ -24,16 +25,18 @@ int follow_secant_angles(const World& world, const std::vector<Contact>& contact
                          const Eigen::VectorXd& d, std::vector<double>& angles,
                          std::vector<int>* off) {
   if (off != nullptr) off->clear();
+  // kSecantContactShare of each block's smallest allowance among its closed contacts
+  // (infinite for a block in none), never below the free blocks' tolerance.
   const double strict = kSecantDisplacementShare * world.w0;
-  std::vector<double> tolerance(world.blocks.size(), strict);
+  std::vector<double> tolerance(world.blocks.size(), std::numeric_limits<double>::infinity());
   for (const Contact& c : contacts) {
     if (c.state.mode == ContactMode::Open || !(c.allowed_penetration > 0.0)) continue;
-    const double in_contact = std::max(strict, kSecantContactShare * c.allowed_penetration);
     for (const int block : {c.key.vertex_block, c.key.edge_block}) {
       double& t = tolerance[static_cast<std::size_t>(block)];
-      t = t == strict ? in_contact : std::min(t, in_contact);
+      t = std::min(t, kSecantContactShare * c.allowed_penetration);
     }
   }
+  for (double& t : tolerance) t = std::isinf(t) ? strict : std::max(strict, t);
   int moved = 0;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
