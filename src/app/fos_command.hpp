@@ -1,11 +1,11 @@
 // `dda fos SCENE.json --out DIR` (issue 11): consolidate the scene, search for its factor of
-// safety by strength reduction (solver/strength_reduction.hpp), write the report and the
+// safety by strength reduction (studies/strength_reduction.hpp), write the report and the
 // pictures of the mechanism (docs/factor-of-safety.md).
 #pragma once
 
 #include <string>
 
-#include "solver/strength_reduction.hpp"
+#include "studies/strength_reduction.hpp"
 
 namespace dda {
 

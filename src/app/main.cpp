@@ -21,7 +21,7 @@
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
 #include "solver/step.hpp"
-#include "solver/strength_reduction.hpp"
+#include "studies/strength_reduction.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "solver/scene.hpp"
-#include "solver/strength_reduction.hpp"
+#include "studies/strength_reduction.hpp"
 
 namespace dda {
 

@@ -10,7 +10,7 @@
 #include "limit_equilibrium.hpp"
 #include "slope_cases.hpp"
 #include "slope_run.hpp"
-#include "solver/strength_reduction.hpp"
+#include "studies/strength_reduction.hpp"
 
 namespace {
 

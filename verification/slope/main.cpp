@@ -16,7 +16,7 @@
 #include "report.hpp"
 #include "slope_cases.hpp"
 #include "slope_run.hpp"
-#include "solver/strength_reduction.hpp"
+#include "studies/strength_reduction.hpp"
 
 namespace {
 

@@ -62,7 +62,7 @@ void add_block(json& scene, const std::vector<P>& vertices, bool fixed) {
 
 // The verdict's resolution: how far beyond `le` the out-of-balance force reaches
 // 2 a_det x the moving weight (on one plane: F - FS = FS x 2 a_det / sin(dip) to first order,
-// the rule of tests/solver/test_strength_reduction.cpp).
+// the rule of tests/studies/test_strength_reduction.cpp).
 template <class Fn>
 double resolution_of(Fn out_of_balance, double le, double moving_weight, double a_det) {
   return factor_at_out_of_balance(out_of_balance, 2.0 * a_det * moving_weight, le, 3.0 * le) - le;

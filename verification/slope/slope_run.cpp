@@ -7,7 +7,7 @@
 
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
-#include "solver/strength_reduction.hpp"
+#include "studies/strength_reduction.hpp"
 #include "solver/world.hpp"
 #include "contact/contact.hpp"
 

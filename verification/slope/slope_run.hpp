@@ -1,5 +1,5 @@
 // One slope case through DDA: the scene parsed, consolidated at F = 1 (its static stage), the
-// strength-reduction search (solver/strength_reduction.hpp), and what the first failing trial
+// strength-reduction search (studies/strength_reduction.hpp), and what the first failing trial
 // shows of the mechanism. Shared by dda_verify_slope and the tests.
 #pragma once
 

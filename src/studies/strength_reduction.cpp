@@ -1,4 +1,4 @@
-#include "solver/strength_reduction.hpp"
+#include "studies/strength_reduction.hpp"
 
 #include <algorithm>
 #include <cassert>

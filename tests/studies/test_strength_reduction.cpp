@@ -11,7 +11,7 @@
 #include "contact/joint_law.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
-#include "solver/strength_reduction.hpp"
+#include "studies/strength_reduction.hpp"
 #include "solver/world.hpp"
 #include "support/material_builders.hpp"
 
