@@ -12,6 +12,7 @@
 #include "io/scene_reader.hpp"
 #include "solver/energy.hpp"
 #include "solver/run.hpp"
+#include "studies/limit_analysis.hpp"
 
 namespace dda {
 namespace {
@@ -52,7 +53,11 @@ void write_mechanism_picture(const std::filesystem::path& path, const World& con
 
 }  // namespace
 
-int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings) {
+int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,
+                const std::string& method) {
+  if (method != "strength-reduction" && method != "limit-analysis") {
+    throw InputError("fos: --method: must be strength-reduction or limit-analysis, got " + method);
+  }
   if (scene_path.empty()) {
     throw InputError(
         "fos: no scene given (dda fos SCENE.json --out DIR; see docs/factor-of-safety.md)");
@@ -98,6 +103,25 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     return interrupted_exit_code();
   }
   std::cerr << "dda: the consolidation broke " << info.bonds_broken << " bonds\n";
+
+  // The second factor, from the same consolidated blocks: rigid-block limit analysis, and
+  // each free block's own bound.
+  LimitAnalysisInfo limit;
+  limit.method = method;
+  LimitAnalysisSettings la_settings;
+  la_settings.min_factor = settings.min_factor;
+  la_settings.max_factor = settings.max_factor;
+  limit.analysis = limit_analysis(world, la_settings);
+  if (limit.analysis.computed) limit.single_block_bounds = single_block_bounds(world, la_settings);
+  std::cerr << "dda: " << limit_analysis_line(limit) << "\n";
+  if (method == "limit-analysis") {
+    FosResult none;
+    none.message = "strength reduction not run (--method limit-analysis)";
+    write_fos_report(out_dir, scene, settings, info, none,
+                     consolidation.stats.wall_time_s + limit.analysis.wall_time_s, &limit);
+    std::cerr << "dda: report in " << out_dir << "\n";
+    return limit.analysis.found ? kExitOk : kExitNoFactor;
+  }
   std::cerr << "dda: trials of " << settings.trial_time << " s, failing beyond "
             << settings.failure_displacement << " m, " << settings.jobs << " at once\n";
 
@@ -112,12 +136,34 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   if (result.interrupted) {
     FosResult kept = result;
     kept.message = stop_message(result.message);
-    write_fos_report(out_dir, scene, settings, info, kept, wall);
+    write_fos_report(out_dir, scene, settings, info, kept, wall, &limit);
     std::cerr << "dda: " << kept.message << "; report of the trials so far in " << out_dir
               << " (report.json: \"interrupted\": true)\n";
     return interrupted_exit_code();
   }
-  write_fos_report(out_dir, scene, settings, info, result, wall);
+  FosResult reported = result;
+  if (result.found) {
+    // The search's factor beside the bounds it may not exceed (the smallest single-block
+    // bound) and the associative limit analysis it should not exceed.
+    std::string note;
+    if (!limit.single_block_bounds.empty() &&
+        result.last_stable > limit.single_block_bounds.front().factor) {
+      note = "stable trials above the smallest single-block bound F = " +
+             format(limit.single_block_bounds.front().factor, "%.4f") + " (block " +
+             std::to_string(limit.single_block_bounds.front().block) +
+             "): a trial held a block its own strength cannot hold, so the factor is not "
+             "trustworthy";
+    } else if (limit.analysis.found && result.last_stable > limit.analysis.upper) {
+      note = "stable trials above the limit-analysis factor F = " +
+             format(limit.analysis.factor, "%.4f") +
+             ", which associative friction makes an upper bound for rigid blocks";
+    }
+    if (!note.empty()) {
+      reported.message += (reported.message.empty() ? "" : "; ") + note;
+      std::cerr << "dda: warning: " << note << "\n";
+    }
+  }
+  write_fos_report(out_dir, scene, settings, info, reported, wall, &limit);
   if (!result.found) {
     std::cerr << "dda: error: no factor of safety: " << result.message << "; trials in "
               << out_dir << "/report.json\n";

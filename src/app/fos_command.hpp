@@ -12,6 +12,9 @@ namespace dda {
 // Returns the exit code: 0 with a factor, 3 without one or when the consolidation diverged.
 // Throws InputError for a bad scene (exit 2) and std::runtime_error when the report cannot
 // be written (exit 1).
-int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings);
+// `method`: "strength-reduction" (the search, with the limit analysis beside it) or
+// "limit-analysis" (the consolidation and the limit analysis only).
+int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,
+                const std::string& method = "strength-reduction");
 
 }  // namespace dda

@@ -173,6 +173,7 @@ int main(int argc, char** argv) {
   std::string fos_scene;
   std::string fos_dir = "dda-fos";
   dda::FosSettings fos;
+  std::string fos_method = "strength-reduction";
   CLI::App* fos_app = app.add_subcommand(
       "fos", "Factor of safety by strength reduction (docs/factor-of-safety.md)");
   fos_app->add_option("scene", fos_scene, "Scene file (JSON, see docs/scene-format.md)");
@@ -200,6 +201,11 @@ int main(int argc, char** argv) {
                       "Consolidate with the joints' strengths divided by this (e.g. 0.5 for a "
                       "slope whose factor is below 1)")->capture_default_str()
       ->check(CLI::Range(1e-3, 1.0));
+  fos_app->add_option("--method", fos_method,
+                      "strength-reduction (the search, with the limit analysis beside it) or "
+                      "limit-analysis (that alone; docs/limit-analysis.md)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"strength-reduction", "limit-analysis"}));
   fos_app->add_option("--seismic-coefficient", fos.seismic_coefficient,
                       "Pseudo-static horizontal body force, as a share of the weight, along +x "
                       "(negative: along -x)")->capture_default_str()
@@ -227,7 +233,7 @@ int main(int argc, char** argv) {
     if (cut->parsed()) require_output_path(scene_out, "cut");
     if (run->parsed()) return run_command(scene_path, out_dir);
     if (point->parsed()) return material_point_command(spec_path, csv_file);
-    if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos);
+    if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_method);
     if (cut->parsed()) return dda::cut_command(model_path, scene_out);
   } catch (const dda::InputError& e) {
     std::cerr << "dda: error: " << e.what() << "\n";

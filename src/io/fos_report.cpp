@@ -57,15 +57,71 @@ json trial_json(const TrialResult& t) {
 
 }  // namespace
 
+// The report lists the fastest blocks of the limit analysis's mechanism and the smallest
+// single-block bounds, not all of them (a 2000-block slope has as many bounds).
+constexpr std::size_t kReportedMechanismBlocks = 200;
+constexpr std::size_t kReportedBounds = 20;
+
 std::string trial_line(const TrialResult& t) {
   return "trial F = " + fixed(t.factor, 4) + ": " + outcome(t) + " (" + t.verdict +
          "), largest displacement " + general(t.largest_displacement) + " m, " +
          std::to_string(t.steps) + " steps, " + fixed(t.wall_time_s, 1) + " s";
 }
 
+namespace {
+
+// The report's "limit_analysis" object (docs/output-format.md, dda fos).
+json limit_analysis_json(const LimitAnalysisInfo& l) {
+  const LimitAnalysisResult& a = l.analysis;
+  json mechanism = json::array();
+  for (std::size_t i = 0; i < std::min<std::size_t>(a.mechanism.size(), kReportedMechanismBlocks); ++i) {
+    const MechanismMotion& m = a.mechanism[i];
+    mechanism.push_back({{"block", m.block},
+                         {"velocity", {m.velocity.x(), m.velocity.y()}},
+                         {"angular_velocity", m.angular_velocity}});
+  }
+  json bounds = json::array();
+  for (std::size_t i = 0; i < std::min<std::size_t>(l.single_block_bounds.size(), kReportedBounds); ++i) {
+    bounds.push_back({{"block", l.single_block_bounds[i].block}, {"factor", l.single_block_bounds[i].factor}});
+  }
+  return {{"computed", a.computed},
+          {"reason", a.reason},
+          {"found", a.found},
+          {"factor", a.found ? json(a.factor) : json(nullptr)},
+          {"bracket", a.found ? json::array({a.factor, a.upper}) : json(nullptr)},
+          {"admissible_at_max_factor", a.admissible_at_max},
+          {"free_blocks", a.free_blocks},
+          {"contacts", a.contacts},
+          {"programs", a.programs},
+          {"wall_time_s", a.wall_time_s},
+          {"mechanism_blocks", a.mechanism.size()},
+          {"mechanism", mechanism},
+          {"single_block_bounds", bounds}};
+}
+
+}  // namespace
+
+std::string limit_analysis_line(const LimitAnalysisInfo& l) {
+  const LimitAnalysisResult& a = l.analysis;
+  std::string line = "limit analysis (rigid blocks, associative friction): ";
+  if (!a.computed) return line + "not computed: " + a.reason;
+  if (a.found) {
+    line += "F = " + fixed(a.factor, 4) + ", " + std::to_string(a.mechanism.size()) +
+            " blocks in its mechanism";
+  } else {
+    line += a.admissible_at_max ? "admissible up to the largest F" : "not admissible at the smallest F";
+  }
+  line += " (" + std::to_string(a.programs) + " linear programs, " + fixed(a.wall_time_s, 1) + " s)";
+  if (!l.single_block_bounds.empty()) {
+    line += "; smallest single-block bound F = " + fixed(l.single_block_bounds.front().factor, 4) +
+            " (block " + std::to_string(l.single_block_bounds.front().block) + ")";
+  }
+  return line;
+}
+
 void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
                       const FosSettings& s, const ConsolidationInfo& consolidation,
-                      const FosResult& result, double wall_time_s) {
+                      const FosResult& result, double wall_time_s, const LimitAnalysisInfo* limit) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
@@ -74,7 +130,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   for (const JointMaterial& j : scene.joint_materials) laws[j.name] = joint_law_name(j.law);
   json trials = json::array();
   for (const TrialResult& t : result.trials) trials.push_back(trial_json(t));
-  const json report = {
+  json report = {
       {"scene", scene.source},
       {"found", result.found},
       {"factor_of_safety", result.found ? json(result.factor_of_safety) : json(nullptr)},
@@ -108,6 +164,10 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
       {"trials", trials},
       {"wall_time_s", wall_time_s},
   };
+  if (limit != nullptr) {
+    report["method"] = limit->method;
+    report["limit_analysis"] = limit_analysis_json(*limit);
+  }
   write_text_file((dir / "report.json").string(), report.dump(2) + "\n");
 
   std::ostringstream md;
@@ -149,6 +209,22 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
     md << "| " << fixed(t.factor, 4) << " | " << outcome(t) << " | "
        << t.verdict << " | " << general(t.largest_displacement) << " | " << general(t.end_speed)
        << " | " << general(t.end_speed_limit) << " | " << t.steps << " | " << fixed(t.wall_time_s, 2) << " |\n";
+  }
+  if (limit != nullptr) {
+    md << "\n## A second factor: rigid-block limit analysis\n\n" << limit_analysis_line(*limit)
+       << ".\n\nThe consolidated blocks taken as rigid, their closed contacts as the points "
+          "where they press on each other, the joints' strengths divided by F, associative "
+          "friction (docs/limit-analysis.md). A single-block bound is the factor of one block "
+          "moving while every other block is held: the slope's factor cannot exceed the "
+          "smallest.\n";
+    if (!limit->analysis.mechanism.empty()) {
+      md << "\n| block | velocity x | velocity y | angular velocity (1/m) |\n|---|---|---|---|\n";
+      for (std::size_t i = 0; i < std::min<std::size_t>(limit->analysis.mechanism.size(), 20); ++i) {
+        const MechanismMotion& m = limit->analysis.mechanism[i];
+        md << "| " << m.block << " | " << fixed(m.velocity.x(), 3) << " | " << fixed(m.velocity.y(), 3)
+           << " | " << general(m.angular_velocity) << " |\n";
+      }
+    }
   }
   md << "\nWall time " << fixed(wall_time_s, 1) << " s in all.\n";
   write_text_file((dir / "report.md").string(), md.str());

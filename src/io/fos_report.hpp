@@ -7,6 +7,7 @@
 #include <string>
 
 #include "solver/scene.hpp"
+#include "studies/limit_analysis.hpp"
 #include "studies/strength_reduction.hpp"
 
 namespace dda {
@@ -22,11 +23,23 @@ struct ConsolidationInfo {
   std::vector<BrokenBond> broken_bonds;
 };
 
+// The second factor beside the search: the rigid-block limit analysis of the consolidated
+// scene, and each free block's own bound (studies/limit_analysis.hpp).
+struct LimitAnalysisInfo {
+  std::string method;  // "strength-reduction" (the search, the analysis beside it) or "limit-analysis"
+  LimitAnalysisResult analysis;
+  std::vector<BlockBound> single_block_bounds;  // smallest first
+};
+
 // Writes DIR/report.json and DIR/report.md (creating DIR). Throws std::runtime_error naming
-// the path when it cannot.
+// the path when it cannot. `limit` may be null (the analysis was not reached).
 void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
                       const FosSettings& settings, const ConsolidationInfo& consolidation,
-                      const FosResult& result, double wall_time_s);
+                      const FosResult& result, double wall_time_s,
+                      const LimitAnalysisInfo* limit = nullptr);
+
+// One line on the limit analysis, as dda fos prints it.
+std::string limit_analysis_line(const LimitAnalysisInfo& limit);
 
 // One line per finished trial, as the progress shows it:
 // "trial F = 1.250: stable (came to rest), largest displacement 0.0021 m, 812 steps, 3.2 s".
