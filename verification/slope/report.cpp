@@ -52,6 +52,8 @@ json case_json(const SlopeCase& c, const CaseResult& r) {
             {"wall_time_s", r.wall_s},
             {"trials", r.trials}};
   if (c.limiting_friction > 0.0) j["limiting_friction_angle"] = c.limiting_friction;
+  j["la_factor"] = r.la_found ? json(r.la_factor) : json(nullptr);
+  if (!r.la_note.empty()) j["la_note"] = r.la_note;
   if (r.found) {
     j["dda_factor"] = r.factor;
     j["bracket"] = {r.last_stable, r.first_failing};
@@ -92,8 +94,8 @@ std::string markdown(const RunInfo& info, const std::vector<SlopeCase>& cases,
      << info.detect_acceleration << ") would (d/T in dynamic trials), or moves beyond the failure "
         "displacement. Allowed error = tolerance/2 + resolution (README \"Tolerances\"). Total "
         "wall time " << fixed(info.wall_s, 1) << " s.\n\n";
-  md << "| case | LE | published | DDA | bracket | error | allowed | status | wall (s) | trials |\n";
-  md << "|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "| case | LE | published | DDA | bracket | error | allowed | status | wall (s) | trials | limit analysis |\n";
+  md << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const SlopeCase& c = cases[i];
     const CaseResult& r = results[i];
@@ -104,7 +106,8 @@ std::string markdown(const RunInfo& info, const std::vector<SlopeCase>& cases,
     } else {
       md << "- | - | - | " << fixed(r.allowed, 4);
     }
-    md << " | " << status(r) << " | " << fixed(r.wall_s, 1) << " | " << r.trials << " |\n";
+    md << " | " << status(r) << " | " << fixed(r.wall_s, 1) << " | " << r.trials << " | "
+       << (r.la_found ? fixed(r.la_factor, 4) : std::string("-")) << " |\n";
   }
   md << "\n";
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -171,7 +174,7 @@ std::string write_reports(const std::filesystem::path& dir, const RunInfo& info,
                           const std::vector<SlopeCase>& cases, const std::vector<CaseResult>& results) {
   std::ostringstream csv;
   csv << "case,le_factor,published_factor,dda_factor,last_stable,first_failing,error,allowed_error,"
-         "status,wall_time_s,trials\n";
+         "status,wall_time_s,trials,la_factor\n";
   json report = {{"smoke", info.smoke}, {"tolerance", info.tolerance}, {"jobs", info.jobs}, {"dynamic_coefficient", info.dynamic_coefficient},
                  {"detect_acceleration", info.detect_acceleration}, {"wall_time_s", info.wall_s},
                  {"cases", json::array()}};
@@ -185,7 +188,8 @@ std::string write_reports(const std::filesystem::path& dir, const RunInfo& info,
     } else {
       csv << ",,,,";
     }
-    csv << full(r.allowed) << ',' << status(r) << ',' << full(r.wall_s) << ',' << r.trials << '\n';
+    csv << full(r.allowed) << ',' << status(r) << ',' << full(r.wall_s) << ',' << r.trials << ','
+        << (r.la_found ? full(r.la_factor) : "") << '\n';
     report["cases"].push_back(case_json(c, r));
     if (!r.before.empty()) {
       const json mech = {{"case", c.name},           {"title", c.title},

@@ -7,6 +7,7 @@
 
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
+#include "studies/limit_analysis.hpp"
 #include "studies/strength_reduction.hpp"
 #include "solver/world.hpp"
 #include "contact/contact.hpp"
@@ -119,6 +120,12 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
   settings = resolve_fos_settings(world, settings);
   r.failure_displacement = settings.failure_displacement;
   r.trial_time = settings.trial_time;
+  // The second factor: rigid-block limit analysis of the same consolidated blocks.
+  const LimitAnalysisResult limit = limit_analysis(world, LimitAnalysisSettings{});
+  r.la_found = limit.found;
+  r.la_factor = limit.factor;
+  r.la_upper = limit.upper;
+  r.la_note = limit.computed ? "" : limit.reason;
   FosResult fos = find_factor_of_safety(settings, [&](const std::vector<double>& factors) {
     return run_trials(world, settings, factors, [&](const TrialResult& t) {
       if (progress) progress(trial_line(c.name, t));

@@ -39,6 +39,11 @@ struct CaseResult {
   double allowed = 0.0;     // tolerance / 2 + resolution
   bool pass = false;
   double wall_s = 0.0;      // consolidation and search
+  // Rigid-block limit analysis of the consolidated blocks (studies/limit_analysis.hpp):
+  // found, its bracket [la_factor, la_upper], or why it was not computed.
+  bool la_found = false;
+  double la_factor = 0.0, la_upper = 0.0;
+  std::string la_note;
   int trials = 0;
   double failure_displacement = 0.0, trial_time = 0.0;  // the resolved settings
   // The block outlines, consolidated and at the end of the first failing trial.
