@@ -1,6 +1,8 @@
 #include "app/fos_command.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -48,6 +50,41 @@ void write_mechanism_picture(const std::filesystem::path& path, const World& con
   options.title = what + ": F = " + format(t.factor, "%.4f") + ", " +
                   (t.stable ? "stable" : "failing") + " (" + t.verdict + ")";
   options.colour_bar = ColourBar{"displacement since the consolidation (m)", 0.0, largest};
+  write_block_picture(path.string(), blocks, options);
+}
+
+// The limit analysis's mechanism: every block where the consolidation left it (fixed ones
+// grey, free ones pale), then each moving block again, moved rigidly along its mechanism
+// velocity (v + omega x (p - c)) so that the fastest moves a quarter of a typical block's
+// size, coloured by its speed (viridis).
+void write_limit_analysis_picture(const std::filesystem::path& path, const World& world,
+                                  const LimitAnalysisResult& la) {
+  std::vector<double> areas;
+  for (const Block& b : world.blocks) {
+    if (!b.fixed) areas.push_back(b.moments.area);
+  }
+  if (areas.empty() || la.mechanism.empty()) return;
+  std::nth_element(areas.begin(), areas.begin() + static_cast<long>(areas.size() / 2), areas.end());
+  const double shown = 0.25 * std::sqrt(areas[areas.size() / 2]);
+  std::vector<PictureBlock> blocks;
+  for (const Block& b : world.blocks) {
+    blocks.push_back({b.vertices, b.fixed ? Rgb{190, 190, 190} : Rgb{235, 235, 235}});
+  }
+  for (auto it = la.mechanism.rbegin(); it != la.mechanism.rend(); ++it) {  // fastest on top
+    const Block& b = world.blocks[static_cast<std::size_t>(it->block)];
+    Polygon moved = b.vertices;
+    for (Vec2& p : moved) {
+      const Vec2 r = p - b.moments.centroid;
+      p += shown * (it->velocity + it->angular_velocity * Vec2(-r.y(), r.x()));
+    }
+    blocks.push_back({moved, sequential_colour(it->velocity.norm())});
+  }
+  PictureOptions options;
+  options.width_px = 1600;
+  options.title = "limit-analysis mechanism at F = " + format(la.upper, "%.4f") +
+                  " (rigid motion exaggerated: the fastest block moved " + format(shown, "%.3g") +
+                  " m)";
+  options.colour_bar = ColourBar{"speed, share of the fastest block's", 0.0, 1.0};
   write_block_picture(path.string(), blocks, options);
 }
 
@@ -114,11 +151,16 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   limit.analysis = limit_analysis(world, la_settings);
   if (limit.analysis.computed) limit.single_block_bounds = single_block_bounds(world, la_settings);
   std::cerr << "dda: " << limit_analysis_line(limit) << "\n";
+  const auto draw_limit_analysis = [&] {
+    write_limit_analysis_picture(std::filesystem::path(out_dir) / "limit_analysis.png", world,
+                                 limit.analysis);
+  };
   if (method == "limit-analysis") {
     FosResult none;
     none.message = "strength reduction not run (--method limit-analysis)";
     write_fos_report(out_dir, scene, settings, info, none,
                      consolidation.stats.wall_time_s + limit.analysis.wall_time_s, &limit);
+    draw_limit_analysis();
     std::cerr << "dda: report in " << out_dir << "\n";
     return limit.analysis.found ? kExitOk : kExitNoFactor;
   }
@@ -169,6 +211,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
               << out_dir << "/report.json\n";
     return kExitNoFactor;
   }
+  draw_limit_analysis();
   for (const TrialResult& t : result.trials) {
     if (t.factor == result.last_stable) {
       write_mechanism_picture(std::filesystem::path(out_dir) / "last_stable.png", world, t,

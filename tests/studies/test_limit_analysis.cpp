@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "../../verification/slope/slope_cases.hpp"
@@ -190,4 +191,5 @@ TEST_CASE("dda fos --method limit-analysis reports the second factor alone", "[l
   CHECK(la["bracket"][1].get<double>() >= le);
   CHECK(la["single_block_bounds"].size() == 1);
   CHECK(la["mechanism"].size() == 1);
+  CHECK(std::filesystem::file_size(dir.path / "out" / "limit_analysis.png") > 0);
 }
