@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 #include <unordered_map>
@@ -204,7 +202,10 @@ std::vector<ContactTerm> contact_terms(const World& world, const std::vector<cha
   const std::vector<JointLaw> laws = scene_joint_laws(world);
   std::vector<ContactTerm> out;
   for (const Contact& c : world.contacts) {
-    if (c.state.mode == ContactMode::Open) continue;
+    // Closed, or open by no more than the contact's allowed penetration: the resolution
+    // of DDA's contacts. (A sliver whose contacts happened to be open in the last step,
+    // by micrometres, would otherwise be left hanging, and no F admissible.)
+    if (c.state.mode == ContactMode::Open && c.gap > c.allowed_penetration) continue;
     const int i = c.key.vertex_block, j = c.key.edge_block;
     if (!free[static_cast<std::size_t>(i)] && !free[static_cast<std::size_t>(j)]) continue;
     const JointLaw& law = laws[static_cast<std::size_t>(c.joint)];
