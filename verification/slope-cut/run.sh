@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Factor of safety of slopes cut by dda cut, over the time step and the penalty (issue on the
+# factor of safety): make_model.py writes a bedding slope whose planar factor is
+# tan(40)/tan(35) = 1.1983 at any block size, dda cut cuts it, and dda fos runs on the scene as
+# cut and with dt 0.002 / 0.05 s and the penalty auto / 10 and auto x 10. summarise.py
+# writes OUT_DIR/report.md and report.json: each strength-reduction factor, its spread, the
+# limit-analysis factor and the smallest single-block bound beside it; check.py then exits 1
+# if a factor breaks a bound it must respect.
+#
+#   verification/slope-cut/run.sh OUT_DIR [--smoke] [--large]
+#
+# --smoke: the 173-block slope at its own settings only (about 20 s; CI).
+# Default: the 173- and 654-block slopes, five settings each (about 15 min on 2 cores).
+# --large: also the 1848-block slope (about an hour more).
+# It builds nothing: it runs $DDA_BUILD_DIR/dda (default build/release).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+# shellcheck source=../common/program.sh
+source "$root/verification/common/program.sh"
+out="$(verification_out_dir "$0" "[--smoke] [--large]" "$@")" || exit 2
+shift
+smoke=0
+large=0
+for arg in "$@"; do
+  case "$arg" in
+    --smoke) smoke=1 ;;
+    --large) large=1 ;;
+    *) echo "$0: unknown option $arg (--smoke, --large)" >&2; exit 2 ;;
+  esac
+done
+dda="$(verification_program "$0" dda)" || exit 2
+py=/usr/bin/python3
+mkdir -p "$out"
+spacings=(1.6)
+variants=(scene)
+if [ "$smoke" -eq 0 ]; then
+  spacings=(1.6 0.8)
+  variants=(scene dt0.002 dt0.05 penalty_div10 penalty_x10)
+fi
+if [ "$large" -eq 1 ]; then spacings+=(0.47); fi
+for s in "${spacings[@]}"; do
+  case_dir="$out/spacing_$s"
+  mkdir -p "$case_dir"
+  "$py" "$here/make_model.py" "$s" "$case_dir/model.json"
+  "$dda" cut "$case_dir/model.json" --out "$case_dir/scene.json" 2> "$case_dir/cut.log"
+  for v in "${variants[@]}"; do
+    "$py" "$here/variant.py" "$case_dir/scene.json" "$v" "$case_dir/$v.json"
+    echo "spacing $s m, $v" >&2
+    status=0
+    "$dda" fos "$case_dir/$v.json" --out "$case_dir/fos_$v" 2> "$case_dir/fos_$v.log" || status=$?
+    echo "$status" > "$case_dir/fos_$v.exit"
+    tail -n 1 "$case_dir/fos_$v.log" >&2
+  done
+done
+"$py" "$here/summarise.py" "$out"
+"$py" "$here/check.py" "$out"
