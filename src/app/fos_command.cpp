@@ -185,6 +185,14 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   }
   FosResult reported = result;
   if (result.found) {
+    for (const TrialResult& t : result.trials) {
+      if (t.factor != result.first_failing || t.interrupted) continue;
+      limit.has_failing = true;
+      limit.failing_factor = t.factor;
+      limit.failing = trial_mechanism(world, t.world, la_settings);
+      std::cerr << "dda: " << failing_mechanism_line(limit) << "\n";
+      break;
+    }
     // The search's factor beside the bounds it may not exceed (the smallest single-block
     // bound) and the associative limit analysis it should not exceed.
     std::string note;

@@ -99,6 +99,28 @@ json limit_analysis_json(const LimitAnalysisInfo& l) {
           {"single_block_bounds", bounds}};
 }
 
+// The report's "failing_mechanism" object.
+json failing_mechanism_json(const LimitAnalysisInfo& l) {
+  const TrialMechanism& m = l.failing;
+  json blocks = json::array();
+  for (std::size_t i = 0; i < std::min<std::size_t>(m.blocks.size(), kReportedMechanismBlocks); ++i) {
+    const BlockMotion& b = m.blocks[i];
+    blocks.push_back({{"block", b.block},
+                      {"displacement", {b.displacement.x(), b.displacement.y()}},
+                      {"rotation", b.rotation},
+                      {"mode", b.mode}});
+  }
+  const LimitAnalysisResult& g = m.group_bound;
+  return {{"F", l.failing_factor},
+          {"mode", m.mode},
+          {"block_count", m.blocks.size()},
+          {"blocks", blocks},
+          {"group_bound", {{"computed", g.computed},
+                           {"reason", g.reason},
+                           {"factor", g.found ? json(g.factor) : json(nullptr)},
+                           {"admissible_at_max_factor", g.admissible_at_max}}}};
+}
+
 }  // namespace
 
 std::string limit_analysis_line(const LimitAnalysisInfo& l) {
@@ -115,6 +137,21 @@ std::string limit_analysis_line(const LimitAnalysisInfo& l) {
   if (!l.single_block_bounds.empty()) {
     line += "; smallest single-block bound F = " + fixed(l.single_block_bounds.front().factor, 4) +
             " (block " + std::to_string(l.single_block_bounds.front().block) + ")";
+  }
+  return line;
+}
+
+std::string failing_mechanism_line(const LimitAnalysisInfo& l) {
+  const TrialMechanism& m = l.failing;
+  std::string line = "the first failing trial (F = " + fixed(l.failing_factor, 4) + ") moved " +
+                     std::to_string(m.blocks.size()) + " blocks: " + m.mode;
+  const LimitAnalysisResult& g = m.group_bound;
+  if (g.found) {
+    line += "; that group alone, every other block held, has the limit-analysis factor " +
+            fixed(g.factor, 4);
+  } else if (g.computed) {
+    line += g.admissible_at_max ? "; that group alone is admissible up to the largest F"
+                                : "; that group alone is not admissible even at the smallest F";
   }
   return line;
 }
@@ -167,6 +204,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   if (limit != nullptr) {
     report["method"] = limit->method;
     report["limit_analysis"] = limit_analysis_json(*limit);
+    if (limit->has_failing) report["failing_mechanism"] = failing_mechanism_json(*limit);
   }
   write_text_file((dir / "report.json").string(), report.dump(2) + "\n");
 
@@ -224,6 +262,18 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         md << "| " << m.block << " | " << fixed(m.velocity.x(), 3) << " | " << fixed(m.velocity.y(), 3)
            << " | " << general(m.angular_velocity) << " |\n";
       }
+    }
+  }
+  if (limit != nullptr && limit->has_failing) {
+    md << "\n## The first failing trial's mechanism\n\n" << failing_mechanism_line(*limit)
+       << ".\n\nBlocks that moved more than " << general(kMechanismShare)
+       << " of the largest displacement (\"rotating\": their rotation moved their corners more "
+          "than their centroid moved):\n\n| block | displacement x (m) | displacement y (m) | "
+          "rotation (rad) | mode |\n|---|---|---|---|---|\n";
+    for (std::size_t i = 0; i < std::min<std::size_t>(limit->failing.blocks.size(), 20); ++i) {
+      const BlockMotion& b = limit->failing.blocks[i];
+      md << "| " << b.block << " | " << general(b.displacement.x()) << " | " << general(b.displacement.y())
+         << " | " << general(b.rotation) << " | " << b.mode << " |\n";
     }
   }
   md << "\nWall time " << fixed(wall_time_s, 1) << " s in all.\n";

@@ -8,6 +8,7 @@
 
 #include "solver/scene.hpp"
 #include "studies/limit_analysis.hpp"
+#include "studies/trial_mechanism.hpp"
 #include "studies/strength_reduction.hpp"
 
 namespace dda {
@@ -29,6 +30,10 @@ struct LimitAnalysisInfo {
   std::string method;  // "strength-reduction" (the search, the analysis beside it) or "limit-analysis"
   LimitAnalysisResult analysis;
   std::vector<BlockBound> single_block_bounds;  // smallest first
+  // The first failing trial's mechanism and its group's own bound, when a factor was found.
+  bool has_failing = false;
+  double failing_factor = 0.0;
+  TrialMechanism failing;
 };
 
 // Writes DIR/report.json and DIR/report.md (creating DIR). Throws std::runtime_error naming
@@ -40,6 +45,8 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
 
 // One line on the limit analysis, as dda fos prints it.
 std::string limit_analysis_line(const LimitAnalysisInfo& limit);
+// One line on the first failing trial's mechanism (limit.has_failing).
+std::string failing_mechanism_line(const LimitAnalysisInfo& limit);
 
 // One line per finished trial, as the progress shows it:
 // "trial F = 1.250: stable (came to rest), largest displacement 0.0021 m, 812 steps, 3.2 s".

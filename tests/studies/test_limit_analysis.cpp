@@ -14,6 +14,7 @@
 #include "solver/world.hpp"
 #include "studies/limit_analysis.hpp"
 #include "studies/strength_reduction.hpp"
+#include "studies/trial_mechanism.hpp"
 #include "support/cli_helpers.hpp"
 
 namespace {
@@ -169,6 +170,32 @@ TEST_CASE("the slope verification's rigid mechanisms: limit analysis against lim
     CHECK(r.factor <= c.le_factor * (1.0 + 1e-6));
     CHECK(r.upper >= c.le_factor * (1.0 - 1e-6));
   }
+}
+
+TEST_CASE("a failing trial's mechanism: the block slides down its plane, and its group's bound "
+          "is its limit-analysis factor",
+          "[limit_analysis]") {
+  OnPlane p;
+  const World w = consolidated_world(p.scene_text());
+  const FosSettings s = resolve_fos_settings(w, FosSettings{});
+  // tan 35 / tan 30 = 1.213: at F = 1.5 the block accelerates at g (sin 30 - cos 30 tan 35 /
+  // 1.5) = 0.096 g, far above the verdict's 0.002 g.
+  const TrialResult t = run_trial(w, s, 1.5);
+  REQUIRE_FALSE(t.stable);
+  const TrialMechanism m = trial_mechanism(w, t.world, LimitAnalysisSettings{});
+  REQUIRE(m.blocks.size() == 1);
+  CHECK(m.mode == "sliding");
+  CHECK(m.blocks[0].mode == "sliding");
+  // A slide along the plane: the displacement's direction is the plane's, down the dip, to
+  // the round-off of its contact springs (1e-4 of the slip).
+  const Vec2 down(-std::cos(deg(30.0)), -std::sin(deg(30.0)));
+  const Vec2 u = m.blocks[0].displacement;
+  CHECK(u.dot(down) == Approx(u.norm()).epsilon(1e-4));
+  CHECK(std::abs(m.blocks[0].rotation) * 4.0 < 1e-3 * u.norm());
+  REQUIRE(m.group_bound.found);
+  const double le = std::tan(deg(35.0)) / std::tan(deg(30.0));
+  CHECK(m.group_bound.factor <= le);
+  CHECK(m.group_bound.upper >= le);
 }
 
 TEST_CASE("dda fos --method limit-analysis reports the second factor alone", "[limit_analysis][cli]") {

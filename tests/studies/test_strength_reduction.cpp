@@ -425,6 +425,14 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   }
   CHECK(report.at("joint_laws").at("default") == "coulomb_slip");
   CHECK(std::filesystem::exists(dir.path / "out" / "report.md"));
+  // The second factor beside it, and the failing trial's mechanism: one block sliding, its
+  // own bound the same limit-analysis factor (the closed form 1.2, bisection 1e-3).
+  CHECK(report.at("method") == "strength-reduction");
+  CHECK(report.at("limit_analysis").at("factor").get<double>() == Approx(1.2).epsilon(1.5e-3));
+  const json& mechanism = report.at("failing_mechanism");
+  CHECK(mechanism.at("mode") == "sliding");
+  CHECK(mechanism.at("blocks").size() == 1);
+  CHECK(mechanism.at("group_bound").at("factor").get<double>() == Approx(1.2).epsilon(1.5e-3));
 
   // No failing trial up to --max-factor 1.1: no factor, exit 3, and the report says why.
   const auto none = test::run_command(std::string(DDA_EXE) + " fos " +

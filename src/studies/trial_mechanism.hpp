@@ -1,0 +1,41 @@
+// The mechanism a failing strength-reduction trial shows: the blocks that moved, how (their
+// displacement, rotation and mode), and the limit-analysis factor of that group moving on its
+// own, every other block held (an upper bound of the slope's factor; docs/limit-analysis.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "solver/world.hpp"
+#include "studies/limit_analysis.hpp"
+
+namespace dda {
+
+struct BlockMotion {
+  int block = -1;
+  Vec2 displacement = Vec2::Zero();  // of its centroid (m)
+  double rotation = 0.0;             // counter-clockwise (rad)
+  // "sliding" (its rotation moves its corners less than its centroid moved), "rotating"
+  // (more), or "falling" (no closed contact left at the trial's end).
+  std::string mode;
+};
+
+struct TrialMechanism {
+  // The blocks whose centroid moved more than kMechanismShare of the largest displacement,
+  // largest first.
+  std::vector<BlockMotion> blocks;
+  // "sliding", "rotating" or "falling" for one block; "sliding group" or "rotating group"
+  // (by the mode of most of its blocks) for several; "none" when nothing moved.
+  std::string mode;
+  // The limit analysis with only these blocks free.
+  LimitAnalysisResult group_bound;
+};
+
+// A block belongs to the mechanism when it moved more than this share of the largest.
+inline constexpr double kMechanismShare = 0.1;
+
+// `consolidated`: where the trial started; `trial_end`: where it ended (same blocks).
+TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end,
+                               const LimitAnalysisSettings& settings);
+
+}  // namespace dda
