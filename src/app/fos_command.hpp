@@ -13,8 +13,10 @@ namespace dda {
 // Throws InputError for a bad scene (exit 2) and std::runtime_error when the report cannot
 // be written (exit 1).
 // `method`: "strength-reduction" (the search, with the limit analysis beside it) or
-// "limit-analysis" (the consolidation and the limit analysis only).
+// "limit-analysis" (the consolidation and the limit analysis only). `skip_limit_analysis`:
+// the search alone (the report's limit_analysis says it was skipped).
 int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,
-                const std::string& method = "strength-reduction");
+                const std::string& method = "strength-reduction",
+                bool skip_limit_analysis = false);
 
 }  // namespace dda

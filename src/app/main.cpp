@@ -174,6 +174,7 @@ int main(int argc, char** argv) {
   std::string fos_dir = "dda-fos";
   dda::FosSettings fos;
   std::string fos_method = "strength-reduction";
+  bool fos_skip_la = false;
   CLI::App* fos_app = app.add_subcommand(
       "fos", "Factor of safety by strength reduction (docs/factor-of-safety.md)");
   fos_app->add_option("scene", fos_scene, "Scene file (JSON, see docs/scene-format.md)");
@@ -206,6 +207,8 @@ int main(int argc, char** argv) {
                       "limit-analysis (that alone; docs/limit-analysis.md)")
       ->capture_default_str()
       ->check(CLI::IsMember({"strength-reduction", "limit-analysis"}));
+  fos_app->add_flag("--skip-limit-analysis", fos_skip_la,
+                    "Run the strength-reduction search without the limit analysis beside it");
   fos_app->add_option("--seismic-coefficient", fos.seismic_coefficient,
                       "Pseudo-static horizontal body force, as a share of the weight, along +x "
                       "(negative: along -x)")->capture_default_str()
@@ -233,7 +236,7 @@ int main(int argc, char** argv) {
     if (cut->parsed()) require_output_path(scene_out, "cut");
     if (run->parsed()) return run_command(scene_path, out_dir);
     if (point->parsed()) return material_point_command(spec_path, csv_file);
-    if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_method);
+    if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_method, fos_skip_la);
     if (cut->parsed()) return dda::cut_command(model_path, scene_out);
   } catch (const dda::InputError& e) {
     std::cerr << "dda: error: " << e.what() << "\n";
