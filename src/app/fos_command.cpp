@@ -158,8 +158,13 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   if (skip_limit_analysis) {
     limit.analysis.reason = "skipped (--skip-limit-analysis)";
   } else {
-    limit.analysis = limit_analysis(world, la_settings);
-    if (limit.analysis.computed) limit.single_block_bounds = single_block_bounds(world, la_settings);
+    // The single-block bounds first: the smallest caps the slope's search (often at once).
+    limit.single_block_bounds = single_block_bounds(world, la_settings);
+    LimitAnalysisSettings capped = la_settings;
+    if (!limit.single_block_bounds.empty()) {
+      capped.known_inadmissible = limit.single_block_bounds.front().upper;
+    }
+    limit.analysis = limit_analysis(world, capped);
   }
   std::cerr << "dda: " << limit_analysis_line(limit) << "\n";
   const auto draw_limit_analysis = [&] {

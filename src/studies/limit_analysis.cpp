@@ -276,32 +276,52 @@ LimitAnalysisResult limit_analysis(const World& world, const LimitAnalysisSettin
   Program program(world, free, terms, weight_scale, length_scale);
   auto admissible = [&](double f) { return program.admissible(f); };
 
-  // Bracket from F = 1 outwards by doubling or halving (clamped to the range), then bisect.
-  // (Starting at 1 rather than at the range's ends: the first, cold solves cost the most.)
+  // A known inadmissible F (a single-block bound's upper end) caps the search: a block that
+  // cannot stand alone, its neighbours held, cannot stand among them either. Just below it
+  // first, since a slope's factor is often its weakest block's.
   double lo = 0.0, hi = 0.0;
-  const double f = std::clamp(1.0, s.min_factor, s.max_factor);
-  if (admissible(f)) {
-    lo = f;
-    for (;;) {
-      if (lo >= s.max_factor) {
-        r.admissible_at_max = true;
-        r.programs = program.solves();
-        return finish();
-      }
-      hi = std::min(2.0 * lo, s.max_factor);
-      if (!admissible(hi)) break;
-      lo = hi;
+  bool bracketed = false;
+  if (s.known_inadmissible > s.min_factor && s.known_inadmissible <= s.max_factor) {
+    hi = s.known_inadmissible;
+    const double just_below = hi / (1.0 + s.relative_tolerance);
+    if (admissible(just_below)) {
+      lo = just_below;
+      bracketed = true;
+    } else {
+      hi = just_below;
     }
-  } else {
-    hi = f;
-    for (;;) {
-      if (hi <= s.min_factor) {
-        r.programs = program.solves();
-        return finish();  // not admissible even at the lowest factor
+  }
+  // Else from F = 1 (below the cap) outwards by doubling or halving, clamped to the range.
+  // (Starting at 1 rather than at the range's ends: the first, cold solves cost the most.)
+  if (!bracketed) {
+    double f = std::clamp(1.0, s.min_factor, s.max_factor);
+    if (hi > 0.0 && f >= hi) f = std::max(0.5 * hi, s.min_factor);
+    if (admissible(f)) {
+      lo = f;
+      while (!(hi > lo)) {
+        if (lo >= s.max_factor) {
+          r.admissible_at_max = true;
+          r.programs = program.solves();
+          return finish();
+        }
+        const double next = std::min(2.0 * lo, s.max_factor);
+        if (!admissible(next)) {
+          hi = next;
+          break;
+        }
+        lo = next;
       }
-      lo = std::max(0.5 * hi, s.min_factor);
-      if (admissible(lo)) break;
-      hi = lo;
+    } else {
+      hi = f;
+      for (;;) {
+        if (hi <= s.min_factor) {
+          r.programs = program.solves();
+          return finish();  // not admissible even at the lowest factor
+        }
+        lo = std::max(0.5 * hi, s.min_factor);
+        if (admissible(lo)) break;
+        hi = lo;
+      }
     }
   }
   while (hi - lo > s.relative_tolerance * lo) {
@@ -341,7 +361,7 @@ std::vector<BlockBound> single_block_bounds(const World& world, const LimitAnaly
     if (world.blocks[b].fixed) continue;
     const LimitAnalysisResult r = limit_analysis(world, s, {static_cast<int>(b)});
     if (!r.computed || r.admissible_at_max) continue;
-    out.push_back({static_cast<int>(b), r.found ? r.factor : 0.0});
+    out.push_back({static_cast<int>(b), r.found ? r.factor : 0.0, r.found ? r.upper : s.min_factor});
   }
   std::sort(out.begin(), out.end(), [](const BlockBound& a, const BlockBound& b) { return a.factor < b.factor; });
   return out;

@@ -29,6 +29,9 @@ struct LimitAnalysisSettings {
   // The bisection stops when the bracket is no wider than this share of its lower end (a
   // tenth of dda fos's default search tolerance at F = 1).
   double relative_tolerance = 1e-3;
+  // An F known to be inadmissible (0: none), in practice the smallest single-block bound's
+  // upper end (BlockBound::upper): the search starts just below it.
+  double known_inadmissible = 0.0;
 };
 
 // A free block's share of the collapse mechanism: its centroid's velocity and its angular
@@ -72,7 +75,8 @@ LimitAnalysisResult limit_analysis(const World& world, const LimitAnalysisSettin
 // first. Blocks that are admissible up to max_factor are left out.
 struct BlockBound {
   int block = -1;
-  double factor = 0.0;
+  double factor = 0.0;  // the bracket's admissible end
+  double upper = 0.0;   // its inadmissible end: the slope is not admissible there either
 };
 std::vector<BlockBound> single_block_bounds(const World& world,
                                             const LimitAnalysisSettings& settings);

@@ -101,6 +101,17 @@ TEST_CASE("a block on a plane: the limit-analysis factor is the limit-equilibriu
     const std::vector<BlockBound> bounds = single_block_bounds(w, LimitAnalysisSettings{});
     REQUIRE(bounds.size() == 1);
     CHECK(bounds[0].factor == Approx(r.factor).epsilon(1e-12));
+    CHECK(bounds[0].upper == Approx(r.upper).epsilon(1e-12));
+    // Capped by that bound (as dda fos runs it), the search tries just below the cap, finds
+    // it admissible, and solves once more at the cap for the mechanism: two programs, the
+    // same closed form in the bracket.
+    LimitAnalysisSettings capped;
+    capped.known_inadmissible = bounds[0].upper;
+    const LimitAnalysisResult c = limit_analysis(w, capped);
+    REQUIRE(c.found);
+    CHECK(c.programs == 2);
+    CHECK(c.factor <= le);
+    CHECK(c.upper >= le);
   }
   SECTION("with cohesion: (W cos(dip) tan(phi) + c L) / (W sin(dip))") {
     p.cohesion = 20e3;
