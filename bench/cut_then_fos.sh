@@ -27,4 +27,8 @@ t0, t1, t2 = map(float, sys.argv[2:5])
 print(f"cut: {t1 - t0:.1f} s; fos: {t2 - t1:.1f} s "
       f"(consolidation {r['consolidation']['wall_time_s']:.1f} s, {len(r['trials'])} trials); "
       f"F = {r['factor_of_safety']:.3f} in [{r['bracket'][0]:.4f}, {r['bracket'][1]:.4f}]")
+la = r.get("limit_analysis")
+if la is not None:
+    print(f"limit analysis beside it: F = {la['factor']}, {la['programs']} programs, "
+          f"{la['wall_time_s']:.1f} s")
 PY
