@@ -59,13 +59,9 @@ void write_mechanism_picture(const std::filesystem::path& path, const World& con
 // size, coloured by its speed (viridis).
 void write_limit_analysis_picture(const std::filesystem::path& path, const World& world,
                                   const LimitAnalysisResult& la) {
-  std::vector<double> areas;
-  for (const Block& b : world.blocks) {
-    if (!b.fixed) areas.push_back(b.moments.area);
-  }
-  if (areas.empty() || la.mechanism.empty()) return;
-  std::nth_element(areas.begin(), areas.begin() + static_cast<long>(areas.size() / 2), areas.end());
-  const double shown = 0.25 * std::sqrt(areas[areas.size() / 2]);
+  // (A mechanism has free blocks, so the median exists.)
+  if (la.mechanism.empty()) return;
+  const double shown = 0.25 * std::sqrt(median_free_block_area(world));
   std::vector<PictureBlock> blocks;
   for (const Block& b : world.blocks) {
     blocks.push_back({b.vertices, b.fixed ? Rgb{190, 190, 190} : Rgb{235, 235, 235}});

@@ -70,7 +70,7 @@ std::string trial_line(const TrialResult& t) {
 
 namespace {
 
-// The report's "limit_analysis" object (docs/output-format.md, dda fos).
+// The report's "limit_analysis" object (docs/factor-of-safety.md, section 4).
 json limit_analysis_json(const LimitAnalysisInfo& l) {
   const LimitAnalysisResult& a = l.analysis;
   json mechanism = json::array();

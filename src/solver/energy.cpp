@@ -76,7 +76,7 @@ EnergyTotals scene_energy(const World& world) {
   EnergyTotals e;
   for (const Block& b : world.blocks) {
     if (b.fixed) continue;
-    const double mass = density_now(world, b) * b.moments.area;
+    const double mass = block_mass(world, b);
     e.kinetic += kinetic_energy(world, b);
     e.potential -= mass * world.gravity.dot(b.moments.centroid);
     e.strain_energy += block_strain_energy(world, b);
@@ -245,7 +245,7 @@ void start_energy_account(World& world) {
   world.energy.initial_total = e.total();
   double reach = 0.0;  // work of gravity and loads over w0
   for (const Block& b : world.blocks) {
-    if (!b.fixed) reach += density_now(world, b) * b.moments.area * world.gravity.norm() * world.w0;
+    if (!b.fixed) reach += block_mass(world, b) * world.gravity.norm() * world.w0;
   }
   for (const PointLoad& load : world.loads) {
     if (!world.blocks[static_cast<std::size_t>(load.block)].fixed) reach += load.force.norm() * world.w0;

@@ -23,7 +23,7 @@ void change_gravity(World& world, const Vec2& g) {
   const Vec2 change = g - world.gravity;
   for (const Block& b : world.blocks) {
     if (b.fixed) continue;
-    world.energy.load_work -= density_now(world, b) * b.moments.area * change.dot(b.moments.centroid);
+    world.energy.load_work -= block_mass(world, b) * change.dot(b.moments.centroid);
   }
   world.gravity = g;
 }

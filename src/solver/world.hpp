@@ -260,6 +260,11 @@ inline double density_now(const World& world, const Block& b) {
   return world.pseudo_rigid ? density * b.initial_area / b.moments.area : density;
 }
 
+// The block's mass (kg per metre of thickness): its weight is this times gravity.
+inline double block_mass(const World& world, const Block& b) {
+  return density_now(world, b) * b.moments.area;
+}
+
 // Kinetic energy 1/2 v^T M v of one block (J per metre), from its velocity and mass matrix.
 double kinetic_energy(const World& world, const Block& block);
 

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "contact/joint_law.hpp"
 #include "studies/strength_reduction.hpp"
@@ -52,27 +51,27 @@ class Program {
   Program(const World& world, const std::vector<char>& free, const std::vector<ContactTerm>& terms,
           double weight_scale, double length_scale)
       : world_(world), terms_(terms), length_scale_(length_scale) {
+    first_row_.assign(world.blocks.size(), -1);
     for (std::size_t b = 0; b < world.blocks.size(); ++b) {
       if (!free[b]) continue;
-      first_row_[static_cast<int>(b)] = 3 * static_cast<int>(rows_of_block_.size());
-      rows_of_block_.push_back({static_cast<int>(b), 3 * static_cast<int>(rows_of_block_.size())});
+      first_row_[b] = equilibrium_rows_;
+      equilibrium_rows_ += 3;
     }
-    equilibrium_rows_ = 3 * static_cast<int>(rows_of_block_.size());
     // Right-hand side: -(weight + loads that do not scale: joint water, point loads).
     rhs_.assign(static_cast<std::size_t>(equilibrium_rows_), 0.0);
     auto dead_load = [&](int block, const Vec2& point, const Vec2& force) {
-      const auto it = first_row_.find(block);
-      if (it == first_row_.end()) return;
+      const int row = first_row_[static_cast<std::size_t>(block)];
+      if (row < 0) return;
       const Vec2 f = force / weight_scale;
       const Vec2 arm = (point - world.blocks[static_cast<std::size_t>(block)].moments.centroid) /
                        length_scale;
-      rhs_[static_cast<std::size_t>(it->second)] -= f.x();
-      rhs_[static_cast<std::size_t>(it->second + 1)] -= f.y();
-      rhs_[static_cast<std::size_t>(it->second + 2)] -= cross(arm, f);
+      rhs_[static_cast<std::size_t>(row)] -= f.x();
+      rhs_[static_cast<std::size_t>(row + 1)] -= f.y();
+      rhs_[static_cast<std::size_t>(row + 2)] -= cross(arm, f);
     };
-    for (const auto& [block, row] : rows_of_block_) {
-      const Block& b = world.blocks[static_cast<std::size_t>(block)];
-      dead_load(block, b.moments.centroid, density_now(world, b) * b.moments.area * world.gravity);
+    for (std::size_t b = 0; b < world.blocks.size(); ++b) {
+      const Block& blk = world.blocks[b];
+      dead_load(static_cast<int>(b), blk.moments.centroid, block_mass(world, blk) * world.gravity);
     }
     for (const BlockForce& f : world.water_forces) dead_load(f.block, f.point, f.force);
     for (const PointLoad& l : world.loads) dead_load(l.block, l.current, l.force);
@@ -101,8 +100,9 @@ class Program {
   std::vector<std::pair<int, Vec3>> duals() const {
     const double* y = model_.dualRowSolution();
     std::vector<std::pair<int, Vec3>> out;
-    for (const auto& [block, row] : rows_of_block_) {
-      out.push_back({block, Vec3(y[row], y[row + 1], y[row + 2])});
+    for (std::size_t b = 0; b < first_row_.size(); ++b) {
+      const int row = first_row_[b];
+      if (row >= 0) out.push_back({static_cast<int>(b), Vec3(y[row], y[row + 1], y[row + 2])});
     }
     return out;
   }
@@ -130,13 +130,13 @@ class Program {
     auto force_column = [&](const ContactTerm& t, double n, double s_) {
       const Vec2 f = n * t.normal + s_ * t.tangent;
       for (const auto& [block, sign] : {std::pair{t.vertex_block, 1.0}, std::pair{t.edge_block, -1.0}}) {
-        const auto it = first_row_.find(block);
-        if (it == first_row_.end()) continue;
+        const int row = first_row_[static_cast<std::size_t>(block)];
+        if (row < 0) continue;
         const Vec2 arm = (t.point - world_.blocks[static_cast<std::size_t>(block)].moments.centroid) /
                          length_scale_;
-        put(it->second, sign * f.x());
-        put(it->second + 1, sign * f.y());
-        put(it->second + 2, sign * cross(arm, f));
+        put(row, sign * f.x());
+        put(row + 1, sign * f.y());
+        put(row + 2, sign * cross(arm, f));
       }
       col_up.push_back(kInfinity);
       obj.push_back(0.0);
@@ -187,8 +187,7 @@ class Program {
   const World& world_;
   std::vector<ContactTerm> terms_;
   double length_scale_ = 1.0;
-  std::unordered_map<int, int> first_row_;
-  std::vector<std::pair<int, int>> rows_of_block_;  // (block, its first row)
+  std::vector<int> first_row_;  // per block: its first equilibrium row, -1 when held
   std::vector<double> rhs_;
   int equilibrium_rows_ = 0;
   int solves_ = 0;
@@ -250,7 +249,7 @@ LimitAnalysisResult limit_analysis(const World& world, const LimitAnalysisSettin
     if (!free[b]) continue;
     ++r.free_blocks;
     const Block& blk = world.blocks[b];
-    weight_scale = std::max(weight_scale, density_now(world, blk) * blk.moments.area * world.gravity.norm());
+    weight_scale = std::max(weight_scale, block_mass(world, blk) * world.gravity.norm());
     length_scale = std::max(length_scale, std::sqrt(blk.moments.area));
   }
   if (r.free_blocks == 0 || weight_scale <= 0.0) {
@@ -337,7 +336,7 @@ LimitAnalysisResult limit_analysis(const World& world, const LimitAnalysisSettin
   double work = 0.0, fastest = 0.0;
   for (const auto& [block, u] : v) {
     const Block& b = world.blocks[static_cast<std::size_t>(block)];
-    work += density_now(world, b) * b.moments.area * world.gravity.dot(Vec2(u[0], u[1]));
+    work += block_mass(world, b) * world.gravity.dot(Vec2(u[0], u[1]));
     fastest = std::max(fastest, std::hypot(u[0], u[1]));
   }
   if (fastest > 0.0) {

@@ -134,15 +134,19 @@ std::vector<JointLaw> scene_joint_laws(const World& consolidated) {
                                             : consolidated.stages.joint_laws;
 }
 
+double median_free_block_area(const World& world) {
+  std::vector<double> areas;
+  for (const Block& b : world.blocks) {
+    if (!b.fixed) areas.push_back(b.moments.area);
+  }
+  assert(!areas.empty());
+  std::nth_element(areas.begin(), areas.begin() + static_cast<long>(areas.size() / 2), areas.end());
+  return areas[areas.size() / 2];
+}
+
 FosSettings resolve_fos_settings(const World& consolidated, FosSettings s) {
   if (s.failure_displacement <= 0.0) {
-    std::vector<double> areas;
-    for (const Block& b : consolidated.blocks) {
-      if (!b.fixed) areas.push_back(b.moments.area);
-    }
-    assert(!areas.empty());
-    std::nth_element(areas.begin(), areas.begin() + static_cast<long>(areas.size() / 2), areas.end());
-    s.failure_displacement = 0.05 * std::sqrt(areas[areas.size() / 2]);
+    s.failure_displacement = 0.05 * std::sqrt(median_free_block_area(consolidated));
     // Joint water acts on the contacts found within the search distance: a trial judged
     // beyond it would have lost the water in a joint that opened (a tension crack's thrust).
     if (consolidated.water) {

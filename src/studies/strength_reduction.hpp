@@ -117,6 +117,10 @@ Consolidation consolidate(const Scene& scene, double consolidation_factor,
 // stages; the trials start from the scene's).
 std::vector<JointLaw> scene_joint_laws(const World& consolidated);
 
+// The median area of the world's free blocks (m^2): the typical block size the automatic
+// failure displacement and the mechanism pictures take. The world must have a free block.
+double median_free_block_area(const World& world);
+
 // Fills the automatic settings (failure_displacement, trial_time) from the consolidated
 // world. The world must have at least one free block.
 FosSettings resolve_fos_settings(const World& consolidated, FosSettings settings);

@@ -14,12 +14,15 @@ double rotation_between(const Block& before, const Block& after) {
   return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
 }
 
-bool touches_anything(const World& w, int block) {
+// Per block: whether a closed contact touches it.
+std::vector<char> touched_blocks(const World& w) {
+  std::vector<char> touched(w.blocks.size(), 0);
   for (const Contact& c : w.contacts) {
     if (c.state.mode == ContactMode::Open) continue;
-    if (c.key.vertex_block == block || c.key.edge_block == block) return true;
+    touched[static_cast<std::size_t>(c.key.vertex_block)] = 1;
+    touched[static_cast<std::size_t>(c.key.edge_block)] = 1;
   }
-  return false;
+  return touched;
 }
 
 }  // namespace
@@ -36,6 +39,7 @@ TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end
     m.mode = "none";
     return m;
   }
+  const std::vector<char> touched = touched_blocks(trial_end);
   std::vector<int> group;
   int rotating = 0;
   for (std::size_t i = 0; i < consolidated.blocks.size(); ++i) {
@@ -50,7 +54,7 @@ TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end
     b.rotation = rotation_between(before, after);
     // A corner at the block's typical radius moves |rotation| x radius by the rotation.
     const double radius = std::sqrt(before.moments.area);
-    if (!touches_anything(trial_end, b.block)) {
+    if (!touched[i]) {
       b.mode = "falling";
     } else {
       b.mode = std::abs(b.rotation) * radius > u.norm() ? "rotating" : "sliding";
