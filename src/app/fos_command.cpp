@@ -14,7 +14,9 @@
 #include "io/scene_reader.hpp"
 #include "solver/energy.hpp"
 #include "solver/run.hpp"
+#include "studies/factor_cross_check.hpp"
 #include "studies/limit_analysis.hpp"
+#include "studies/trial_mechanism.hpp"
 
 namespace dda {
 namespace {
@@ -28,28 +30,71 @@ std::string format(double x, const char* spec) {
   return buf;
 }
 
-// The mechanism of one trial: every block coloured by how far its centroid moved from the
-// consolidated state (viridis, 0 to the largest), fixed blocks grey.
+// How many of a trial's moving blocks get an arrow, and how many a number: beyond these the
+// picture of a 2000-block slope is a smear; the report lists them all.
+constexpr std::size_t kArrowsDrawn = 60;
+constexpr std::size_t kNumbersDrawn = 25;
+
+// The mechanism of one trial, drawn to be seen: every block where the consolidation left it
+// (fixed grey, free pale); each block that moved more than a tenth of the largest
+// displacement (trial_mechanism's share) drawn again, displaced rigidly by its centroid's
+// displacement u and rotation theta, both multiplied by one factor X that makes the largest
+// move a quarter of a typical block's size (p + X (u + theta x (p - c))), coloured by |u|;
+// an arrow from its centroid along u (the 60 largest); and its block number (the 25
+// largest), as report.json numbers blocks.
 void write_mechanism_picture(const std::filesystem::path& path, const World& consolidated,
                              const TrialResult& t, const std::string& what) {
+  struct Moved {
+    std::size_t block;
+    Vec2 u;
+    double rotation;
+  };
   double largest = 0.0;
-  std::vector<double> moved(t.world.blocks.size(), 0.0);
-  for (std::size_t i = 0; i < moved.size(); ++i) {
-    moved[i] = (t.world.blocks[i].moments.centroid - consolidated.blocks[i].moments.centroid).norm();
-    largest = std::max(largest, moved[i]);
+  std::vector<Moved> moved;
+  for (std::size_t i = 0; i < consolidated.blocks.size(); ++i) {
+    const Block& before = consolidated.blocks[i];
+    const Block& after = t.world.blocks[i];
+    if (before.fixed) continue;
+    moved.push_back({i, after.moments.centroid - before.moments.centroid,
+                     rotation_between(before, after)});
+    largest = std::max(largest, moved.back().u.norm());
   }
+  std::erase_if(moved, [&](const Moved& m) { return m.u.norm() <= kMechanismShare * largest; });
+  std::sort(moved.begin(), moved.end(),
+            [](const Moved& a, const Moved& b) { return a.u.norm() > b.u.norm(); });
+  const double shown = 0.25 * std::sqrt(median_free_block_area(consolidated));
+  const double x = largest > 0.0 ? shown / largest : 0.0;
   std::vector<PictureBlock> blocks;
-  for (std::size_t i = 0; i < moved.size(); ++i) {
-    const Block& b = t.world.blocks[i];
-    const Rgb fill = b.fixed ? Rgb{190, 190, 190}
-                             : sequential_colour(largest > 0.0 ? moved[i] / largest : 0.0);
-    blocks.push_back({b.vertices, fill});
+  for (const Block& b : consolidated.blocks) {
+    blocks.push_back({b.vertices, b.fixed ? Rgb{190, 190, 190} : Rgb{235, 235, 235}});
   }
   PictureOptions options;
+  for (auto it = moved.rbegin(); it != moved.rend(); ++it) {  // the largest on top
+    const Block& b = consolidated.blocks[it->block];
+    Polygon p = b.vertices;
+    for (Vec2& v : p) {
+      const Vec2 r = v - b.moments.centroid;
+      v += x * (it->u + it->rotation * Vec2(-r.y(), r.x()));
+    }
+    blocks.push_back({p, sequential_colour(it->u.norm() / largest)});
+  }
+  // The arrows are longer than the drawn displacement (the largest 0.8 of a typical block)
+  // so that their direction reads at a slope's scale.
+  for (std::size_t k = 0; k < moved.size() && k < kArrowsDrawn; ++k) {
+    const Vec2 c = consolidated.blocks[moved[k].block].moments.centroid;
+    options.arrows.push_back({c, c + 3.2 * x * moved[k].u, Rgb{200, 0, 0}});
+  }
+  for (std::size_t k = 0; k < moved.size() && k < kNumbersDrawn; ++k) {
+    const Vec2 c = consolidated.blocks[moved[k].block].moments.centroid;
+    options.labels.push_back({c, std::to_string(moved[k].block), Rgb{0, 0, 0}});
+  }
   options.width_px = 1600;
   options.title = what + ": F = " + format(t.factor, "%.4f") + ", " +
-                  (t.stable ? "stable" : "failing") + " (" + t.verdict + ")";
-  options.colour_bar = ColourBar{"displacement since the consolidation (m)", 0.0, largest};
+                  (t.stable ? "stable" : "failing") + " (" + t.verdict + "); " +
+                  std::to_string(moved.size()) + " blocks moved, drawn x" + format(x, "%.3g") +
+                  (moved.empty() ? std::string()
+                                 : ", block " + std::to_string(moved.front().block) + " most");
+  options.colour_bar = ColourBar{"displacement in the trial (m)", 0.0, largest};
   write_block_picture(path.string(), blocks, options);
 }
 
@@ -104,11 +149,11 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   for (const BlockSpec& b : scene.blocks) any_free = any_free || !b.fixed;
   if (!any_free) throw InputError(scene_path + ": blocks: every block is fixed; nothing can fail");
 
-  std::cerr << "dda: consolidating " << scene_path << " at F = " << settings.consolidation_factor << "\n";
   // SIGINT or SIGTERM: the consolidation or the running trials stop at their next step, and
   // the report holds the trials judged so far (a second signal ends the program at once).
   watch_for_interrupts();
   const auto interrupted = [] { return interrupt_signal() != 0; };
+  std::cerr << "dda: consolidating " << scene_path << " at F = " << settings.consolidation_factor << "\n";
   ProgressBar progress(run_length(scene), run_unit(scene));
   const Consolidation consolidation =
       consolidate(scene, settings.consolidation_factor, [&](const World& w, const RunStats&) {
@@ -122,9 +167,14 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     return kExitNoFactor;
   }
   const World& world = consolidation.world;
-  const ConsolidationInfo info{consolidation.stats.steps, world.time,
-                               consolidation.stats.wall_time_s, scene_energy(world).kinetic,
-                               consolidation.stats.bonds_broken, consolidation.stats.broken_bonds};
+  ConsolidationInfo info;
+  info.steps = consolidation.stats.steps;
+  info.time = world.time;
+  info.wall_time_s = consolidation.stats.wall_time_s;
+  info.kinetic_end = scene_energy(world).kinetic;
+  info.bonds_broken = consolidation.stats.bonds_broken;
+  info.broken_bonds = consolidation.stats.broken_bonds;
+  info.factor = settings.consolidation_factor;
   settings = resolve_fos_settings(world, settings);
   const auto stop_message = [&](const std::string& when) {
     return "interrupted (signal " + std::to_string(interrupt_signal()) + ") " + when;
@@ -206,23 +256,13 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
       break;
     }
     // The search's factor beside the bounds it may not exceed (the smallest single-block
-    // bound) and the associative limit analysis it should not exceed.
-    std::string note;
-    if (!limit.single_block_bounds.empty() &&
-        result.last_stable > limit.single_block_bounds.front().factor) {
-      note = "stable trials above the smallest single-block bound F = " +
-             format(limit.single_block_bounds.front().factor, "%.4f") + " (block " +
-             std::to_string(limit.single_block_bounds.front().block) +
-             "): a trial held a block its own strength cannot hold, so the factor is not "
-             "trustworthy";
-    } else if (limit.analysis.found && result.last_stable > limit.analysis.upper) {
-      note = "stable trials above the limit-analysis factor F = " +
-             format(limit.analysis.factor, "%.4f") +
-             ", which associative friction makes an upper bound for rigid blocks";
-    }
-    if (!note.empty()) {
-      reported.message += (reported.message.empty() ? "" : "; ") + note;
-      std::cerr << "dda: warning: " << note << "\n";
+    // bound) and the associative limit analysis it should not exceed, or lie far below
+    // without a reason given.
+    const FactorCrossCheck check =
+        cross_check_factor(result, limit.single_block_bounds, limit.analysis);
+    if (!check.text.empty()) {
+      reported.message += (reported.message.empty() ? "" : "; ") + check.text;
+      std::cerr << "dda: " << (check.warning ? "warning: " : "note: ") << check.text << "\n";
     }
   }
   write_fos_report(out_dir, scene, settings, info, reported, wall, &limit);

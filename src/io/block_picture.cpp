@@ -151,6 +151,28 @@ void draw_colour_bar(Image& image, const ColourBar& bar, int y, const PictureOpt
   draw_text(image, x0 + w - text_width(hi, s), y, hi, s, o.text);
 }
 
+// A 2-pixel shaft from `from` to `to` (pixels) and a head of two strokes at `to`, 30 degrees
+// off the shaft, a third of the shaft long but 4 to 12 px. An arrow shorter than a pixel is
+// a dot.
+void draw_arrow(Image& image, const Vec2& from, const Vec2& to, Rgb colour) {
+  const Vec2 d = to - from;
+  const double length = d.norm();
+  draw_line(image, from, to, colour);
+  if (length < 1.0) return;
+  const Vec2 along = d / length;
+  const Vec2 across(-along.y(), along.x());
+  // The second pixel of the shaft's width, on the side that keeps it a straight band.
+  const Vec2 side = std::abs(along.x()) > std::abs(along.y()) ? Vec2(0.0, 1.0) : Vec2(1.0, 0.0);
+  draw_line(image, from + side, to + side, colour);
+  const double head = std::clamp(length / 3.0, 4.0, 12.0);
+  const double c = std::cos(M_PI / 6.0), s = std::sin(M_PI / 6.0);
+  for (const double sign : {1.0, -1.0}) {
+    const Vec2 back = -head * (c * along + sign * s * across);
+    draw_line(image, to, to + back, colour);
+    draw_line(image, to + side, to + side + back, colour);
+  }
+}
+
 }  // namespace
 
 PictureFrame picture_frame(const std::vector<PictureBlock>& blocks, const PictureOptions& options) {
@@ -176,6 +198,21 @@ Image draw_blocks(const std::vector<PictureBlock>& blocks, const PictureOptions&
     const std::size_t n = b.polygon.size();
     for (std::size_t i = 0; i < n; ++i)
       draw_line(image, L.frame.to_pixel(b.polygon[i]), L.frame.to_pixel(b.polygon[(i + 1) % n]), o.edge);
+  }
+
+  const int label_scale = std::max(1, m.text_scale - 1);
+  for (const PictureLabel& label : o.labels) {
+    const Vec2 c = L.frame.to_pixel(label.at);
+    const int w = text_width(label.text, label_scale);
+    const int h = text_height(label_scale);
+    const int x = static_cast<int>(std::lround(c.x())) - w / 2;
+    const int y = static_cast<int>(std::lround(c.y())) - h / 2;
+    fill_rect(image, x - 1, y - 1, w + 2, h + 2, Rgb{255, 255, 255});
+    draw_text(image, x, y, label.text, label_scale, label.colour);
+  }
+  // Arrows over the labels: an arrow starting at a labelled point stays whole.
+  for (const PictureArrow& a : o.arrows) {
+    draw_arrow(image, L.frame.to_pixel(a.from), L.frame.to_pixel(a.to), a.colour);
   }
 
   const int s = m.text_scale;

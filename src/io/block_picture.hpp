@@ -37,11 +37,29 @@ struct ColourBar {
   double max = 1.0;
 };
 
+// An arrow drawn over the blocks from `from` to `to` (world coordinates, m), 2 px wide with
+// a head at `to`: a displacement or velocity, scaled by the caller to be seen.
+struct PictureArrow {
+  Vec2 from = Vec2::Zero();
+  Vec2 to = Vec2::Zero();
+  Rgb colour = {200, 0, 0};
+};
+
+// A short text (a block number) centred on a world point, on a white box so it reads over
+// any fill.
+struct PictureLabel {
+  Vec2 at = Vec2::Zero();
+  std::string text;
+  Rgb colour = {0, 0, 0};
+};
+
 struct PictureOptions {
   int width_px = 1200;  // image width; the height follows from the blocks' aspect ratio
   std::string title;    // drawn centred at the top; may be empty
   std::vector<LegendEntry> legend;      // drawn under the blocks; may be empty
   std::optional<ColourBar> colour_bar;  // drawn under the legend
+  std::vector<PictureLabel> labels;     // over the blocks; text at the title's scale - 1
+  std::vector<PictureArrow> arrows;     // over the labels, in order
   Rgb edge = {40, 40, 40};              // block outlines, 1 px
   Rgb background = {255, 255, 255};
   Rgb text = {0, 0, 0};

@@ -189,6 +189,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         {"reduce_materials", s.reduce_materials},
         {"jobs", s.jobs},
         {"seismic_coefficient", s.seismic_coefficient},
+        {"consolidation_factor", consolidation.factor},
         {"watched", scene.monitors.empty() ? "free block centroids" : "monitors"}}},
       {"joint_laws", laws},
       {"consolidation",
@@ -197,7 +198,8 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         {"wall_time_s", consolidation.wall_time_s},
         {"kinetic_end", consolidation.kinetic_end},
         {"bonds_broken", consolidation.bonds_broken},
-        {"broken_bonds", broken_bonds_json(consolidation.broken_bonds)}}},
+        {"broken_bonds", broken_bonds_json(consolidation.broken_bonds)},
+        {"factor", consolidation.factor}}},
       {"trials", trials},
       {"wall_time_s", wall_time_s},
   };
@@ -228,7 +230,8 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
     md << " Seismic coefficient " << general(s.seismic_coefficient)
        << " (a horizontal body force of that share of the weight along +x, from the consolidation on).";
   }
-  md << "\n\nEach trial starts at rest from the scene consolidated at F = 1 ("
+  md << "\n\nEach trial starts at rest from the scene consolidated at F = "
+     << general(consolidation.factor) << " ("
      << consolidation.steps << " steps, " << general(consolidation.time) << " s simulated, "
      << consolidation.bonds_broken << " bonds broken) and runs "
      << general(s.trial_time) << " s with dynamic coefficient " << general(s.dynamic_coefficient)

@@ -22,6 +22,7 @@ struct ConsolidationInfo {
   // Bonds it broke, and where (RunStats::broken_bonds: the first 1000).
   long bonds_broken = 0;
   std::vector<BrokenBond> broken_bonds;
+  double factor = 1.0;  // the joints' strengths were divided by this
 };
 
 // The second factor beside the search: the rigid-block limit analysis of the consolidated

@@ -6,14 +6,6 @@
 namespace dda {
 namespace {
 
-// The block's rotation from `before` to `after`: the turn of its first vertex about its
-// centroid (rigid and nearly rigid blocks; a strained block's first vertex stands for it).
-double rotation_between(const Block& before, const Block& after) {
-  const Vec2 a = before.vertices.front() - before.moments.centroid;
-  const Vec2 b = after.vertices.front() - after.moments.centroid;
-  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-}
-
 // Per block: whether a closed contact touches it.
 std::vector<char> touched_blocks(const World& w) {
   std::vector<char> touched(w.blocks.size(), 0);
@@ -26,6 +18,12 @@ std::vector<char> touched_blocks(const World& w) {
 }
 
 }  // namespace
+
+double rotation_between(const Block& before, const Block& after) {
+  const Vec2 a = before.vertices.front() - before.moments.centroid;
+  const Vec2 b = after.vertices.front() - after.moments.centroid;
+  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
 
 TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end,
                                const LimitAnalysisSettings& settings) {

@@ -34,6 +34,11 @@ struct TrialMechanism {
 // A block belongs to the mechanism when it moved more than this share of the largest.
 inline constexpr double kMechanismShare = 0.1;
 
+// A block's rotation from `before` to `after` (rad, counter-clockwise): the turn of its first
+// vertex about its centroid (rigid and nearly rigid blocks; a strained block's first vertex
+// stands for it).
+double rotation_between(const Block& before, const Block& after);
+
 // `consolidated`: where the trial started; `trial_end`: where it ended (same blocks).
 TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end,
                                const LimitAnalysisSettings& settings);

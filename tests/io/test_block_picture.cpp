@@ -133,3 +133,57 @@ TEST_CASE("block picture: title, legend and colour bar are drawn, width as asked
   CHECK(d.width == 777U);
   CHECK(d.pixels == b.pixels);
 }
+
+TEST_CASE("block picture: an arrow lies along its vector with a head at its end, and a label "
+          "sits on a white box at its point",
+          "[picture][blocks]") {
+  PictureOptions o;
+  o.width_px = 200;  // 184 px per metre over a unit square (margins of 8 px)
+  const std::vector<PictureBlock> blocks = {{rectangle(0, 0, 1, 1), kRed}};
+  const PictureFrame f = picture_frame(blocks, o);
+  const Rgb arrow{0, 0, 255};
+
+  SECTION("a horizontal arrow") {
+    o.arrows.push_back({{0.2, 0.5}, {0.8, 0.5}, arrow});
+    const Image img = draw_blocks(blocks, o);
+    const Vec2 from = f.to_pixel({0.2, 0.5}), to = f.to_pixel({0.8, 0.5});
+    const int row = static_cast<int>(from.y());
+    // The shaft: every pixel from its tail to its tip on the arrow's row (Bresenham on a
+    // horizontal line is exact).
+    int on_shaft = 0;
+    for (int x = static_cast<int>(from.x()); x <= static_cast<int>(to.x()); ++x) {
+      on_shaft += img.at(x, row) == arrow ? 1 : 0;
+    }
+    CHECK(on_shaft == static_cast<int>(to.x()) - static_cast<int>(from.x()) + 1);
+    // The head: 12 px strokes (a third of 110 px, capped at 12) back from the tip at 30
+    // degrees, so 6 px above and below the shaft 10 px behind the tip, give or take a pixel
+    // of Bresenham's rounding.
+    int head = 0;
+    for (int dy = -8; dy <= 8; ++dy) {
+      if (std::abs(dy) < 4) continue;
+      for (int dx = -12; dx <= -8; ++dx) head += img.at(static_cast<int>(to.x()) + dx, row + dy) == arrow ? 1 : 0;
+    }
+    CHECK(head >= 4);
+    // Nothing of the arrow behind its tail.
+    int behind = 0;
+    for (int x = 0; x < static_cast<int>(from.x()) - 1; ++x) behind += img.at(x, row) == arrow ? 1 : 0;
+    CHECK(behind == 0);
+  }
+
+  SECTION("a label") {
+    o.labels.push_back({{0.5, 0.5}, "17", Rgb{0, 0, 0}});
+    const Image img = draw_blocks(blocks, o);
+    const Vec2 c = f.to_pixel({0.5, 0.5});
+    // Text scale 1 at 200 px (the title's is also 1, and labels use one less, at least 1):
+    // two glyphs, 11 x 9 px, on a white box one pixel larger all round, centred on the point.
+    int white = 0, black = 0;
+    for (int y = static_cast<int>(c.y()) - 7; y <= static_cast<int>(c.y()) + 7; ++y) {
+      for (int x = static_cast<int>(c.x()) - 8; x <= static_cast<int>(c.x()) + 8; ++x) {
+        white += img.at(x, y) == Rgb{255, 255, 255} ? 1 : 0;
+        black += img.at(x, y) == Rgb{0, 0, 0} ? 1 : 0;
+      }
+    }
+    CHECK(black > 10);                  // the digits' strokes
+    CHECK(white + black == 13 * 11);    // the box: 13 x 11 px, each pixel white or ink
+  }
+}

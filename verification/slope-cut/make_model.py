@@ -9,16 +9,23 @@ to slide on its own plane: the planar limit-equilibrium factor is tan(PHI) / tan
 block size (1.1983 for PHI = 40). Face slivers and multi-block mechanisms may fail below it
 (the limit analysis of dda fos finds them).
 
-    /usr/bin/python3 make_model.py SPACING OUT.json [PHI]
+    /usr/bin/python3 make_model.py SPACING OUT.json [PHI] [--steep] [--cohesion C] [--tension T]
 
 SPACING is the bedding spacing (m); the cross joints are 1.1 x SPACING apart along the bedding.
+--steep: instead of the staggered cross joints, one persistent set dipping 75 degrees into the
+slope (trace direction 105 degrees), 1.1 x SPACING apart: parallelogram columns that reach
+from the face to the bedding, each block free to slide on its own bedding base or to
+topple. --cohesion C (Pa) and --tension T (Pa) are the bedding's cohesion and tensile
+strength (the cross joints keep none). With cohesion no single factor holds at every block
+size: each block's own bound (limit equilibrium on its base, computed by dda fos) is the
+reference.
 """
 import json
 import math
 import sys
 
 
-def model(spacing, phi):
+def model(spacing, phi, steep=False, cohesion=0.0, tension=0.0):
     a = math.radians(35.0)
     n = (-math.sin(a), math.cos(a))  # bedding normal
     u = (math.cos(a), math.sin(a))   # along the bedding, up the dip
@@ -42,7 +49,7 @@ def model(spacing, phi):
     b_max = max(dot(n, p) for p in domain)
     joints = []
     k = 0
-    while offset + k * spacing < b_max:
+    while not steep and offset + k * spacing < b_max:
         # Each cross joint spans one layer and a little more (the overhang is cut away).
         b0 = offset + (k - 0.05) * spacing
         b1 = offset + (k + 1.05) * spacing
@@ -54,11 +61,20 @@ def model(spacing, phi):
                            "to": [round(p1[0], 9), round(p1[1], 9)]})
             along += cross
         k += 1
+    joint_sets = [{"dip": 35.0, "spacing": spacing, "offset": offset, "joint_material": "bedding"}]
+    if steep:
+        joint_sets.append({"dip": 105.0, "spacing": cross, "offset": 0.0})
+        cross_text = "persistent cross joints dipping 75 degrees into the slope"
+    else:
+        cross_text = "cross joints normal to the bedding staggered layer by layer"
+    if cohesion == 0.0 and tension == 0.0:
+        verdict = f"every slab slides on its own plane at F = tan({phi}) / tan(35)"
+    else:
+        verdict = "each block's own limit-equilibrium bound is the reference"
     return {
-        "description": (f"Planar bedding at 35 degrees, phi {phi}, c 0, cross joints normal to the "
-                        f"bedding staggered layer by layer, bedding spacing {spacing} m: every slab "
-                        f"slides on its own plane at F = tan({phi}) / tan(35) "
-                        "(verification/slope-cut/make_model.py)"),
+        "description": (f"Planar bedding at 35 degrees, phi {phi}, c {cohesion:g} Pa, tensile "
+                        f"strength {tension:g} Pa, {cross_text}, bedding spacing {spacing} m: "
+                        f"{verdict} (verification/slope-cut/make_model.py)"),
         "gravity": [0.0, -9.81],
         "control": {"time_step": 0.01, "max_displacement_ratio": 0.01, "max_open_close": 20,
                     "output_every": 50},
@@ -66,12 +82,11 @@ def model(spacing, phi):
                                "poisson": 0.25, "rigid": True}},
         "joint_materials": {
             "default": {"friction_angle": phi, "cohesion": 0.0, "tensile_strength": 0.0},
-            "bedding": {"friction_angle": phi, "cohesion": 0.0, "tensile_strength": 0.0}},
+            "bedding": {"friction_angle": phi, "cohesion": cohesion, "tensile_strength": tension}},
         "material": "rock",
         "domain": [list(p) for p in domain],
         "seed": 7,
-        "joint_sets": [{"dip": 35.0, "spacing": spacing, "offset": offset,
-                        "joint_material": "bedding"}],
+        "joint_sets": joint_sets,
         "joints": joints,
         "fixed": {"edges": [0, 1], "polygon": [list(p) for p in band]},
         "min_block_area": 0.05 * spacing * spacing,
@@ -80,9 +95,19 @@ def model(spacing, phi):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (3, 4):
-        sys.exit("usage: make_model.py SPACING OUT.json [PHI]")
-    phi = float(sys.argv[3]) if len(sys.argv) == 4 else 40.0
-    with open(sys.argv[2], "w") as f:
-        json.dump(model(float(sys.argv[1]), phi), f, indent=1)
+    args = sys.argv[1:]
+    steep = "--steep" in args
+    args = [a for a in args if a != "--steep"]
+    options = {"--cohesion": 0.0, "--tension": 0.0}
+    for name in options:
+        if name in args:
+            i = args.index(name)
+            options[name] = float(args[i + 1])
+            del args[i:i + 2]
+    if len(args) not in (2, 3):
+        sys.exit("usage: make_model.py SPACING OUT.json [PHI] [--steep] [--cohesion C] [--tension T]")
+    phi = float(args[2]) if len(args) == 3 else 40.0
+    with open(args[1], "w") as f:
+        json.dump(model(float(args[0]), phi, steep, options["--cohesion"], options["--tension"]),
+                  f, indent=1)
         f.write("\n")

@@ -10,7 +10,9 @@
 #   verification/slope-cut/run.sh OUT_DIR [--smoke] [--large]
 #
 # --smoke: the 173-block slope at its own settings only (about 20 s; CI).
-# Default: the 173- and 654-block slopes, five settings each (about 15 min on 2 cores).
+# Default: the 173- and 654-block slopes, and three slopes of about 190 blocks with steep
+# persistent cross joints (no cohesion; bedding cohesion 20 kPa without and with tensile
+# strength), five settings each (about 40 min on 2 cores).
 # --large: also the 1848-block slope (about an hour more).
 # It builds nothing: it runs $DDA_BUILD_DIR/dda (default build/release).
 set -euo pipefail
@@ -32,21 +34,27 @@ done
 dda="$(verification_program "$0" dda)" || exit 2
 py=/usr/bin/python3
 mkdir -p "$out"
-spacings=(1.6)
+# Each case: its directory name, the bedding spacing, and make_model.py's options.
+cases=("spacing_1.6 1.6")
 variants=(scene)
 if [ "$smoke" -eq 0 ]; then
-  spacings=(1.6 0.8)
+  cases+=("spacing_0.8 0.8"
+          "steep_1.6 1.6 --steep"
+          "steep_cohesive_1.6 1.6 --steep --cohesion 20000"
+          "steep_bonded_1.6 1.6 --steep --cohesion 20000 --tension 20000")
   variants=(scene dt0.002 dt0.05 penalty_div10 penalty_x10)
 fi
-if [ "$large" -eq 1 ]; then spacings+=(0.47); fi
-for s in "${spacings[@]}"; do
-  case_dir="$out/spacing_$s"
+if [ "$large" -eq 1 ]; then cases+=("spacing_0.47 0.47"); fi
+for c in "${cases[@]}"; do
+  read -r name s options <<< "$c"
+  case_dir="$out/$name"
   mkdir -p "$case_dir"
-  "$py" "$here/make_model.py" "$s" "$case_dir/model.json"
+  # shellcheck disable=SC2086 # the options are words
+  "$py" "$here/make_model.py" "$s" "$case_dir/model.json" $options
   "$dda" cut "$case_dir/model.json" --out "$case_dir/scene.json" 2> "$case_dir/cut.log"
   for v in "${variants[@]}"; do
     "$py" "$here/variant.py" "$case_dir/scene.json" "$v" "$case_dir/$v.json"
-    echo "spacing $s m, $v" >&2
+    echo "$name, $v" >&2
     status=0
     "$dda" fos "$case_dir/$v.json" --out "$case_dir/fos_$v" 2> "$case_dir/fos_$v.log" || status=$?
     echo "$status" > "$case_dir/fos_$v.exit"

@@ -1,7 +1,8 @@
-"""Reads the dda fos reports under OUT_DIR/spacing_*/fos_*/ and writes OUT_DIR/report.md and
+"""Reads the dda fos reports under OUT_DIR/CASE/fos_*/ (CASE: spacing_S for the staggered
+slopes, steep*_S for those with steep cross joints) and writes OUT_DIR/report.md and
 OUT_DIR/report.json: per slope, each setting's strength-reduction factor and bracket, the
 spread of the factors (max - min over their mean), the limit-analysis factor and the smallest
-single-block bound, and the planar factor tan(40)/tan(35).
+single-block bound, and the planar factor tan(40)/tan(35) (a bound only without cohesion).
 
     /usr/bin/python3 summarise.py OUT_DIR
 """
@@ -14,9 +15,14 @@ import sys
 out = sys.argv[1]
 planar = math.tan(math.radians(40.0)) / math.tan(math.radians(35.0))
 slopes = []
-for case_dir in sorted(glob.glob(os.path.join(out, "spacing_*"))):
+case_dirs = sorted(glob.glob(os.path.join(out, "spacing_*")))
+case_dirs += sorted(glob.glob(os.path.join(out, "steep*_*")))
+for case_dir in case_dirs:
     with open(os.path.join(case_dir, "scene.json")) as f:
         scene = json.load(f)
+    with open(os.path.join(case_dir, "model.json")) as f:
+        model = json.load(f)
+    bedding = model["joint_materials"]["bedding"]
     free = sum(1 for b in scene["blocks"] if not b.get("fixed"))
     runs = []
     for report_path in sorted(glob.glob(os.path.join(case_dir, "fos_*", "report.json"))):
@@ -36,7 +42,10 @@ for case_dir in sorted(glob.glob(os.path.join(out, "spacing_*"))):
         })
     found = [x["factor"] for x in runs if x["factor"] is not None]
     spread = (max(found) - min(found)) / (sum(found) / len(found)) if len(found) > 1 else None
-    slopes.append({"spacing": float(case_dir.rsplit("_", 1)[1]), "free_blocks": free,
+    slopes.append({"case": os.path.basename(case_dir),
+                   "spacing": float(case_dir.rsplit("_", 1)[1]), "free_blocks": free,
+                   "description": model["description"],
+                   "cohesive": bedding["cohesion"] > 0 or bedding["tensile_strength"] > 0,
                    "runs": runs, "spread": spread})
 report = {"planar_factor": planar, "slopes": slopes}
 with open(os.path.join(out, "report.json"), "w") as f:
@@ -48,7 +57,9 @@ lines = ["# Cut slopes: the factor over dt and penalty", "",
          "(associative friction: an upper bound where the mechanism dilates); bound: the "
          "smallest single-block factor.", ""]
 for s in slopes:
-    lines.append(f"## Bedding spacing {s['spacing']} m, {s['free_blocks']} free blocks")
+    lines.append(f"## {s['case']}: bedding spacing {s['spacing']} m, {s['free_blocks']} free blocks")
+    lines.append("")
+    lines.append(s["description"])
     lines.append("")
     lines.append("| setting | SR factor | bracket | LA | bound | trials | wall (s) | note |")
     lines.append("|---|---|---|---|---|---|---|---|")

@@ -1,0 +1,32 @@
+// The strength-reduction factor read beside the bounds dda fos computes for the same slope:
+// the smallest single-block bound (no slope's factor exceeds it) and the rigid-block limit
+// analysis (associative friction: an upper bound where the mechanism dilates). A stable trial
+// above either is a warning; a factor far below the limit analysis gets its reason.
+// docs/factor-of-safety.md, docs/limit-analysis.md.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "studies/limit_analysis.hpp"
+#include "studies/strength_reduction.hpp"
+
+namespace dda {
+
+// A strength-reduction factor this far (a share) below the limit analysis gets a note on
+// why. 5 %: the textbook mechanisms of verification/slope lie within 0.6 % of each other,
+// the toppling case 17 % apart.
+inline constexpr double kAssociativeGapNoted = 0.05;
+
+struct FactorCrossCheck {
+  std::string text;      // empty: nothing to say
+  bool warning = false;  // the factor is not trustworthy (else a note on a difference)
+};
+
+// `result` must have found a factor. `single` sorted smallest first (single_block_bounds);
+// `la` may be not computed or not found.
+FactorCrossCheck cross_check_factor(const FosResult& result, const std::vector<BlockBound>& single,
+                                    const LimitAnalysisResult& la);
+
+}  // namespace dda
