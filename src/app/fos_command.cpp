@@ -189,6 +189,12 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     return interrupted_exit_code();
   }
   std::cerr << "dda: the consolidation broke " << info.bonds_broken << " bonds\n";
+  if (info.bonds_broken > 0) {
+    info.bond_check = check_consolidation_bonds(scene, settings.consolidation_factor,
+                                                consolidation.stats.broken_bonds, interrupted);
+    std::cerr << "dda: " << bond_check_line(info.bond_check) << " ("
+              << format(info.bond_check.wall_time_s, "%.1f") << " s)\n";
+  }
 
   // The second factor, from the same consolidated blocks: rigid-block limit analysis, and
   // each free block's own bound.

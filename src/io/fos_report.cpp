@@ -33,6 +33,25 @@ json broken_bonds_json(const std::vector<BrokenBond>& bonds) {
   return out;
 }
 
+json bond_check_json(const BondCheck& c) {
+  json unexplained = json::array();
+  for (std::size_t i = 0; i < std::min<std::size_t>(c.unexplained.size(), 100); ++i) {
+    const UnexplainedBond& u = c.unexplained[i];
+    unexplained.push_back({{"step", u.bond.step}, {"vertex_block", u.bond.vertex_block},
+                           {"edge_block", u.bond.edge_block}, {"x", u.bond.at.x()},
+                           {"y", u.bond.at.y()}, {"elastic_demand", u.elastic_demand}});
+  }
+  return {{"computed", c.computed},
+          {"reason", c.reason},
+          {"broken", c.broken},
+          {"explained", c.explained},
+          {"unexplained_count", static_cast<long>(c.unexplained.size())},
+          {"bonded_elastic", c.bonded_elastic},
+          {"overstressed_elastic", c.overstressed_elastic},
+          {"unexplained", unexplained},
+          {"wall_time_s", c.wall_time_s}};
+}
+
 // What a trial decided: "stable", "failing", or "–" when it was interrupted (no verdict).
 std::string outcome(const TrialResult& t) {
   if (t.interrupted) return "–";
@@ -123,6 +142,17 @@ json failing_mechanism_json(const LimitAnalysisInfo& l) {
 
 }  // namespace
 
+std::string bond_check_line(const BondCheck& c) {
+  if (!c.computed) return "the broken bonds were not checked against an elastic solution: " + c.reason;
+  return "of the " + std::to_string(c.broken) + " bonds the consolidation broke, " +
+         std::to_string(c.explained) +
+         " are loaded beyond their strength in an elastic solution of the slope (the same "
+         "consolidation with its bonds unbreakable, which overstresses " +
+         std::to_string(c.overstressed_elastic) + " of its " + std::to_string(c.bonded_elastic) +
+         " bonded contacts); " + std::to_string(c.unexplained.size()) +
+         " are not: the consolidation's own motion or the failure of their neighbours broke them";
+}
+
 std::string limit_analysis_line(const LimitAnalysisInfo& l) {
   const LimitAnalysisResult& a = l.analysis;
   std::string line = "limit analysis (rigid blocks, associative friction): ";
@@ -199,7 +229,8 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         {"kinetic_end", consolidation.kinetic_end},
         {"bonds_broken", consolidation.bonds_broken},
         {"broken_bonds", broken_bonds_json(consolidation.broken_bonds)},
-        {"factor", consolidation.factor}}},
+        {"factor", consolidation.factor},
+        {"bond_check", bond_check_json(consolidation.bond_check)}}},
       {"trials", trials},
       {"wall_time_s", wall_time_s},
   };
@@ -229,6 +260,10 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   if (s.seismic_coefficient != 0.0) {
     md << " Seismic coefficient " << general(s.seismic_coefficient)
        << " (a horizontal body force of that share of the weight along +x, from the consolidation on).";
+  }
+  if (consolidation.bond_check.computed || !consolidation.bond_check.reason.empty()) {
+    md << "\n\nBonds: " << bond_check_line(consolidation.bond_check)
+       << " (report.json: consolidation.bond_check; docs/factor-of-safety.md, section 1).";
   }
   md << "\n\nEach trial starts at rest from the scene consolidated at F = "
      << general(consolidation.factor) << " ("
