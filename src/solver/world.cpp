@@ -16,14 +16,14 @@ namespace {
 // see the docs/closed-forms.md ("Shi's usual controls").
 constexpr double kAutoPenaltyFactor = 50.0;
 
+}  // namespace
+
 double resolve_penalty(const Scene& scene) {
   if (scene.control.penalty) return *scene.control.penalty;
   double largest = 0.0;
   for (const Material& mat : scene.materials) largest = std::max(largest, mat.parameters.young);
   return kAutoPenaltyFactor * largest;
 }
-
-}  // namespace
 
 World make_world(const Scene& scene) {
   World world;

@@ -248,6 +248,9 @@ void set_reaches(World& world, double dt);
 // The joint law index for contacts between blocks i and j.
 int joint_of_pair(const World& world, int i, int j);
 
+// The scene's penalty (N/m): control.penalty, or "auto", 50 times the largest Young's modulus.
+double resolve_penalty(const Scene& scene);
+
 // Builds the world from a validated scene: geometry, elastic matrices, dof numbering,
 // resolved penalty and w0.
 World make_world(const Scene& scene);

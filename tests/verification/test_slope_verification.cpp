@@ -143,3 +143,27 @@ TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the plan
     CHECK(r.first_failing >= c.le_factor - 1e-9);
   }
 }
+
+TEST_CASE("the limit-equilibrium cases' factors do not move with dt (/5, x5) or the penalty "
+          "(/10, x10)",
+          "[slope]") {
+  // Each setting about 0.2 s (release). Measured (dda_verify_slope --spread, 2026-11-26):
+  // every one of these cases gives the same bracket at all five settings. The tolerance is
+  // one step of the search's final bisection (a third of its 0.01 bracket): a verdict that
+  // flipped at one trial would move the factor by that much, and no less.
+  const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
+  for (const char* name : {"planar_c10", "hoek_bray_half", "wedge_rough"}) {
+    const SlopeCase& c = find_case(cases, name);
+    const CaseResult own = run_case(c, RunOptions{}, {});
+    REQUIRE(own.found);
+    for (const SpreadSetting& setting : kSpreadSettings) {
+      RunOptions varied;
+      varied.time_step_scale = setting.time_step_scale;
+      varied.penalty_scale = setting.penalty_scale;
+      const CaseResult r = run_case(c, varied, {});
+      INFO(name << " at " << setting.name << ": " << r.factor << " against " << own.factor);
+      REQUIRE(r.found);
+      CHECK(std::abs(r.factor - own.factor) <= 0.01 / 3.0 + 1e-9);
+    }
+  }
+}

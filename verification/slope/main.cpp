@@ -21,13 +21,15 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: dda_verify_slope --out DIR [--smoke] [--case NAME]... [--jobs N] [--dynamic] [--verbose]\n"
+    "usage: dda_verify_slope --out DIR [--smoke] [--case NAME]... [--jobs N] [--dynamic] [--verbose] [--spread]\n"
     "  --out DIR    write slope.csv, report.json, report.md, mechanism_*.json into DIR\n"
     "  --smoke      the CI subset (planar_c10, hoek_bray_dry) with search tolerance 0.05\n"
     "  --case NAME  run only this case (repeatable); --list shows the names\n"
     "  --jobs N     trials at once (default 2)\n"
     "  --dynamic    dynamic trials (dynamic coefficient 1) instead of the default static ones\n"
-    "  --verbose    a line per trial on standard error\n";
+    "  --verbose    a line per trial on standard error\n"
+    "  --spread     also run every case at dt / 5, dt x 5, penalty / 10 and penalty x 10, and\n"
+    "               report the spread of the five factors\n";
 
 }  // namespace
 
@@ -35,7 +37,7 @@ int main(int argc, char** argv) {
   using namespace dda::slope;
   std::filesystem::path out;
   std::vector<std::string> only;
-  bool smoke = false, verbose = false, list = false;
+  bool smoke = false, verbose = false, list = false, spread = false;
   RunOptions options;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -51,6 +53,8 @@ int main(int argc, char** argv) {
       only.emplace_back(argv[++i]);
     } else if (arg == "--jobs" && i + 1 < argc) {
       options.jobs = std::max(1, std::atoi(argv[++i]));
+    } else if (arg == "--spread") {
+      spread = true;
     } else if (arg == "--dynamic") {
       options.dynamic_coefficient = 1.0;
     } else if (arg == "--help" || arg == "-h") {
@@ -94,6 +98,25 @@ int main(int argc, char** argv) {
         if (verbose) std::cerr << line << '\n';
       };
       results.push_back(run_case(cases[i], options, progress));
+      if (spread && results.back().found) {
+        CaseResult& r = results.back();
+        std::vector<double> found{r.factor};
+        for (const SpreadSetting& setting : kSpreadSettings) {
+          RunOptions varied = options;
+          varied.time_step_scale = setting.time_step_scale;
+          varied.penalty_scale = setting.penalty_scale;
+          const CaseResult v = run_case(cases[i], varied, progress);
+          r.spread_factors.push_back(v.found ? v.factor : 0.0);
+          if (v.found) found.push_back(v.factor);
+          std::cerr << "  " << setting.name << ": " << (v.found ? std::to_string(v.factor) : v.note) << '\n';
+        }
+        if (found.size() > 1) {
+          const auto [lo, hi] = std::minmax_element(found.begin(), found.end());
+          double mean = 0.0;
+          for (double f : found) mean += f / static_cast<double>(found.size());
+          r.spread = (*hi - *lo) / mean;
+        }
+      }
       std::cerr << "[" << i + 1 << "/" << cases.size() << "] " << case_line(cases[i], results.back()) << '\n';
     }
     RunInfo info;
@@ -101,6 +124,7 @@ int main(int argc, char** argv) {
     info.tolerance = options.tolerance;
     info.jobs = options.jobs;
     info.dynamic_coefficient = options.dynamic_coefficient;
+    info.spread = spread;
     info.detect_acceleration = a_det;
     info.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << write_reports(out, info, cases, results);

@@ -54,6 +54,14 @@ json case_json(const SlopeCase& c, const CaseResult& r) {
   if (c.limiting_friction > 0.0) j["limiting_friction_angle"] = c.limiting_friction;
   j["la_factor"] = r.la_found ? json(r.la_factor) : json(nullptr);
   if (!r.la_note.empty()) j["la_note"] = r.la_note;
+  if (!r.spread_factors.empty()) {
+    json settings = json::object();
+    for (std::size_t k = 0; k < r.spread_factors.size(); ++k) {
+      settings[kSpreadSettings[k].name] = r.spread_factors[k] > 0.0 ? json(r.spread_factors[k]) : json(nullptr);
+    }
+    j["spread_factors"] = settings;
+    j["spread"] = r.spread;
+  }
   if (r.found) {
     j["dda_factor"] = r.factor;
     j["bracket"] = {r.last_stable, r.first_failing};
@@ -119,6 +127,21 @@ std::string markdown(const RunInfo& info, const std::vector<SlopeCase>& cases,
     }
     if (!r.note.empty()) md << " " << r.note;
     md << "\n";
+  }
+  if (info.spread) {
+    md << "\n## The factor over dt and penalty (--spread)\n\n"
+          "Each case again with its time step divided and multiplied by 5 and its penalty "
+          "divided and multiplied by 10; spread = (max - min) / mean of the five factors.\n\n"
+          "| case | own |";
+    for (const SpreadSetting& setting : kSpreadSettings) md << " " << setting.name << " |";
+    md << " spread |\n|---|---|---|---|---|---|---|\n";
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const CaseResult& r = results[i];
+      if (r.spread_factors.empty()) continue;
+      md << "| " << cases[i].name << " | " << fixed(r.factor, 4) << " |";
+      for (double f : r.spread_factors) md << " " << (f > 0.0 ? fixed(f, 4) : std::string("-")) << " |";
+      md << " " << fixed(100.0 * r.spread, 2) << " % |\n";
+    }
   }
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const CaseResult& r = results[i];

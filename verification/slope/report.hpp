@@ -18,6 +18,7 @@ struct RunInfo {
   double detect_acceleration = 0.002;
   double dynamic_coefficient = 0.0;  // the trials'
   double wall_s = 0.0;
+  bool spread = false;  // --spread: each case also at kSpreadSettings
 };
 
 // One progress line for a finished case.

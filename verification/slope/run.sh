@@ -3,7 +3,7 @@
 # limit-equilibrium factors of Hoek & Bray's examples. Prints the report and leaves slope.csv,
 # report.md, report.json, mechanism_*.json and mechanism_*.png in OUT_DIR.
 #
-#   verification/slope/run.sh OUT_DIR [--smoke] [--case NAME]... [--dynamic] [--verbose]
+#   verification/slope/run.sh OUT_DIR [--smoke] [--case NAME]... [--dynamic] [--verbose] [--spread]
 #
 # It builds nothing: it runs $DDA_BUILD_DIR/dda_verify_slope (default: build/release of this
 # repository; build it first with `cmake --preset release && cmake --build --preset release`),
@@ -14,7 +14,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
 # shellcheck source=../common/program.sh
 source "$root/verification/common/program.sh"
-out="$(verification_out_dir "$0" "[--smoke] [--case NAME]... [--dynamic] [--verbose]" "$@")" || exit 2
+out="$(verification_out_dir "$0" "[--smoke] [--case NAME]... [--dynamic] [--verbose] [--spread]" "$@")" || exit 2
 shift
 exe="$(verification_program "$0" dda_verify_slope)" || exit 2
 "$exe" --out "$out" "$@"

@@ -97,6 +97,10 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
     }
     throw;
   }
+  if (options.time_step_scale != 1.0) {
+    for (double& dt : scene.control.time_steps) dt *= options.time_step_scale;
+  }
+  if (options.penalty_scale != 1.0) scene.control.penalty = options.penalty_scale * resolve_penalty(scene);
   // A case whose factor is below 1 (the uplift and full-crack cases) cannot come to rest at
   // full strength: it consolidates at double strength (consolidation factor 0.5), else a
   // block that slid during the consolidation would have opened its tension crack before the

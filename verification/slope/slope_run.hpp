@@ -16,7 +16,20 @@ struct RunOptions {
   int jobs = 2;             // trials at once (threads)
   double tolerance = 0.01;  // the search's bracket width
   double dynamic_coefficient = 0.0;  // the trials' (FosSettings); 0: static, the default
+  // The scene's time steps and its penalty (auto when it gives none) multiplied by these:
+  // the spread of the factor over the settings (--spread).
+  double time_step_scale = 1.0;
+  double penalty_scale = 1.0;
 };
+
+// The settings --spread runs beside each case's own: dt / 5 and x 5, penalty / 10 and x 10.
+struct SpreadSetting {
+  const char* name;
+  double time_step_scale;
+  double penalty_scale;
+};
+inline constexpr SpreadSetting kSpreadSettings[] = {
+    {"dt/5", 0.2, 1.0}, {"dt*5", 5.0, 1.0}, {"penalty/10", 1.0, 0.1}, {"penalty*10", 1.0, 10.0}};
 
 // A toppling column at the first failing trial (moved against the consolidated state).
 struct ColumnMotion {
@@ -66,6 +79,10 @@ struct CaseResult {
     double moved = 0.0;  // m, the largest watched displacement
   };
   std::vector<ScanPoint> scan;
+  // --spread: the factor at each of kSpreadSettings (0 where none was found), and the
+  // spread of all five, (max - min) / mean (0 when fewer than two were found).
+  std::vector<double> spread_factors;
+  double spread = 0.0;
 };
 
 // Runs `c`. A case that needs the "water" key is skipped, with a note, when the scene reader
