@@ -258,7 +258,9 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
       limit.has_failing = true;
       limit.failing_factor = t.factor;
       limit.failing = trial_mechanism(world, t.world, la_settings);
-      std::cerr << "dda: " << failing_mechanism_line(limit) << "\n";
+      std::vector<std::string> names;
+      for (const JointMaterial& j : scene.joint_materials) names.push_back(j.name);
+      std::cerr << "dda: " << failing_mechanism_line(limit, names) << "\n";
       break;
     }
     // The search's factor beside the bounds it may not exceed (the smallest single-block

@@ -118,8 +118,14 @@ json limit_analysis_json(const LimitAnalysisInfo& l) {
           {"single_block_bounds", bounds}};
 }
 
+std::vector<std::string> joint_names(const Scene& scene) {
+  std::vector<std::string> out;
+  for (const JointMaterial& j : scene.joint_materials) out.push_back(j.name);
+  return out;
+}
+
 // The report's "failing_mechanism" object.
-json failing_mechanism_json(const LimitAnalysisInfo& l) {
+json failing_mechanism_json(const LimitAnalysisInfo& l, const std::vector<std::string>& joint_names) {
   const TrialMechanism& m = l.failing;
   json blocks = json::array();
   for (std::size_t i = 0; i < std::min<std::size_t>(m.blocks.size(), kReportedMechanismBlocks); ++i) {
@@ -130,8 +136,16 @@ json failing_mechanism_json(const LimitAnalysisInfo& l) {
                       {"mode", b.mode}});
   }
   const LimitAnalysisResult& g = m.group_bound;
+  json joints = json::array();
+  for (const JointActivity& a : m.joints) {
+    const auto j = static_cast<std::size_t>(a.joint);
+    joints.push_back({{"joint", j < joint_names.size() ? json(joint_names[j]) : json(a.joint)},
+                      {"sliding", a.sliding},
+                      {"opened", a.opened}});
+  }
   return {{"F", l.failing_factor},
           {"mode", m.mode},
+          {"joints", joints},
           {"block_count", m.blocks.size()},
           {"blocks", blocks},
           {"group_bound", {{"computed", g.computed},
@@ -171,10 +185,21 @@ std::string limit_analysis_line(const LimitAnalysisInfo& l) {
   return line;
 }
 
-std::string failing_mechanism_line(const LimitAnalysisInfo& l) {
+std::string failing_mechanism_line(const LimitAnalysisInfo& l,
+                                   const std::vector<std::string>& joint_names) {
   const TrialMechanism& m = l.failing;
   std::string line = "the first failing trial (F = " + fixed(l.failing_factor, 4) + ") moved " +
                      std::to_string(m.blocks.size()) + " blocks: " + m.mode;
+  if (!m.joints.empty()) {
+    line += ", slipping on";
+    for (std::size_t i = 0; i < m.joints.size(); ++i) {
+      const JointActivity& a = m.joints[i];
+      const auto j = static_cast<std::size_t>(a.joint);
+      line += (i == 0 ? " " : ", ") + (j < joint_names.size() ? joint_names[j] : "joint " + std::to_string(a.joint)) +
+              " (" + std::to_string(a.sliding) + " contacts sliding, " + std::to_string(a.opened) +
+              " opened)";
+    }
+  }
   const LimitAnalysisResult& g = m.group_bound;
   if (g.found) {
     line += "; that group alone, every other block held, has the limit-analysis factor " +
@@ -237,7 +262,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   if (limit != nullptr) {
     report["method"] = limit->method;
     report["limit_analysis"] = limit_analysis_json(*limit);
-    if (limit->has_failing) report["failing_mechanism"] = failing_mechanism_json(*limit);
+    if (limit->has_failing) report["failing_mechanism"] = failing_mechanism_json(*limit, joint_names(scene));
   }
   write_text_file((dir / "report.json").string(), report.dump(2) + "\n");
 
@@ -303,7 +328,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
     }
   }
   if (limit != nullptr && limit->has_failing) {
-    md << "\n## The first failing trial's mechanism\n\n" << failing_mechanism_line(*limit)
+    md << "\n## The first failing trial's mechanism\n\n" << failing_mechanism_line(*limit, joint_names(scene))
        << ".\n\nBlocks that moved more than " << general(kMechanismShare)
        << " of the largest displacement (\"rotating\": their rotation moved their corners more "
           "than their centroid moved):\n\n| block | displacement x (m) | displacement y (m) | "

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <unordered_map>
 
 namespace dda {
 namespace {
@@ -15,6 +18,43 @@ std::vector<char> touched_blocks(const World& w) {
     touched[static_cast<std::size_t>(c.key.edge_block)] = 1;
   }
   return touched;
+}
+
+std::uint64_t key_of(const ContactKey& k) {
+  // Block and vertex/edge indices each below 2^16 in any scene dda runs in reasonable time;
+  // a collision would only miscount an opened contact.
+  const auto part = [](int v) { return static_cast<std::uint64_t>(v) & 0xffffU; };
+  return part(k.vertex_block) << 48 | part(k.vertex) << 32 | part(k.edge_block) << 16 | part(k.edge);
+}
+
+std::vector<JointActivity> joint_activity(const World& before, const World& after,
+                                          const std::vector<int>& group) {
+  std::vector<char> in_group(after.blocks.size(), 0);
+  for (int b : group) in_group[static_cast<std::size_t>(b)] = 1;
+  std::unordered_map<std::uint64_t, ContactMode> start;
+  for (const Contact& c : before.contacts) start[key_of(c.key)] = c.state.mode;
+  std::map<int, JointActivity> by_joint;
+  for (const Contact& c : after.contacts) {
+    if (!in_group[static_cast<std::size_t>(c.key.vertex_block)] &&
+        !in_group[static_cast<std::size_t>(c.key.edge_block)]) {
+      continue;
+    }
+    const auto was = start.find(key_of(c.key));
+    const bool opened = c.state.mode == ContactMode::Open && was != start.end() &&
+                        was->second != ContactMode::Open;
+    const bool sliding = c.state.mode == ContactMode::Slide;
+    if (!opened && !sliding) continue;
+    JointActivity& a = by_joint[c.joint];
+    a.joint = c.joint;
+    a.sliding += sliding ? 1 : 0;
+    a.opened += opened ? 1 : 0;
+  }
+  std::vector<JointActivity> out;
+  for (const auto& [joint, a] : by_joint) out.push_back(a);
+  std::stable_sort(out.begin(), out.end(), [](const JointActivity& a, const JointActivity& b) {
+    return a.sliding > b.sliding;
+  });
+  return out;
 }
 
 }  // namespace
@@ -69,6 +109,7 @@ TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end
   } else {
     m.mode = 2 * rotating > static_cast<int>(m.blocks.size()) ? "rotating group" : "sliding group";
   }
+  m.joints = joint_activity(consolidated, trial_end, group);
   m.group_bound = limit_analysis(consolidated, settings, group);
   return m;
 }

@@ -20,6 +20,15 @@ struct BlockMotion {
   std::string mode;
 };
 
+// What one joint material's contacts on the mechanism's blocks did in the trial: which joints
+// the blocks slip on and which open names the mechanism (sliding on the bedding; toppling:
+// slip on the cross joints, the bedding opening at the columns' heels).
+struct JointActivity {
+  int joint = 0;      // index into the scene's joint materials
+  long sliding = 0;   // contacts sliding at the trial's end
+  long opened = 0;    // contacts closed when it started and open at its end
+};
+
 struct TrialMechanism {
   // The blocks whose centroid moved more than kMechanismShare of the largest displacement,
   // largest first.
@@ -27,6 +36,9 @@ struct TrialMechanism {
   // "sliding", "rotating" or "falling" for one block; "sliding group" or "rotating group"
   // (by the mode of most of its blocks) for several; "none" when nothing moved.
   std::string mode;
+  // Per joint material that has any, the contacts touching a block of the mechanism that
+  // slide or opened, most sliding first.
+  std::vector<JointActivity> joints;
   // The limit analysis with only these blocks free.
   LimitAnalysisResult group_bound;
 };

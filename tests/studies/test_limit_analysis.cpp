@@ -203,6 +203,12 @@ TEST_CASE("a failing trial's mechanism: the block slides down its plane, and its
   const Vec2 u = m.blocks[0].displacement;
   CHECK(u.dot(down) == Approx(u.norm()).epsilon(1e-4));
   CHECK(std::abs(m.blocks[0].rotation) * 4.0 < 1e-3 * u.norm());
+  // It slides on its one joint (the scene's "default", index 0) and lifts off nothing: the
+  // contacts under its base (two corners) slide, none opens.
+  REQUIRE(m.joints.size() == 1);
+  CHECK(m.joints[0].joint == 0);
+  CHECK(m.joints[0].sliding >= 2);
+  CHECK(m.joints[0].opened == 0);
   REQUIRE(m.group_bound.found);
   const double le = std::tan(deg(35.0)) / std::tan(deg(30.0));
   CHECK(m.group_bound.factor <= le);
