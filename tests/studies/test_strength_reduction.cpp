@@ -440,6 +440,17 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   const double group = mechanism.at("group_bound").at("factor").get<double>();
   CHECK(group <= 1.2 + 1e-9);
   CHECK(group >= 1.2 / 1.005 - 1e-9);
+  // It slides on its plane's joint, named as the scene names it.
+  REQUIRE(mechanism.at("joints").size() == 1);
+  CHECK(mechanism.at("joints").at(0).at("joint") == "default");
+  CHECK(mechanism.at("joints").at(0).at("sliding").get<long>() >= 1);
+  // The consolidation's factor, and no bond check where no bond broke.
+  CHECK(report.at("settings").at("consolidation_factor").get<double>() == 1.0);
+  CHECK(report.at("consolidation").at("factor").get<double>() == 1.0);
+  CHECK(report.at("consolidation").at("bond_check").at("computed") == false);
+  // The pictures of the bracket's trials.
+  CHECK(std::filesystem::exists(dir.path / "out" / "first_failing.png"));
+  CHECK(std::filesystem::exists(dir.path / "out" / "last_stable.png"));
 
   // No failing trial up to --max-factor 1.1: no factor, exit 3, and the report says why.
   const auto none = test::run_command(std::string(DDA_EXE) + " fos " +
