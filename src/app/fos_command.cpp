@@ -30,6 +30,18 @@ std::string format(double x, const char* spec) {
   return buf;
 }
 
+// The block's polygon moved rigidly by the displacement u of its centroid and the small
+// rotation theta about it: each vertex p to p + u + theta x (p - c). The pictures draw
+// motions multiplied to be seen with it.
+Polygon moved_rigidly(const Block& b, const Vec2& u, double theta) {
+  Polygon p = b.vertices;
+  for (Vec2& v : p) {
+    const Vec2 r = v - b.moments.centroid;
+    v += u + theta * Vec2(-r.y(), r.x());
+  }
+  return p;
+}
+
 // How many of a trial's moving blocks get an arrow, and how many a number: beyond these the
 // picture of a 2000-block slope is a smear; the report lists them all.
 constexpr std::size_t kArrowsDrawn = 60;
@@ -44,24 +56,8 @@ constexpr std::size_t kNumbersDrawn = 25;
 // largest), as report.json numbers blocks.
 void write_mechanism_picture(const std::filesystem::path& path, const World& consolidated,
                              const TrialResult& t, const std::string& what) {
-  struct Moved {
-    std::size_t block;
-    Vec2 u;
-    double rotation;
-  };
-  double largest = 0.0;
-  std::vector<Moved> moved;
-  for (std::size_t i = 0; i < consolidated.blocks.size(); ++i) {
-    const Block& before = consolidated.blocks[i];
-    const Block& after = t.world.blocks[i];
-    if (before.fixed) continue;
-    moved.push_back({i, after.moments.centroid - before.moments.centroid,
-                     rotation_between(before, after)});
-    largest = std::max(largest, moved.back().u.norm());
-  }
-  std::erase_if(moved, [&](const Moved& m) { return m.u.norm() <= kMechanismShare * largest; });
-  std::sort(moved.begin(), moved.end(),
-            [](const Moved& a, const Moved& b) { return a.u.norm() > b.u.norm(); });
+  const std::vector<BlockMotion> moved = moved_blocks(consolidated, t.world);
+  const double largest = moved.empty() ? 0.0 : moved.front().displacement.norm();
   const double shown = 0.25 * std::sqrt(median_free_block_area(consolidated));
   const double x = largest > 0.0 ? shown / largest : 0.0;
   std::vector<PictureBlock> blocks;
@@ -70,22 +66,18 @@ void write_mechanism_picture(const std::filesystem::path& path, const World& con
   }
   PictureOptions options;
   for (auto it = moved.rbegin(); it != moved.rend(); ++it) {  // the largest on top
-    const Block& b = consolidated.blocks[it->block];
-    Polygon p = b.vertices;
-    for (Vec2& v : p) {
-      const Vec2 r = v - b.moments.centroid;
-      v += x * (it->u + it->rotation * Vec2(-r.y(), r.x()));
-    }
-    blocks.push_back({p, sequential_colour(it->u.norm() / largest)});
+    const Block& b = consolidated.blocks[static_cast<std::size_t>(it->block)];
+    blocks.push_back({moved_rigidly(b, x * it->displacement, x * it->rotation),
+                      sequential_colour(it->displacement.norm() / largest)});
   }
   // The arrows are longer than the drawn displacement (the largest 0.8 of a typical block)
   // so that their direction reads at a slope's scale.
   for (std::size_t k = 0; k < moved.size() && k < kArrowsDrawn; ++k) {
-    const Vec2 c = consolidated.blocks[moved[k].block].moments.centroid;
-    options.arrows.push_back({c, c + 3.2 * x * moved[k].u, Rgb{200, 0, 0}});
+    const Vec2 c = consolidated.blocks[static_cast<std::size_t>(moved[k].block)].moments.centroid;
+    options.arrows.push_back({c, c + 3.2 * x * moved[k].displacement, Rgb{200, 0, 0}});
   }
   for (std::size_t k = 0; k < moved.size() && k < kNumbersDrawn; ++k) {
-    const Vec2 c = consolidated.blocks[moved[k].block].moments.centroid;
+    const Vec2 c = consolidated.blocks[static_cast<std::size_t>(moved[k].block)].moments.centroid;
     options.labels.push_back({c, std::to_string(moved[k].block), Rgb{0, 0, 0}});
   }
   options.width_px = 1600;
@@ -113,12 +105,8 @@ void write_limit_analysis_picture(const std::filesystem::path& path, const World
   }
   for (auto it = la.mechanism.rbegin(); it != la.mechanism.rend(); ++it) {  // fastest on top
     const Block& b = world.blocks[static_cast<std::size_t>(it->block)];
-    Polygon moved = b.vertices;
-    for (Vec2& p : moved) {
-      const Vec2 r = p - b.moments.centroid;
-      p += shown * (it->velocity + it->angular_velocity * Vec2(-r.y(), r.x()));
-    }
-    blocks.push_back({moved, sequential_colour(it->velocity.norm())});
+    blocks.push_back({moved_rigidly(b, shown * it->velocity, shown * it->angular_velocity),
+                      sequential_colour(it->velocity.norm())});
   }
   PictureOptions options;
   options.width_px = 1600;
@@ -258,9 +246,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
       limit.has_failing = true;
       limit.failing_factor = t.factor;
       limit.failing = trial_mechanism(world, t.world, la_settings);
-      std::vector<std::string> names;
-      for (const JointMaterial& j : scene.joint_materials) names.push_back(j.name);
-      std::cerr << "dda: " << failing_mechanism_line(limit, names) << "\n";
+      std::cerr << "dda: " << failing_mechanism_line(limit, scene) << "\n";
       break;
     }
     // The search's factor beside the bounds it may not exceed (the smallest single-block

@@ -185,8 +185,8 @@ std::string limit_analysis_line(const LimitAnalysisInfo& l) {
   return line;
 }
 
-std::string failing_mechanism_line(const LimitAnalysisInfo& l,
-                                   const std::vector<std::string>& joint_names) {
+std::string failing_mechanism_line(const LimitAnalysisInfo& l, const Scene& scene) {
+  const std::vector<std::string> names = joint_names(scene);
   const TrialMechanism& m = l.failing;
   std::string line = "the first failing trial (F = " + fixed(l.failing_factor, 4) + ") moved " +
                      std::to_string(m.blocks.size()) + " blocks: " + m.mode;
@@ -195,7 +195,7 @@ std::string failing_mechanism_line(const LimitAnalysisInfo& l,
     for (std::size_t i = 0; i < m.joints.size(); ++i) {
       const JointActivity& a = m.joints[i];
       const auto j = static_cast<std::size_t>(a.joint);
-      line += (i == 0 ? " " : ", ") + (j < joint_names.size() ? joint_names[j] : "joint " + std::to_string(a.joint)) +
+      line += (i == 0 ? " " : ", ") + (j < names.size() ? names[j] : "joint " + std::to_string(a.joint)) +
               " (" + std::to_string(a.sliding) + " contacts sliding, " + std::to_string(a.opened) +
               " opened)";
     }
@@ -328,7 +328,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
     }
   }
   if (limit != nullptr && limit->has_failing) {
-    md << "\n## The first failing trial's mechanism\n\n" << failing_mechanism_line(*limit, joint_names(scene))
+    md << "\n## The first failing trial's mechanism\n\n" << failing_mechanism_line(*limit, scene)
        << ".\n\nBlocks that moved more than " << general(kMechanismShare)
        << " of the largest displacement (\"rotating\": their rotation moved their corners more "
           "than their centroid moved):\n\n| block | displacement x (m) | displacement y (m) | "

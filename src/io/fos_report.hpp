@@ -54,9 +54,8 @@ std::string bond_check_line(const BondCheck& check);
 // One line on the limit analysis, as dda fos prints it.
 std::string limit_analysis_line(const LimitAnalysisInfo& limit);
 // One line on the first failing trial's mechanism (limit.has_failing), naming the joints
-// its blocks slip on and open (joint_names: the scene's joint materials, in order).
-std::string failing_mechanism_line(const LimitAnalysisInfo& limit,
-                                   const std::vector<std::string>& joint_names);
+// its blocks slip on and open by the scene's joint material names.
+std::string failing_mechanism_line(const LimitAnalysisInfo& limit, const Scene& scene);
 
 // One line per finished trial, as the progress shows it:
 // "trial F = 1.250: stable (came to rest), largest displacement 0.0021 m, 812 steps, 3.2 s".

@@ -65,21 +65,15 @@ double rotation_between(const Block& before, const Block& after) {
   return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
 }
 
-TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end,
-                               const LimitAnalysisSettings& settings) {
-  TrialMechanism m;
+std::vector<BlockMotion> moved_blocks(const World& consolidated, const World& trial_end) {
   double largest = 0.0;
   for (std::size_t i = 0; i < consolidated.blocks.size(); ++i) {
     largest = std::max(largest, (trial_end.blocks[i].moments.centroid -
                                  consolidated.blocks[i].moments.centroid).norm());
   }
-  if (largest <= 0.0) {
-    m.mode = "none";
-    return m;
-  }
+  std::vector<BlockMotion> out;
+  if (largest <= 0.0) return out;
   const std::vector<char> touched = touched_blocks(trial_end);
-  std::vector<int> group;
-  int rotating = 0;
   for (std::size_t i = 0; i < consolidated.blocks.size(); ++i) {
     const Block& before = consolidated.blocks[i];
     const Block& after = trial_end.blocks[i];
@@ -97,13 +91,29 @@ TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end
     } else {
       b.mode = std::abs(b.rotation) * radius > u.norm() ? "rotating" : "sliding";
     }
-    rotating += b.mode == "rotating" ? 1 : 0;
-    m.blocks.push_back(b);
-    group.push_back(b.block);
+    out.push_back(b);
   }
-  std::sort(m.blocks.begin(), m.blocks.end(), [](const BlockMotion& a, const BlockMotion& b) {
+  std::sort(out.begin(), out.end(), [](const BlockMotion& a, const BlockMotion& b) {
     return a.displacement.norm() > b.displacement.norm();
   });
+  return out;
+}
+
+TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end,
+                               const LimitAnalysisSettings& settings) {
+  TrialMechanism m;
+  m.blocks = moved_blocks(consolidated, trial_end);
+  if (m.blocks.empty()) {
+    m.mode = "none";
+    return m;
+  }
+  std::vector<int> group;
+  int rotating = 0;
+  for (const BlockMotion& b : m.blocks) {
+    group.push_back(b.block);
+    rotating += b.mode == "rotating" ? 1 : 0;
+  }
+  std::sort(group.begin(), group.end());
   if (m.blocks.size() == 1) {
     m.mode = m.blocks.front().mode;
   } else {

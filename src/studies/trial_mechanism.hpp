@@ -51,6 +51,11 @@ inline constexpr double kMechanismShare = 0.1;
 // stands for it).
 double rotation_between(const Block& before, const Block& after);
 
+// The blocks whose centroid moved more than kMechanismShare of the largest displacement
+// from `consolidated` to `trial_end`, largest first, each with its mode (empty when nothing
+// moved). The mechanism's blocks, and what its pictures draw.
+std::vector<BlockMotion> moved_blocks(const World& consolidated, const World& trial_end);
+
 // `consolidated`: where the trial started; `trial_end`: where it ended (same blocks).
 TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end,
                                const LimitAnalysisSettings& settings);
