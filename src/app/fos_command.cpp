@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
@@ -120,12 +121,20 @@ void write_limit_analysis_picture(const std::filesystem::path& path, const World
 }  // namespace
 
 int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,
-                const std::string& method, bool skip_limit_analysis) {
+                const std::string& method, bool skip_limit_analysis, bool dynamic_check) {
   if (method != "strength-reduction" && method != "limit-analysis") {
     throw InputError("fos: --method: must be strength-reduction or limit-analysis, got " + method);
   }
   if (skip_limit_analysis && method == "limit-analysis") {
     throw InputError("fos: --skip-limit-analysis with --method limit-analysis leaves nothing to do");
+  }
+  if (dynamic_check && method == "limit-analysis") {
+    throw InputError("fos: --dynamic-check checks the strength-reduction search's trials; "
+                     "--method limit-analysis runs none");
+  }
+  if (dynamic_check && settings.dynamic_coefficient >= 1.0) {
+    throw InputError("fos: --dynamic-check compares dynamic trials with the search's, which are "
+                     "dynamic already (--dynamic-coefficient 1)");
   }
   if (scene_path.empty()) {
     throw InputError(
@@ -207,6 +216,9 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     limit.analysis = limit_analysis(world, capped);
   }
   std::cerr << "dda: " << limit_analysis_line(limit) << "\n";
+  // The limit analysis's upper end bounds the factor of non-dilating joints from above: the
+  // search tries it first instead of F = 2 (FosSettings::first_failing_guess).
+  if (limit.analysis.found) settings.first_failing_guess = limit.analysis.upper;
   const auto draw_limit_analysis = [&] {
     write_limit_analysis_picture(std::filesystem::path(out_dir) / "limit_analysis.png", world,
                                  limit.analysis);
@@ -259,7 +271,25 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
       std::cerr << "dda: " << (check.warning ? "warning: " : "note: ") << check.text << "\n";
     }
   }
-  write_fos_report(out_dir, scene, settings, info, reported, wall, &limit);
+  // Dynamic trials just below and above the factor, run after the search (two at once with
+  // two jobs).
+  std::optional<DynamicCheck> dynamic;
+  if (dynamic_check && result.found) {
+    FosSettings dyn = settings;
+    dyn.dynamic_coefficient = 1.0;
+    std::cerr << "dda: dynamic trials at F x (1 -+ " << kDynamicAgreement << ")\n";
+    dynamic = judge_dynamic_check(
+        result, run_trials(world, dyn, dynamic_check_factors(result.factor_of_safety),
+                           [](const TrialResult& t) { std::cerr << "dda: dynamic " << trial_line(t) << "\n"; },
+                           interrupted));
+    if (interrupted()) {
+      dynamic->agrees = false;
+      dynamic->text = stop_message("during the dynamic check; the search's factor stands");
+    }
+    std::cerr << "dda: " << (dynamic->agrees ? "" : "note: ") << dynamic->text << "\n";
+  }
+  write_fos_report(out_dir, scene, settings, info, reported, wall, &limit,
+                   dynamic ? &*dynamic : nullptr);
   if (!result.found) {
     std::cerr << "dda: error: no factor of safety: " << result.message << "; trials in "
               << out_dir << "/report.json\n";
@@ -278,7 +308,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   std::cerr << "dda: factor of safety " << result.factor_of_safety << " (bracket "
             << result.last_stable << " to " << result.first_failing << ") in " << wall
             << " s; report and pictures in " << out_dir << "\n";
-  return kExitOk;
+  return interrupted() ? interrupted_exit_code() : kExitOk;
 }
 
 }  // namespace dda

@@ -175,6 +175,7 @@ int main(int argc, char** argv) {
   dda::FosSettings fos;
   std::string fos_method = "strength-reduction";
   bool fos_skip_la = false;
+  bool fos_dynamic_check = false;
   CLI::App* fos_app = app.add_subcommand(
       "fos", "Factor of safety by strength reduction (docs/factor-of-safety.md)");
   fos_app->add_option("scene", fos_scene, "Scene file (JSON, see docs/scene-format.md)");
@@ -207,6 +208,9 @@ int main(int argc, char** argv) {
                       "limit-analysis (that alone; docs/limit-analysis.md)")
       ->capture_default_str()
       ->check(CLI::IsMember({"strength-reduction", "limit-analysis"}));
+  fos_app->add_flag("--dynamic-check", fos_dynamic_check,
+                    "After the search, run dynamic trials at 0.95 F and 1.05 F and say whether "
+                    "the dynamic factor lies within 5 % of the static one");
   fos_app->add_flag("--skip-limit-analysis", fos_skip_la,
                     "Run the strength-reduction search without the limit analysis beside it");
   fos_app->add_option("--seismic-coefficient", fos.seismic_coefficient,
@@ -236,7 +240,7 @@ int main(int argc, char** argv) {
     if (cut->parsed()) require_output_path(scene_out, "cut");
     if (run->parsed()) return run_command(scene_path, out_dir);
     if (point->parsed()) return material_point_command(spec_path, csv_file);
-    if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_method, fos_skip_la);
+    if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_method, fos_skip_la, fos_dynamic_check);
     if (cut->parsed()) return dda::cut_command(model_path, scene_out);
   } catch (const dda::InputError& e) {
     std::cerr << "dda: error: " << e.what() << "\n";

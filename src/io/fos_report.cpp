@@ -71,7 +71,12 @@ json trial_json(const TrialResult& t) {
           {"simulated_time", t.simulated_time},
           {"wall_time_s", t.wall_time_s},
           {"watched_point", t.watched_point},
-          {"interrupted", t.interrupted}};
+          {"interrupted", t.interrupted},
+          {"cut_steps", t.stats.cut_steps},
+          {"cuts_for_open_close", t.stats.cuts_for_open_close},
+          {"cuts_for_displacement", t.stats.cuts_for_displacement},
+          {"solves", t.stats.iterations},
+          {"open_close_iterations", t.stats.open_close_total}};
 }
 
 }  // namespace
@@ -146,6 +151,7 @@ json failing_mechanism_json(const LimitAnalysisInfo& l, const std::vector<std::s
   return {{"F", l.failing_factor},
           {"mode", m.mode},
           {"joints", joints},
+          {"slip", {{"along", m.slip.along}, {"across", m.slip.across}, {"between", m.slip.between}}},
           {"block_count", m.blocks.size()},
           {"blocks", blocks},
           {"group_bound", {{"computed", g.computed},
@@ -200,6 +206,10 @@ std::string failing_mechanism_line(const LimitAnalysisInfo& l, const Scene& scen
               " opened)";
     }
   }
+  if (m.slip.along + m.slip.across + m.slip.between > 0) {
+    line += "; of its sliding contacts " + std::to_string(m.slip.along) + " slip along the motion, " +
+            std::to_string(m.slip.across) + " across it";
+  }
   const LimitAnalysisResult& g = m.group_bound;
   if (g.found) {
     line += "; that group alone, every other block held, has the limit-analysis factor " +
@@ -213,7 +223,8 @@ std::string failing_mechanism_line(const LimitAnalysisInfo& l, const Scene& scen
 
 void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
                       const FosSettings& s, const ConsolidationInfo& consolidation,
-                      const FosResult& result, double wall_time_s, const LimitAnalysisInfo* limit) {
+                      const FosResult& result, double wall_time_s, const LimitAnalysisInfo* limit,
+                      const DynamicCheck* dynamic) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
@@ -244,6 +255,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         {"reduce_materials", s.reduce_materials},
         {"jobs", s.jobs},
         {"seismic_coefficient", s.seismic_coefficient},
+        {"first_failing_guess", s.first_failing_guess > 0.0 ? json(s.first_failing_guess) : json(nullptr)},
         {"consolidation_factor", consolidation.factor},
         {"watched", scene.monitors.empty() ? "free block centroids" : "monitors"}}},
       {"joint_laws", laws},
@@ -263,6 +275,16 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
     report["method"] = limit->method;
     report["limit_analysis"] = limit_analysis_json(*limit);
     if (limit->has_failing) report["failing_mechanism"] = failing_mechanism_json(*limit, joint_names(scene));
+  }
+  if (dynamic != nullptr) {
+    json dyn_trials = json::array();
+    for (const TrialResult& t : dynamic->trials) dyn_trials.push_back(trial_json(t));
+    report["dynamic_check"] = {{"computed", dynamic->computed},
+                               {"agrees", dynamic->agrees},
+                               {"text", dynamic->text},
+                               {"trials", dyn_trials}};
+  } else {
+    report["dynamic_check"] = {{"computed", false}};
   }
   write_text_file((dir / "report.json").string(), report.dump(2) + "\n");
 
@@ -310,6 +332,17 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
     md << "| " << fixed(t.factor, 4) << " | " << outcome(t) << " | "
        << t.verdict << " | " << general(t.largest_displacement) << " | " << general(t.end_speed)
        << " | " << general(t.end_speed_limit) << " | " << t.steps << " | " << fixed(t.wall_time_s, 2) << " |\n";
+  }
+  if (dynamic != nullptr && dynamic->computed) {
+    md << "\n## Static and dynamic trials\n\n" << dynamic->text
+       << " (dynamic coefficient 1, the same trial time and verdict; docs/factor-of-safety.md).\n\n"
+       << "| F | verdict | why | largest displacement (m) | end speed (m/s) | speed limit (m/s) | steps | wall time (s) |\n"
+       << "|---|---|---|---|---|---|---|---|\n";
+    for (const TrialResult& t : dynamic->trials) {
+      md << "| " << fixed(t.factor, 4) << " | " << outcome(t) << " | " << t.verdict << " | "
+         << general(t.largest_displacement) << " | " << general(t.end_speed) << " | "
+         << general(t.end_speed_limit) << " | " << t.steps << " | " << fixed(t.wall_time_s, 2) << " |\n";
+    }
   }
   if (limit != nullptr) {
     md << "\n## A second factor: rigid-block limit analysis\n\n" << limit_analysis_line(*limit)

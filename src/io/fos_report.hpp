@@ -8,6 +8,7 @@
 
 #include "solver/scene.hpp"
 #include "studies/consolidation_bonds.hpp"
+#include "studies/factor_cross_check.hpp"
 #include "studies/limit_analysis.hpp"
 #include "studies/trial_mechanism.hpp"
 #include "studies/strength_reduction.hpp"
@@ -41,11 +42,13 @@ struct LimitAnalysisInfo {
 };
 
 // Writes DIR/report.json and DIR/report.md (creating DIR). Throws std::runtime_error naming
-// the path when it cannot. `limit` may be null (the analysis was not reached).
+// the path when it cannot. `limit` may be null (the analysis was not reached); `dynamic` is
+// null unless --dynamic-check ran.
 void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
                       const FosSettings& settings, const ConsolidationInfo& consolidation,
                       const FosResult& result, double wall_time_s,
-                      const LimitAnalysisInfo* limit = nullptr);
+                      const LimitAnalysisInfo* limit = nullptr,
+                      const DynamicCheck* dynamic = nullptr);
 
 // The consolidation's broken bonds against the elastic solution, one line (no newline):
 // "of the 118 bonds the consolidation broke, 95 are overstressed ...".

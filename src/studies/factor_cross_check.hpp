@@ -29,4 +29,24 @@ struct FactorCrossCheck {
 FactorCrossCheck cross_check_factor(const FosResult& result, const std::vector<BlockBound>& single,
                                     const LimitAnalysisResult& la);
 
+// Static trials against dynamic ones (`dda fos --dynamic-check`): dynamic trials (dynamic
+// coefficient 1) at (1 - a) F and (1 + a) F, F the static factor, a = kDynamicAgreement. The
+// dynamic factor lies within a share a of the static one when the first stands and the second
+// fails; otherwise the text says which way it lies and why.
+inline constexpr double kDynamicAgreement = 0.05;
+
+struct DynamicCheck {
+  bool computed = false;
+  std::vector<TrialResult> trials;  // at (1 - a) F, then at (1 + a) F
+  bool agrees = false;
+  std::string text;
+};
+
+// The factors the dynamic trials run at, for the static factor F.
+std::vector<double> dynamic_check_factors(double factor_of_safety);
+
+// `result` must have found a factor; `dynamic` holds the dynamic trials at
+// dynamic_check_factors(its factor), in that order.
+DynamicCheck judge_dynamic_check(const FosResult& result, std::vector<TrialResult> dynamic);
+
 }  // namespace dda

@@ -5,24 +5,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <deque>
 #include <mutex>
 #include <optional>
 #include <thread>
 
 #include "solver/run.hpp"
-#include "solver/step.hpp"
+#include "studies/trial_watch.hpp"
 
 namespace dda {
 namespace {
-
-// The at-rest test of a trial (run_trial): over a window of this many steps, every watched
-// point moved at less than this share of the speed limit (d / T in a dynamic trial).
-constexpr int kRestSteps = 20;
-constexpr double kRestSpeedShare = 0.01;
-// A damped trial fails early when, after half its time, a watched point moved over the
-// trial's last quarter at more than this multiple of the speed limit.
-constexpr double kFailSpeedShare = 4.0;
 
 double reduced_angle_deg(double angle_deg, double factor) {
   return std::atan(std::tan(angle_deg * M_PI / 180.0) / factor) * 180.0 / M_PI;
@@ -189,156 +180,59 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
   for (Block& b : w.blocks) b.velocity.setZero();
   w.step_size = StepSizeMemory{};  // nor its remembered step size: the trial starts on schedule
 
-  const std::vector<Vec2> start_points = watched_points(w);
   // A step count far beyond what the trial time needs (step cuts shorten steps) bounds the
   // trial even if the time step collapses.
   const double dt = *std::min_element(w.control.time_steps.begin(), w.control.time_steps.end());
   const long step_cap = 20L * static_cast<long>(std::ceil(s.trial_time / dt)) + 100;
-  StepWorkspace ws;
-  RunStats stats;
-  bool moved_too_far = false, at_rest = false, moving_fast = false;
-  // In a dynamic trial, a point still moving faster than d / T would pass the failure
-  // displacement within another trial time: the slope has not come to rest, it is failing
-  // slowly. Speeds are taken as displacements over a window of steps, not from the blocks'
-  // velocities: rigid blocks on penalty springs keep vibrating at centimetres per second in
-  // a slope that stands (measured on models/slope-fos.json at F = 1: 2.6 cm/s after 1 s,
-  // against a creep speed of 3.5 cm/s, with 0.5 mm of displacement), and the vibration
+  // Speeds are taken as displacements over windows of steps (TrialWatch), not from the
+  // blocks' velocities: rigid blocks on penalty springs keep vibrating at centimetres per
+  // second in a slope that stands (measured on models/slope-fos.json at F = 1: 2.6 cm/s after
+  // 1 s, against a creep speed of 3.5 cm/s, with 0.5 mm of displacement), and the vibration
   // averages out.
-  // A damped trial (dynamic coefficient k < 1) carries only k of each step's velocity, so a
-  // mechanism whose out-of-balance force accelerates it at a settles to a steady speed: per
-  // step v' = k v + a dt, hence v = a dt / (1 - k), and a mean speed over the step of
-  // a dt (1 + k) / (2 (1 - k)) (a dt / 2 from rest in a static trial, k = 0). Its speed
-  // limit is that of a mechanism at detect_acceleration g, over the window's mean step.
-  const double creep_speed = s.failure_displacement / s.trial_time;
-  const double k = s.dynamic_coefficient;
-  const double g = consolidated.gravity.norm();
-  const auto speed_limit = [&](double window_time, long window_steps) {
-    if (k >= 1.0 || window_steps <= 0) return creep_speed;
-    const double mean_dt = window_time / static_cast<double>(window_steps);
-    return s.detect_acceleration * g * mean_dt * (1.0 + k) / (2.0 * (1.0 - k));
-  };
-  // Where the watched points were at a step (time since the trial started, step count):
-  // speeds are taken from such a mark to the present. Marks of the last kRestSteps steps (a
-  // ring), of the step a quarter of the trial time before its end, and of the start.
-  struct Mark {
-    std::vector<Vec2> points;
-    double time = 0.0;
-    long step = 0;
-  };
-  struct Window {
-    double speed = 0.0;  // m/s, the fastest watched point's displacement over the time
-    double limit = 0.0;  // m/s, speed_limit over the same window
-  };
-  const auto since = [&](const Mark& from, const std::vector<Vec2>& to, double time, long step) {
-    const double span = time - from.time;
-    double fastest = 0.0;
-    for (std::size_t i = 0; i < from.points.size(); ++i) {
-      fastest = std::max(fastest, (to[i] - from.points[i]).norm());
-    }
-    return Window{span > 0.0 ? fastest / span : 0.0, speed_limit(span, step - from.step)};
-  };
-  const Mark at_start{start_points, 0.0, 0};
-  std::vector<Mark> ring(kRestSteps);
-  std::optional<Mark> late;
-  // The marks of the last quarter of the trial time (oldest first), for the early failure.
-  std::deque<Mark> quarter{at_start};
-  while (!is_finished(w) && r.steps < step_cap) {
-    const StepOutcome outcome = advance_step(w, ws, stats);
-    if (!outcome.ok) {
-      r.verdict = "diverged: " + outcome.message;
-      break;
+  TrialWatch watch({s.failure_displacement, s.trial_time, s.detect_acceleration,
+                    s.dynamic_coefficient, consolidated.gravity.norm()},
+                   watched_points(w));
+  TrialStop stopped = TrialStop::Continue;
+  bool before_first_step = true;  // run() calls the observer once before the first step
+  const StepObserver observe = [&](const World&, const RunStats&) {
+    if (before_first_step) {
+      before_first_step = false;
+      return true;
     }
     ++r.steps;
     if (stop && stop()) {
       r.interrupted = true;
-      break;
-    }
-    const std::vector<Vec2> now = watched_points(w);
-    const double elapsed = w.time - consolidated.time;
-    for (std::size_t i = 0; i < start_points.size(); ++i) {
-      const double u = (now[i] - start_points[i]).norm();
-      if (u > r.largest_displacement) {
-        r.largest_displacement = u;
-        r.watched_point = static_cast<int>(i);
-      }
+      return false;
     }
     r.kinetic_peak = std::max(r.kinetic_peak, total_kinetic(w));
-    if (r.largest_displacement > s.failure_displacement) {
-      moved_too_far = true;
-      break;
-    }
-    if (!late && elapsed >= 0.75 * s.trial_time) late = Mark{now, elapsed, r.steps};
-    // At rest: after a quarter of the trial time, every watched point moved over the last
-    // kRestSteps steps at less than 1 % of the speed limit. The rest of the trial would
-    // repeat the same state.
-    const std::size_t slot = static_cast<std::size_t>(r.steps % kRestSteps);
-    std::optional<Window> recent;
-    if (r.steps > kRestSteps) recent = since(ring[slot], now, elapsed, r.steps);
-    if (recent && elapsed >= 0.25 * s.trial_time && recent->speed < kRestSpeedShare * recent->limit) {
-      at_rest = true;
-      break;
-    }
-    // A damped trial has no inertia to carry it through a pause: a mechanism that moved at
-    // several times the limit over a whole quarter of the trial time, half of it gone, and
-    // still moves faster than the limit over its last 20 steps, is failing, and the rest of
-    // the trial would only repeat that. A shorter window (the last 20 steps alone) called
-    // transients failing: when the reduced strengths first act, load passes from the
-    // contacts that slip to their neighbours, and a soft penalty lets a group move a
-    // millimetre at 10 to 60 times the limit for a few tenths of a second before it comes to
-    // rest (verification/slope-cut, 652 blocks, penalty auto / 10: 0.58 mm over 0.8 s at
-    // F = 0.92, then at rest; the short window gave F = 0.910). The long window alone called
-    // a transient failing that had died down at T/2 (the steep slope at dt 0.002, F = 0.578:
-    // 2e-6 m/s over the last 20 steps against a limit of 2e-5).
-    if (k < 1.0) {
-      while (quarter.size() > 1 && quarter[1].time <= elapsed - 0.25 * s.trial_time) {
-        quarter.pop_front();
-      }
-      if (recent && elapsed >= 0.5 * s.trial_time && recent->speed > recent->limit) {
-        const Window last_quarter = since(quarter.front(), now, elapsed, r.steps);
-        if (last_quarter.speed > kFailSpeedShare * last_quarter.limit) {
-          moving_fast = true;
-          break;
-        }
-      }
-      quarter.push_back(Mark{now, elapsed, r.steps});
-    }
-    ring[slot] = Mark{now, elapsed, r.steps};
-  }
-  const std::vector<Vec2> end = watched_points(w);
+    stopped = watch.observe(watched_points(w), w.time - consolidated.time, r.steps);
+    return stopped == TrialStop::Continue && r.steps < step_cap;
+  };
+  // The ordinary run loop (solver/run.hpp) runs the trial; the verdict watches its steps.
+  r.stats = run(w, observe);
   r.kinetic_end = total_kinetic(w);
   r.simulated_time = w.time - consolidated.time;
-  // The end speed: over the trial's last quarter (or over the last kRestSteps steps when it
-  // stopped at rest or early).
-  const Mark* from = nullptr;
-  if (late && r.simulated_time > late->time) {
-    from = &*late;
-  } else if (r.steps > kRestSteps) {
-    from = &ring[static_cast<std::size_t>(r.steps % kRestSteps)];
-  } else if (r.simulated_time > 0.0) {
-    from = &at_start;
-  }
-  if (from != nullptr) {
-    const Window last = since(*from, end, r.simulated_time, r.steps);
-    r.end_speed = last.speed;
-    r.end_speed_limit = last.limit;
-  }
+  r.largest_displacement = watch.largest_displacement();
+  r.watched_point = watch.watched_point();
+  const SpeedWindow end = watch.end_speed(watched_points(w), r.simulated_time, r.steps);
+  r.end_speed = end.speed;
+  r.end_speed_limit = end.limit;
+  r.stable = false;
   if (r.interrupted) {
-    r.stable = false;
     r.verdict = "interrupted";
-  } else if (!r.verdict.empty()) {
-    r.stable = false;  // diverged
-  } else if (moved_too_far) {
-    r.stable = false;
+  } else if (r.stats.diverged) {
+    r.verdict = "diverged: " + r.stats.message;
+  } else if (stopped == TrialStop::MovedTooFar) {
     r.verdict = "moved beyond the failure displacement";
-  } else if (moving_fast) {
-    r.stable = false;
+  } else if (stopped == TrialStop::FailingSteadily) {
+    r.verdict = "moving faster than the speed limit, not slowing";
+  } else if (stopped == TrialStop::MovingFast) {
     r.verdict = "moving faster than the speed limit";
   } else if (r.end_speed > r.end_speed_limit) {
-    r.stable = false;
     r.verdict = "still moving at the end";
   } else {
     r.stable = true;
-    r.verdict = at_rest ? "at rest" : "did not fail within the trial time";
+    r.verdict = stopped == TrialStop::AtRest ? "at rest" : "did not fail within the trial time";
   }
   if (w.monitors.empty() && r.watched_point >= 0) {
     // Watched points are the free blocks in order: the ordinal back to the block index.
@@ -404,8 +298,19 @@ std::vector<double> next_factors(const std::vector<TrialResult>& trials, const F
     }
     if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
   };
+  // The guess goes first when the search would double (or halve) past it, and each round
+  // is filled up to `jobs` trials with the doublings (halvings). Without a guess: 1, 2, 4...
+  const double guess = s.first_failing_guess;
+  const bool has_guess = guess > s.min_factor && guess < s.max_factor;
+  const auto fill = [&](double from, double ratio) {
+    for (int k = 1; static_cast<int>(out.size()) < jobs && k <= 60; ++k) {
+      add(from * std::pow(ratio, k));
+    }
+  };
   if (trials.empty()) {
-    for (int k = 0; k < jobs; ++k) add(std::ldexp(1.0, k));  // 1, 2, 4, ...
+    add(1.0);
+    if (has_guess) add(guess);
+    fill(1.0, 2.0);
     return out;
   }
   const Bracket b = bracket_of(trials);
@@ -414,9 +319,11 @@ std::vector<double> next_factors(const std::vector<TrialResult>& trials, const F
     if (hi - lo <= s.tolerance) return {};
     for (int k = 1; k <= jobs; ++k) add(lo + (hi - lo) * k / (jobs + 1));
   } else if (b.stable) {
-    for (int k = 1; k <= jobs; ++k) add(*b.stable * std::ldexp(1.0, k));
+    if (has_guess && guess > *b.stable) add(guess);
+    fill(*b.stable, 2.0);
   } else {
-    for (int k = 1; k <= jobs; ++k) add(*b.failing * std::ldexp(1.0, -k));
+    if (has_guess && guess < *b.failing) add(guess);
+    fill(*b.failing, 0.5);
   }
   return out;
 }

@@ -65,6 +65,12 @@ struct FosSettings {
   // limit-equilibrium programs apply a seismic coefficient. It acts from the consolidation
   // on (with_seismic_coefficient). Range [-1, 1].
   double seismic_coefficient = 0.0;
+  // A factor the slope is expected to fail at, tried before the search doubles (or halves)
+  // past it: dda fos gives the limit analysis's upper end, an upper bound of the factor of a
+  // slope whose joints do not dilate. A bracket then starts below it instead of at 2, which
+  // saves the search's most expensive trials (failing ones, far above the factor). <= 0:
+  // none. It only places trials: every verdict is a trial's.
+  double first_failing_guess = 0.0;
 };
 
 // The scene with the seismic coefficient kh as part of its gravity: g + kh |g| x (a
@@ -78,7 +84,8 @@ struct TrialResult {
   bool stable = false;
   // Why: "at rest" (stopped early: nothing sliding, every watched point still),
   // "did not fail within the trial time", "still moving at the end" (end speed above
-  // end_speed_limit), "moving faster than the speed limit" (a damped trial, stopped early),
+  // end_speed_limit), "moving faster than the speed limit" and "moving faster than the
+  // speed limit, not slowing" (a damped trial, stopped early; studies/trial_watch.hpp),
   // "moved beyond the failure displacement", "diverged: ...".
   std::string verdict;
   double largest_displacement = 0.0;  // m, of the watched points since the trial started
@@ -93,6 +100,9 @@ struct TrialResult {
   double kinetic_peak = 0.0;          // J/m, the largest kinetic energy during the trial
   double kinetic_end = 0.0;           // J/m, at its end
   int steps = 0;
+  // The trial's step statistics (cuts by reason, linear solves, open-close iterations):
+  // what its steps cost.
+  RunStats stats;
   double simulated_time = 0.0;        // s
   double wall_time_s = 0.0;
   int watched_point = -1;             // monitor index (monitors given) or block index that moved most

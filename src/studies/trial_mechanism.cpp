@@ -9,6 +9,11 @@
 namespace dda {
 namespace {
 
+// A block turns about a point of its own (toppling or rotating) when the instantaneous centre
+// of its motion lies within this many radii of its centroid: a column tipping on its toe
+// turns about a corner, one radius away; a sliding block's centre lies far off.
+constexpr double kPivotReach = 1.5;
+
 // Per block: whether a closed contact touches it.
 std::vector<char> touched_blocks(const World& w) {
   std::vector<char> touched(w.blocks.size(), 0);
@@ -57,7 +62,49 @@ std::vector<JointActivity> joint_activity(const World& before, const World& afte
   return out;
 }
 
+// The sliding contacts touching the group at the trial's end, by the angle between their edge
+// and the motion of their block in the group.
+SlipDirections slip_directions(const World& after, const std::vector<BlockMotion>& blocks) {
+  std::vector<const BlockMotion*> motion(after.blocks.size(), nullptr);
+  for (const BlockMotion& b : blocks) motion[static_cast<std::size_t>(b.block)] = &b;
+  SlipDirections out;
+  const double along = std::cos(M_PI / 6.0), across = std::cos(M_PI / 3.0);
+  for (const Contact& c : after.contacts) {
+    if (c.state.mode != ContactMode::Slide) continue;
+    const BlockMotion* a = motion[static_cast<std::size_t>(c.key.vertex_block)];
+    const BlockMotion* e = motion[static_cast<std::size_t>(c.key.edge_block)];
+    if (a == nullptr && e == nullptr) continue;
+    Vec2 u = Vec2::Zero();
+    if (a != nullptr) u += a->displacement;
+    if (e != nullptr) u += e->displacement;
+    if (u.norm() <= 0.0 || c.tangent.norm() <= 0.0) continue;
+    const double cosine = std::abs(c.tangent.dot(u)) / (c.tangent.norm() * u.norm());
+    if (cosine >= along) {
+      ++out.along;
+    } else if (cosine <= across) {
+      ++out.across;
+    } else {
+      ++out.between;
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+std::string group_mode(const std::vector<BlockMotion>& blocks, const SlipDirections& slip) {
+  if (blocks.empty()) return "none";
+  if (blocks.size() == 1) return blocks.front().mode;
+  const auto most = [&](const char* mode) {
+    const auto n = std::count_if(blocks.begin(), blocks.end(),
+                                 [&](const BlockMotion& b) { return b.mode == mode; });
+    return 2 * n > static_cast<long>(blocks.size());
+  };
+  if (most("toppling") || slip.across > slip.along) return "toppling group";
+  if (most("rotating")) return "rotating group";
+  if (most("falling")) return "falling group";
+  return "sliding group";
+}
 
 double rotation_between(const Block& before, const Block& after) {
   const Vec2 a = before.vertices.front() - before.moments.centroid;
@@ -74,6 +121,7 @@ std::vector<BlockMotion> moved_blocks(const World& consolidated, const World& tr
   std::vector<BlockMotion> out;
   if (largest <= 0.0) return out;
   const std::vector<char> touched = touched_blocks(trial_end);
+  const Vec2 gravity = consolidated.gravity;
   for (std::size_t i = 0; i < consolidated.blocks.size(); ++i) {
     const Block& before = consolidated.blocks[i];
     const Block& after = trial_end.blocks[i];
@@ -84,12 +132,20 @@ std::vector<BlockMotion> moved_blocks(const World& consolidated, const World& tr
     b.block = static_cast<int>(i);
     b.displacement = u;
     b.rotation = rotation_between(before, after);
-    // A corner at the block's typical radius moves |rotation| x radius by the rotation.
-    const double radius = std::sqrt(before.moments.area);
+    // The block's radius: its farthest vertex from the centroid.
+    double radius = 0.0;
+    for (const Vec2& v : before.vertices) radius = std::max(radius, (v - before.moments.centroid).norm());
     if (!touched[i]) {
       b.mode = "falling";
+    } else if (std::abs(b.rotation) * kPivotReach * radius <= u.norm()) {
+      b.mode = "sliding";
     } else {
-      b.mode = std::abs(b.rotation) * radius > u.norm() ? "rotating" : "sliding";
+      // The instantaneous centre p of a small rigid motion (u, rotation r) about the
+      // centroid c: u = r z x (c - p), so p - c = (-u_y, u_x) / r; it lies within
+      // kPivotReach x radius of c (the test above).
+      const Vec2 to_pivot = Vec2(-u.y(), u.x()) / b.rotation;
+      const Vec2 down = gravity.norm() > 0.0 ? Vec2(gravity.normalized()) : Vec2(0.0, -1.0);
+      b.mode = to_pivot.dot(down) > std::cos(M_PI / 4.0) * to_pivot.norm() ? "toppling" : "rotating";
     }
     out.push_back(b);
   }
@@ -108,17 +164,10 @@ TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end
     return m;
   }
   std::vector<int> group;
-  int rotating = 0;
-  for (const BlockMotion& b : m.blocks) {
-    group.push_back(b.block);
-    rotating += b.mode == "rotating" ? 1 : 0;
-  }
+  for (const BlockMotion& b : m.blocks) group.push_back(b.block);
   std::sort(group.begin(), group.end());
-  if (m.blocks.size() == 1) {
-    m.mode = m.blocks.front().mode;
-  } else {
-    m.mode = 2 * rotating > static_cast<int>(m.blocks.size()) ? "rotating group" : "sliding group";
-  }
+  m.slip = slip_directions(trial_end, m.blocks);
+  m.mode = group_mode(m.blocks, m.slip);
   m.joints = joint_activity(consolidated, trial_end, group);
   m.group_bound = limit_analysis(consolidated, settings, group);
   return m;

@@ -15,8 +15,11 @@ struct BlockMotion {
   int block = -1;
   Vec2 displacement = Vec2::Zero();  // of its centroid (m)
   double rotation = 0.0;             // counter-clockwise (rad)
-  // "sliding" (its rotation moves its corners less than its centroid moved), "rotating"
-  // (more), or "falling" (no closed contact left at the trial's end).
+  // "toppling" when it turns about a point of its own (the instantaneous centre of its motion
+  // within 1.5 radii of its centroid) that lies below the centroid, within 45 degrees of the
+  // gravity direction (tipping on its toe); "rotating" about a point of its own elsewhere;
+  // "sliding" otherwise (the centre far off); "falling" when no closed contact is left at
+  // the trial's end.
   std::string mode;
 };
 
@@ -29,13 +32,28 @@ struct JointActivity {
   long opened = 0;    // contacts closed when it started and open at its end
 };
 
+// How the mechanism's sliding contacts slip relative to the way their blocks move: along
+// the motion (a slide on its base, or layers sliding past each other down the slope) or
+// across it (columns that lean out and slip on the joints between them: flexural toppling).
+struct SlipDirections {
+  long along = 0;   // sliding contacts whose edge lies within 30 degrees of the motion
+  long across = 0;  // beyond 60 degrees
+  long between = 0;
+};
+
 struct TrialMechanism {
   // The blocks whose centroid moved more than kMechanismShare of the largest displacement,
   // largest first.
   std::vector<BlockMotion> blocks;
-  // "sliding", "rotating" or "falling" for one block; "sliding group" or "rotating group"
-  // (by the mode of most of its blocks) for several; "none" when nothing moved.
+  // For one block, its mode ("sliding", "toppling", "rotating", "falling"). For several:
+  // "toppling group" when most of its blocks topple, or when more of its sliding contacts
+  // slip across the motion than along it; else "rotating group" when most of its blocks
+  // rotate, "falling group" when most fall, and "sliding group" otherwise. "none" when
+  // nothing moved.
   std::string mode;
+  // The sliding contacts touching a block of the mechanism (the motion of a contact: that of
+  // its block in the mechanism, the mean when both are).
+  SlipDirections slip;
   // Per joint material that has any, the contacts touching a block of the mechanism that
   // slide or opened, most sliding first.
   std::vector<JointActivity> joints;
@@ -55,6 +73,10 @@ double rotation_between(const Block& before, const Block& after);
 // from `consolidated` to `trial_end`, largest first, each with its mode (empty when nothing
 // moved). The mechanism's blocks, and what its pictures draw.
 std::vector<BlockMotion> moved_blocks(const World& consolidated, const World& trial_end);
+
+// The mode of a group of blocks from the modes of its blocks and its slip directions (the
+// rule of TrialMechanism::mode).
+std::string group_mode(const std::vector<BlockMotion>& blocks, const SlipDirections& slip);
 
 // `consolidated`: where the trial started; `trial_end`: where it ended (same blocks).
 TrialMechanism trial_mechanism(const World& consolidated, const World& trial_end,

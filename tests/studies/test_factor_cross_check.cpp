@@ -60,3 +60,34 @@ TEST_CASE("the factor beside its bounds: a warning above them, a note far below 
     CHECK(cross_check_factor(found(0.5, 0.6), {}, none).text.empty());
   }
 }
+
+TEST_CASE("dynamic trials at 0.95 F and 1.05 F: agreement, or which way the dynamic factor lies",
+          "[fos]") {
+  const FosResult r = found(1.09, 1.10);  // F = 1.095
+  const std::vector<double> at = dynamic_check_factors(r.factor_of_safety);
+  REQUIRE(at.size() == 2);
+  CHECK(at[0] == Approx(0.95 * 1.095).epsilon(1e-12));
+  CHECK(at[1] == Approx(1.05 * 1.095).epsilon(1e-12));
+  const auto trial = [](double f, bool stable) {
+    TrialResult t;
+    t.factor = f;
+    t.stable = stable;
+    return t;
+  };
+  const DynamicCheck agree = judge_dynamic_check(r, {trial(at[0], true), trial(at[1], false)});
+  CHECK(agree.computed);
+  CHECK(agree.agrees);
+  CHECK_THAT(agree.text, Catch::Contains("agree within 5 %"));
+  const DynamicCheck lower = judge_dynamic_check(r, {trial(at[0], false), trial(at[1], false)});
+  CHECK_FALSE(lower.agrees);
+  CHECK_THAT(lower.text, Catch::Contains("more than 5 % below"));
+  const DynamicCheck higher = judge_dynamic_check(r, {trial(at[0], true), trial(at[1], true)});
+  CHECK_FALSE(higher.agrees);
+  CHECK_THAT(higher.text, Catch::Contains("more than 5 % above"));
+  // An interrupted trial has no verdict: nothing is concluded.
+  TrialResult stopped = trial(at[1], false);
+  stopped.interrupted = true;
+  const DynamicCheck none = judge_dynamic_check(r, {trial(at[0], true), stopped});
+  CHECK_FALSE(none.agrees);
+  CHECK_THAT(none.text, Catch::Contains("not both judged"));
+}

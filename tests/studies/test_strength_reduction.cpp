@@ -176,6 +176,34 @@ TEST_CASE("the search brackets a made-up threshold within its tolerance and alwa
       CHECK(calls <= jobs * rounds);
     }
   }
+  // A first failing guess (the limit analysis's factor) places the first trials, good or
+  // bad: the search still brackets the threshold, and a good guess (just above it) saves
+  // rounds. With two jobs and the guess 1.174 for a threshold of 1.093 (the 1965-block
+  // slope's figures): [1, 1.174] and three trisections (0.087 / 27 < 0.01), 4 rounds
+  // instead of the 6 from [1, 2].
+  for (int jobs : {1, 2}) {
+    for (double threshold : {0.37, 1.093, 1.2, 3.7}) {
+      for (double guess : {0.5, 1.174, 1.3, 9.0}) {
+        FosSettings s;
+        s.jobs = jobs;
+        s.first_failing_guess = guess;
+        int calls = 0;
+        const FosResult r = find_factor_of_safety(s, evaluator(threshold, calls));
+        INFO("jobs " << jobs << ", threshold " << threshold << ", guess " << guess);
+        REQUIRE(r.found);
+        CHECK(r.last_stable < threshold);
+        CHECK(r.first_failing >= threshold);
+        CHECK(r.first_failing - r.last_stable <= s.tolerance);
+        // One round more than without a guess at most: the guess's own.
+        const int rounds = 6 + static_cast<int>(std::ceil(std::log(5.0 / 0.01) / std::log(jobs + 1.0)));
+        CHECK(calls <= jobs * rounds);
+        if (jobs == 2 && threshold == 1.093 && guess == 1.174) {
+          CHECK(r.trials.size() == 8);
+          CHECK(r.trials[1].factor == 1.174);
+        }
+      }
+    }
+  }
   // Verdicts not monotone (stable below 1.2 and between 1.6 and 1.7): with two jobs the
   // round after 1 and 2 tries 1.3333 (failing) and 1.6667 (stable). The bracket is taken
   // below the lowest failing F (1.2016 at the end), and the message names the stable trial
@@ -362,8 +390,9 @@ TEST_CASE("a failing static trial moves a dt^2 / 2 a step, and a damped one its 
   // The same block at F = 1.3. A static trial (dynamic coefficient 0, the default) starts
   // every step from rest, so each step moves a dt^2 / 2: a mean speed a dt / 2. With k = 0.5
   // the speed settles to a dt (1 + k) / (2 (1 - k)) = 1.5 a dt (strength_reduction.cpp). Both
-  // are 19 times the speed limit of a mechanism at 0.002 g (a = 0.0385 g here), so the trial
-  // stops after a quarter of its time as "moving faster than the speed limit". The elastic
+  // are 19 times the speed limit of a mechanism at 0.002 g (a = 0.0385 g here), steady, so the
+  // trial stops as soon as a quarter of its time has gone, as "moving faster than the speed
+  // limit, not slowing" (studies/trial_watch.hpp). The elastic
   // springs' settling ends within a few steps and the step is 2 ms throughout (no cuts).
   // Measured: both speeds 7.5e-6 below the closed form, the same share for both k, so the
   // speed relation holds exactly and the small difference is in the block's net
@@ -379,7 +408,12 @@ TEST_CASE("a failing static trial moves a dt^2 / 2 a step, and a damped one its 
     const TrialResult t = run_trial(w, s, 1.3);
     INFO("k = " << k << ": " << t.verdict);
     CHECK_FALSE(t.stable);
-    CHECK(t.verdict == "moving faster than the speed limit");
+    CHECK(t.verdict == "moving faster than the speed limit, not slowing");
+    // Soon after T/4, long before T/2 (the earlier rule's wait): measured 1.482 s for k = 0
+    // against T/4 = 1.426 s, because the first eighth's window starts with the springs'
+    // settling, faster than the steady slide, and the rule waits until it has left it.
+    CHECK(t.simulated_time >= 0.25 * s.trial_time);
+    CHECK(t.simulated_time < 0.3 * s.trial_time);
     CHECK(t.end_speed == Approx(a * dt * (1.0 + k) / (2.0 * (1.0 - k))).epsilon(2e-5));
     CHECK(t.end_speed_limit ==
           Approx(0.002 * 9.81 * dt * (1.0 + k) / (2.0 * (1.0 - k))).epsilon(1e-12));
@@ -451,6 +485,36 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   // The pictures of the bracket's trials.
   CHECK(std::filesystem::exists(dir.path / "out" / "first_failing.png"));
   CHECK(std::filesystem::exists(dir.path / "out" / "last_stable.png"));
+  // The search started from the limit analysis's upper end, and ran no dynamic check.
+  CHECK(report.at("settings").at("first_failing_guess").get<double>() == la_bracket.at(1).get<double>());
+  CHECK(report.at("trials").at(1).at("F").get<double>() == la_bracket.at(1).get<double>());
+  CHECK(report.at("dynamic_check").at("computed") == false);
+  // Each trial says what its steps cost.
+  CHECK(report.at("trials").at(0).at("solves").get<long>() >= report.at("trials").at(0).at("steps").get<long>());
+
+  // With --dynamic-check: a block on a plane slides alike with and without inertia (dynamic
+  // trials lie within 0.4 % of limit equilibrium, verification/slope), so dynamic trials at
+  // 0.95 F and 1.05 F stand and fail.
+  const auto dyn = test::run_command(std::string(DDA_EXE) + " fos " +
+                                     test::shell_quote((dir.path / "planar.json").string()) +
+                                     " --dynamic-check --out " + test::shell_quote((dir.path / "dyn").string()));
+  INFO(dyn.output);
+  REQUIRE(dyn.exit_code == 0);
+  const json dyn_report = json::parse(test::read_file(dir.path / "dyn" / "report.json"));
+  const json& check = dyn_report.at("dynamic_check");
+  CHECK(check.at("computed") == true);
+  CHECK(check.at("agrees") == true);
+  REQUIRE(check.at("trials").size() == 2);
+  CHECK(check.at("trials").at(0).at("stable") == true);
+  CHECK(check.at("trials").at(1).at("stable") == false);
+  CHECK_THAT(test::read_file(dir.path / "dyn" / "report.md"), Catch::Contains("Static and dynamic trials"));
+  // Nothing to compare when the search's trials are dynamic already.
+  const auto both = test::run_command(std::string(DDA_EXE) + " fos " +
+                                      test::shell_quote((dir.path / "planar.json").string()) +
+                                      " --dynamic-check --dynamic-coefficient 1 --out " +
+                                      test::shell_quote((dir.path / "both").string()));
+  CHECK(both.exit_code == 2);
+  CHECK_THAT(both.output, Catch::Contains("--dynamic-check"));
 
   // No failing trial up to --max-factor 1.1: no factor, exit 3, and the report says why.
   const auto none = test::run_command(std::string(DDA_EXE) + " fos " +

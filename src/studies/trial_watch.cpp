@@ -1,0 +1,125 @@
+#include "studies/trial_watch.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <utility>
+
+namespace dda {
+namespace {
+
+// The at-rest test: over a window of this many steps, every watched point moved at less than
+// this share of the speed limit.
+constexpr int kRestSteps = 20;
+constexpr double kRestSpeedShare = 0.01;
+// A damped trial fails early on motion at more than this multiple of the speed limit.
+constexpr double kFailSpeedShare = 4.0;
+// "Not slowing": the later eighth at least this share of the earlier one's multiple of the
+// limit. Below 1 only so that a steady speed is not judged on round-off; a transient dying
+// with a time constant tau keeps exp(-T / (8 tau)) of it, above 0.98 only when tau > 6 T.
+constexpr double kNotSlowing = 0.98;
+
+}  // namespace
+
+TrialWatch::TrialWatch(const TrialWatchSettings& settings, std::vector<Vec2> start)
+    : s_(settings), start_{std::move(start), 0.0, 0}, ring_(kRestSteps), quarter_{start_} {
+  assert(s_.failure_displacement > 0.0 && s_.trial_time > 0.0);
+}
+
+double TrialWatch::speed_limit(double window_time, long window_steps) const {
+  const double k = s_.dynamic_coefficient;
+  if (k >= 1.0 || window_steps <= 0) return s_.failure_displacement / s_.trial_time;
+  // Per step v' = k v + a dt: a damped mechanism settles to v = a dt / (1 - k), and moves
+  // a dt (1 + k) / (2 (1 - k)) per unit time over the step (a dt / 2 from rest, k = 0).
+  const double mean_dt = window_time / static_cast<double>(window_steps);
+  return s_.detect_acceleration * s_.gravity * mean_dt * (1.0 + k) / (2.0 * (1.0 - k));
+}
+
+SpeedWindow TrialWatch::since(const Mark& from, const std::vector<Vec2>& to, double time,
+                              long step) const {
+  const double span = time - from.time;
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < from.points.size(); ++i) {
+    fastest = std::max(fastest, (to[i] - from.points[i]).norm());
+  }
+  return SpeedWindow{span > 0.0 ? fastest / span : 0.0, speed_limit(span, step - from.step)};
+}
+
+TrialStop TrialWatch::observe(const std::vector<Vec2>& now, double elapsed, long steps) {
+  assert(now.size() == start_.points.size());
+  const double T = s_.trial_time;
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    const double u = (now[i] - start_.points[i]).norm();
+    if (u > largest_) {
+      largest_ = u;
+      watched_ = static_cast<int>(i);
+    }
+  }
+  if (largest_ > s_.failure_displacement) return TrialStop::MovedTooFar;
+  if (!late_ && elapsed >= 0.75 * T) late_ = Mark{now, elapsed, steps};
+  // At rest: after a quarter of the trial time, every watched point moved over the last
+  // kRestSteps steps at less than 1 % of the speed limit; the rest would repeat the state.
+  const std::size_t slot = static_cast<std::size_t>(steps % kRestSteps);
+  std::optional<SpeedWindow> recent;
+  if (steps > kRestSteps) recent = since(ring_[slot], now, elapsed, steps);
+  if (recent && elapsed >= 0.25 * T && recent->speed < kRestSpeedShare * recent->limit) {
+    return TrialStop::AtRest;
+  }
+  TrialStop stop = TrialStop::Continue;
+  if (s_.dynamic_coefficient < 1.0) {
+    // A damped trial has no inertia to carry it through a pause, so a mechanism shows itself
+    // as a steady speed: a static step moves it a dt^2 / 2 from rest, whatever came before.
+    // When the reduced strengths first act, though, load passes from the contacts that slip
+    // to their neighbours, and a soft penalty lets a group move a millimetre at 10 to 60
+    // times the limit for a few tenths of a second before it comes to rest
+    // (verification/slope-cut, 652 blocks, penalty auto / 10: 0.58 mm over 0.8 s at
+    // F = 0.92, then at rest; a window of the last 20 steps after T/4 called it failing and
+    // gave F = 0.910). Such a transient slows down; a failing mechanism does not.
+    while (quarter_.size() > 1 && quarter_[1].time <= elapsed - 0.25 * T) quarter_.pop_front();
+    if (recent && recent->speed > recent->limit && elapsed >= 0.25 * T) {
+      // Failing steadily: over both eighths of the last quarter at more than 4 times the
+      // limit, and the later eighth not slower (kNotSlowing), as a multiple of its limit
+      // (the limit follows the mean step, which cuts shorten).
+      const double mid = elapsed - 0.125 * T;
+      const auto m = std::lower_bound(quarter_.begin(), quarter_.end(), mid,
+                                      [](const Mark& a, double t) { return a.time < t; });
+      if (m != quarter_.end() && m != quarter_.begin()) {
+        const SpeedWindow first = since(quarter_.front(), m->points, m->time, m->step);
+        const SpeedWindow second = since(*m, now, elapsed, steps);
+        if (first.speed > kFailSpeedShare * first.limit &&
+            second.speed > kFailSpeedShare * second.limit &&
+            second.speed * first.limit >= kNotSlowing * first.speed * second.limit) {
+          stop = TrialStop::FailingSteadily;
+        }
+      }
+      // Moving fast: after half the trial time, over the whole last quarter at more than 4
+      // times the limit, and still faster than the limit over the last 20 steps (a transient
+      // that has died down by T/2 is not called failing on its past).
+      if (stop == TrialStop::Continue && elapsed >= 0.5 * T) {
+        const SpeedWindow last_quarter = since(quarter_.front(), now, elapsed, steps);
+        if (last_quarter.speed > kFailSpeedShare * last_quarter.limit) stop = TrialStop::MovingFast;
+      }
+    }
+    // A stopped trial keeps the marks before this step: its end speed is taken over the
+    // last kRestSteps steps (end_speed).
+    if (stop != TrialStop::Continue) return stop;
+    quarter_.push_back(Mark{now, elapsed, steps});
+  }
+  ring_[slot] = Mark{now, elapsed, steps};
+  return TrialStop::Continue;
+}
+
+SpeedWindow TrialWatch::end_speed(const std::vector<Vec2>& end, double elapsed, long steps) const {
+  const Mark* from = nullptr;
+  if (late_ && elapsed > late_->time) {
+    from = &*late_;
+  } else if (steps > kRestSteps) {
+    // The mark kRestSteps steps back, or kRestSteps - 1 when this step's own mark was kept.
+    from = &ring_[static_cast<std::size_t>(steps % kRestSteps)];
+    if (from->step == steps) from = &ring_[static_cast<std::size_t>((steps + 1) % kRestSteps)];
+  } else if (elapsed > 0.0) {
+    from = &start_;
+  }
+  return from != nullptr ? since(*from, end, elapsed, steps) : SpeedWindow{};
+}
+
+}  // namespace dda

@@ -1,0 +1,113 @@
+// The trial verdict (studies/trial_watch.hpp) on made-up paths of one watched point: a steady
+// failure, a transient that dies away, a motion that slows but has not stopped by T/2, a jump
+// beyond the failure displacement, and a dynamic trial's speed limit.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+
+#include "studies/trial_watch.hpp"
+
+namespace {
+
+using namespace dda;
+
+// A static trial: d = 0.05 m, T = 2 s, steps of 10 ms. The speed limit is that of a mechanism
+// at 0.002 g moving a dt / 2 per unit time: 0.002 x 9.81 x 0.01 / 2 = 9.81e-5 m/s.
+constexpr double kDt = 0.01;
+TrialWatchSettings static_settings() { return {0.05, 2.0, 0.002, 0.0, 9.81}; }
+constexpr double kLimit = 0.002 * 9.81 * kDt / 2.0;
+
+struct Outcome {
+  TrialStop stop = TrialStop::Continue;
+  double time = 0.0;  // when it stopped (or the trial's end)
+  SpeedWindow end;
+};
+
+// Runs the watch along x(t) until it stops or the trial time is over.
+Outcome follow(const TrialWatchSettings& s, const std::function<double(double)>& x) {
+  TrialWatch watch(s, {Vec2::Zero()});
+  Outcome o;
+  long step = 0;
+  for (double t = kDt; t <= s.trial_time + 1e-9; t += kDt) {
+    ++step;
+    o.time = t;
+    o.stop = watch.observe({Vec2(x(t), 0.0)}, t, step);
+    if (o.stop != TrialStop::Continue) break;
+  }
+  o.end = watch.end_speed({Vec2(x(o.time), 0.0)}, o.time, step);
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("a static trial's speed limit is a dt / 2 of a mechanism at the detect acceleration",
+          "[fos][verdict]") {
+  const TrialWatch watch(static_settings(), {Vec2::Zero()});
+  CHECK(watch.speed_limit(1.0, 100) == Approx(kLimit).epsilon(1e-12));
+  // Shorter steps (cuts) lower it in proportion: a dt^2 / 2 a step.
+  CHECK(watch.speed_limit(1.0, 200) == Approx(kLimit / 2.0).epsilon(1e-12));
+  // A dynamic trial: d / T whatever the steps.
+  TrialWatchSettings dynamic = static_settings();
+  dynamic.dynamic_coefficient = 1.0;
+  CHECK(TrialWatch(dynamic, {Vec2::Zero()}).speed_limit(1.0, 100) == Approx(0.05 / 2.0));
+}
+
+TEST_CASE("a steady failure stops at a quarter of the trial time, a transient is let die",
+          "[fos][verdict]") {
+  SECTION("steady, 10 times the limit: failing at T/4") {
+    const Outcome o = follow(static_settings(), [](double t) { return 10.0 * kLimit * t; });
+    CHECK(o.stop == TrialStop::FailingSteadily);
+    // The first step at which both eighths of the quarter exist: T/4, within a step.
+    CHECK(o.time == Approx(0.5).margin(1.01 * kDt));
+    CHECK(o.end.speed == Approx(10.0 * kLimit).epsilon(1e-9));
+  }
+  SECTION("a transient from 60 times the limit, dying with a time constant of 0.15 s") {
+    // The load-transfer transients of verification/slope-cut: 10 to 60 times the limit for
+    // a few tenths of a second. v = 60 limit exp(-t / 0.15): below the limit after 0.61 s
+    // (before T/2). At rest once its mean over the last 20 steps (0.2 s) is below 1 % of the
+    // limit: 60 tau exp(-t / tau) (exp(0.2 / tau) - 1) / 0.2 = 0.01, t = 1.416 s.
+    const double tau = 0.15;
+    const Outcome o = follow(static_settings(), [tau](double t) {
+      return 60.0 * kLimit * tau * (1.0 - std::exp(-t / tau));
+    });
+    CHECK(o.stop == TrialStop::AtRest);
+    const double rest = -tau * std::log(0.01 * 0.2 / (60.0 * tau * (std::exp(0.2 / tau) - 1.0)));
+    CHECK(o.time == Approx(rest).margin(1.01 * kDt));
+  }
+  SECTION("slowing steadily from 20 times the limit, still fast at T/2: failing there") {
+    // v = 20 limit (1 - t / 1.1): never steady (the later eighth always the slower), but at
+    // T/2 the last quarter averages 20 (1 - 0.75 / 1.1) = 6.4 times the limit, and the last
+    // 20 steps 20 (1 - 0.9 / 1.1) = 3.6 times.
+    const Outcome o = follow(static_settings(), [](double t) {
+      return 20.0 * kLimit * (t - t * t / 2.2);
+    });
+    CHECK(o.stop == TrialStop::MovingFast);
+    CHECK(o.time == Approx(1.0).margin(1.01 * kDt));
+  }
+  SECTION("a jump beyond the failure displacement") {
+    const Outcome o = follow(static_settings(), [](double t) { return t < 0.3 ? 0.0 : 0.06; });
+    CHECK(o.stop == TrialStop::MovedTooFar);
+    CHECK(o.time == Approx(0.3).margin(1.01 * kDt));
+  }
+  SECTION("twice the limit throughout: runs its time, and its end speed says failing") {
+    const Outcome o = follow(static_settings(), [](double t) { return 2.0 * kLimit * t; });
+    CHECK(o.stop == TrialStop::Continue);
+    CHECK(o.time == Approx(2.0).margin(1e-9));
+    // Over the last quarter.
+    CHECK(o.end.speed == Approx(2.0 * kLimit).epsilon(1e-9));
+    CHECK(o.end.limit == Approx(kLimit).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("a dynamic trial is never stopped for speed, only at rest or beyond d",
+          "[fos][verdict]") {
+  TrialWatchSettings dynamic = static_settings();
+  dynamic.dynamic_coefficient = 1.0;
+  // 0.02 m/s against the creep speed d / T = 0.025 m/s: runs its time, then judged on its end
+  // speed (below the limit: stable).
+  const Outcome o = follow(dynamic, [](double t) { return 0.02 * t; });
+  CHECK(o.stop == TrialStop::Continue);
+  CHECK(o.end.speed == Approx(0.02).epsilon(1e-9));
+  CHECK(o.end.limit == Approx(0.025));
+}
