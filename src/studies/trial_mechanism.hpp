@@ -46,10 +46,10 @@ struct TrialMechanism {
   // largest first.
   std::vector<BlockMotion> blocks;
   // For one block, its mode ("sliding", "toppling", "rotating", "falling"). For several:
-  // "toppling group" when most of its blocks topple, or when more of its sliding contacts
-  // slip across the motion than along it; else "rotating group" when most of its blocks
-  // rotate, "falling group" when most fall, and "sliding group" otherwise. "none" when
-  // nothing moved.
+  // "toppling group", "rotating group" or "falling group" when most of its blocks topple,
+  // rotate or fall; else by its sliding contacts: "toppling group" when at least twice as
+  // many slip across the motion as along it, "sliding group" when at least twice as many
+  // slip along it, "sliding and toppling group" otherwise. "none" when nothing moved.
   std::string mode;
   // The sliding contacts touching a block of the mechanism (the motion of a contact: that of
   // its block in the mechanism, the mean when both are).

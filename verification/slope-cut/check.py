@@ -7,7 +7,10 @@ factor must respect, and exits 1 naming each breach:
 - each strength-reduction factor is at most the smallest single-block bound, and at most the
   limit-analysis factor, plus the search's half-bracket (0.005) and its verdict's resolution
   on a 35 degree plane (F x 2 x 0.002 / sin 35 = 0.008 at F = 1.2): rigid blocks with
-  non-associative friction fail no later than with associative friction.
+  non-associative friction fail no later than with associative friction;
+- the run at the scene's own settings has its dynamic check (dynamic trials at 0.95 F and
+  1.05 F), which says whether the dynamic factor lies within 5 % of the static one, or why
+  not.
 
     /usr/bin/python3 check.py OUT_DIR
 """
@@ -34,6 +37,9 @@ for s in report["slopes"]:
             breaches.append(f"{where}: SR {sr:.4f} above the smallest single-block bound {bound:.4f}")
         if la is not None and sr > la + slack:
             breaches.append(f"{where}: SR {sr:.4f} above the limit-analysis factor {la:.4f}")
+        dynamic = x.get("dynamic_check", {})
+        if x["setting"] == "scene" and not (dynamic.get("computed") and dynamic.get("text")):
+            breaches.append(f"{where}: no dynamic check")
 for b in breaches:
     print("check.py: " + b, file=sys.stderr)
 sys.exit(1 if breaches else 0)

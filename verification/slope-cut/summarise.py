@@ -39,6 +39,8 @@ for case_dir in case_dirs:
             "wall_time_s": r["wall_time_s"],
             "limit_analysis": la.get("factor"),
             "single_block_bound": bounds[0]["factor"] if bounds else None,
+            "mode": (r.get("failing_mechanism") or {}).get("mode"),
+            "dynamic_check": r.get("dynamic_check", {}),
         })
     found = [x["factor"] for x in runs if x["factor"] is not None]
     spread = (max(found) - min(found)) / (sum(found) / len(found)) if len(found) > 1 else None
@@ -61,13 +63,18 @@ for s in slopes:
     lines.append("")
     lines.append(s["description"])
     lines.append("")
-    lines.append("| setting | SR factor | bracket | LA | bound | trials | wall (s) | note |")
-    lines.append("|---|---|---|---|---|---|---|---|")
+    lines.append("| setting | SR factor | bracket | LA | bound | mechanism | trials | wall (s) | note |")
+    lines.append("|---|---|---|---|---|---|---|---|---|")
     for x in s["runs"]:
         fmt = lambda v: "-" if v is None else f"{v:.4f}"
         bracket = "-" if x["bracket"] is None else f"[{x['bracket'][0]:.4f}, {x['bracket'][1]:.4f}]"
         lines.append(f"| {x['setting']} | {fmt(x['factor'])} | {bracket} | {fmt(x['limit_analysis'])} | "
-                     f"{fmt(x['single_block_bound'])} | {x['trials']} | {x['wall_time_s']:.0f} | {x['message']} |")
+                     f"{fmt(x['single_block_bound'])} | {x['mode'] or '-'} | {x['trials']} | "
+                     f"{x['wall_time_s']:.0f} | {x['message']} |")
+    for x in s["runs"]:
+        if x["dynamic_check"].get("computed"):
+            lines.append("")
+            lines.append(f"Static against dynamic trials ({x['setting']}): {x['dynamic_check']['text']}.")
     if s["spread"] is not None:
         lines.append("")
         lines.append(f"Spread of the SR factors: {100 * s['spread']:.1f} % (max - min over the mean).")
