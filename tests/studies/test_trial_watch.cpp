@@ -55,12 +55,14 @@ TEST_CASE("a static trial's speed limit is a dt / 2 of a mechanism at the detect
 
 TEST_CASE("a steady failure stops at a quarter of the trial time, a transient is let die",
           "[fos][verdict]") {
-  SECTION("steady, 10 times the limit: failing at T/4") {
-    const Outcome o = follow(static_settings(), [](double t) { return 10.0 * kLimit * t; });
+  SECTION("10 times the limit and slowly speeding up: failing at T/4") {
+    // (A speed exactly steady would be judged on the round-off of its two windows.)
+    const Outcome o = follow(static_settings(), [](double t) { return 10.0 * kLimit * (t + 0.1 * t * t); });
     CHECK(o.stop == TrialStop::FailingSteadily);
     // The first step at which both eighths of the quarter exist: T/4, within a step.
     CHECK(o.time == Approx(0.5).margin(1.01 * kDt));
-    CHECK(o.end.speed == Approx(10.0 * kLimit).epsilon(1e-9));
+    // Over the last 20 steps (0.3 to 0.5 s): 10 limit (1 + 0.1 x 0.8).
+    CHECK(o.end.speed == Approx(10.8 * kLimit).epsilon(1e-9));
   }
   SECTION("a transient from 60 times the limit, dying with a time constant of 0.15 s") {
     // The load-transfer transients of verification/slope-cut: 10 to 60 times the limit for
