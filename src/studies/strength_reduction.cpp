@@ -224,8 +224,6 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
     r.verdict = "diverged: " + r.stats.message;
   } else if (stopped == TrialStop::MovedTooFar) {
     r.verdict = "moved beyond the failure displacement";
-  } else if (stopped == TrialStop::FailingSteadily) {
-    r.verdict = "moving faster than the speed limit, not slowing";
   } else if (stopped == TrialStop::MovingFast) {
     r.verdict = "moving faster than the speed limit";
   } else if (r.end_speed > r.end_speed_limit) {

@@ -84,8 +84,8 @@ struct TrialResult {
   bool stable = false;
   // Why: "at rest" (stopped early: nothing sliding, every watched point still),
   // "did not fail within the trial time", "still moving at the end" (end speed above
-  // end_speed_limit), "moving faster than the speed limit" and "moving faster than the
-  // speed limit, not slowing" (a damped trial, stopped early; studies/trial_watch.hpp),
+  // end_speed_limit), "moving faster than the speed limit" (a damped trial, stopped early;
+  // studies/trial_watch.hpp),
   // "moved beyond the failure displacement", "diverged: ...".
   std::string verdict;
   double largest_displacement = 0.0;  // m, of the watched points since the trial started

@@ -69,33 +69,16 @@ TrialStop TrialWatch::observe(const std::vector<Vec2>& now, double elapsed, long
     // times the limit for a few tenths of a second before it comes to rest
     // (verification/slope-cut, 652 blocks, penalty auto / 10: 0.58 mm over 0.8 s at
     // F = 0.92, then at rest; a window of the last 20 steps after T/4 called it failing and
-    // gave F = 0.910). Such a transient slows down; a failing mechanism does not.
+    // gave F = 0.910). Two eighths of the last quarter, the later not slower, do not tell
+    // such transients apart either: on the toppling slopes of verification/slope-cut they
+    // called 11 trials failing that came to rest (docs/factor-of-safety.md, section 2).
     while (quarter_.size() > 1 && quarter_[1].time <= elapsed - 0.25 * T) quarter_.pop_front();
-    if (recent && recent->speed > recent->limit && elapsed >= 0.25 * T) {
-      // Failing steadily: over both eighths of the last quarter at more than 4 times the
-      // limit, and the later eighth not slower. Slower in m/s, not as a multiple of its
-      // limit (which follows the mean step): compared so, transients on the steep slopes of
-      // verification/slope-cut at a tenth of the penalty, whose later steps were cut shorter,
-      // read as not slowing and two trials that come to rest were called failing.
-      const double mid = elapsed - 0.125 * T;
-      const auto m = std::lower_bound(quarter_.begin(), quarter_.end(), mid,
-                                      [](const Mark& a, double t) { return a.time < t; });
-      if (m != quarter_.end() && m != quarter_.begin()) {
-        const SpeedWindow first = since(quarter_.front(), m->points, m->time, m->step);
-        const SpeedWindow second = since(*m, now, elapsed, steps);
-        if (first.speed > kFailSpeedShare * first.limit &&
-            second.speed > kFailSpeedShare * second.limit &&
-            second.speed >= first.speed) {
-          stop = TrialStop::FailingSteadily;
-        }
-      }
-      // Moving fast: after half the trial time, over the whole last quarter at more than 4
-      // times the limit, and still faster than the limit over the last 20 steps (a transient
-      // that has died down by T/2 is not called failing on its past).
-      if (stop == TrialStop::Continue && elapsed >= 0.5 * T) {
-        const SpeedWindow last_quarter = since(quarter_.front(), now, elapsed, steps);
-        if (last_quarter.speed > kFailSpeedShare * last_quarter.limit) stop = TrialStop::MovingFast;
-      }
+    // Moving fast: after half the trial time, over the whole last quarter at more than 4
+    // times the limit, and still faster than the limit over the last 20 steps (a transient
+    // that has died down by T/2 is not called failing on its past).
+    if (recent && recent->speed > recent->limit && elapsed >= 0.5 * T) {
+      const SpeedWindow last_quarter = since(quarter_.front(), now, elapsed, steps);
+      if (last_quarter.speed > kFailSpeedShare * last_quarter.limit) stop = TrialStop::MovingFast;
     }
     // A stopped trial keeps the marks before this step: its end speed is taken over the
     // last kRestSteps steps (end_speed).

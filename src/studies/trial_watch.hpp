@@ -25,7 +25,6 @@ enum class TrialStop {
   MovedTooFar,      // a watched point moved beyond the failure displacement
   AtRest,           // after T/4, every watched point still over the last 20 steps
   MovingFast,       // k < 1, after T/2: fast over the last quarter and the last 20 steps
-  FailingSteadily,  // k < 1, after T/4: fast over two eighths, the later not slower
 };
 
 // A speed over a window of steps: the fastest watched point's displacement over the window's
