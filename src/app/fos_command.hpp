@@ -15,7 +15,7 @@ namespace dda {
 // `method`: "strength-reduction" (the search, with the limit analysis beside it) or
 // "limit-analysis" (the consolidation and the limit analysis only). `skip_limit_analysis`:
 // the search alone (the report's limit_analysis says it was skipped). `dynamic_check`: after
-// the search, dynamic trials at the bracket's ends (studies/factor_cross_check.hpp).
+// the search, dynamic trials at 0.95 F and 1.05 F (studies/factor_cross_check.hpp).
 int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,
                 const std::string& method = "strength-reduction",
                 bool skip_limit_analysis = false, bool dynamic_check = false);

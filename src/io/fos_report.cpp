@@ -58,6 +58,19 @@ std::string outcome(const TrialResult& t) {
   return t.stable ? "stable" : "failing";
 }
 
+// The trials as a markdown table, one row each, in the order given.
+std::string trials_table(const std::vector<TrialResult>& trials) {
+  std::ostringstream md;
+  md << "| F | verdict | why | largest displacement (m) | end speed (m/s) | speed limit (m/s) | steps | wall time (s) |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  for (const TrialResult& t : trials) {
+    md << "| " << fixed(t.factor, 4) << " | " << outcome(t) << " | "
+       << t.verdict << " | " << general(t.largest_displacement) << " | " << general(t.end_speed)
+       << " | " << general(t.end_speed_limit) << " | " << t.steps << " | " << fixed(t.wall_time_s, 2) << " |\n";
+  }
+  return md.str();
+}
+
 json trial_json(const TrialResult& t) {
   return {{"F", t.factor},
           {"stable", t.stable},
@@ -326,23 +339,11 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
     md << "a mechanism accelerating at " << general(s.detect_acceleration)
        << " g would move in these damped steps (the table's speed limit).\n\n";
   }
-  md << "| F | verdict | why | largest displacement (m) | end speed (m/s) | speed limit (m/s) | steps | wall time (s) |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
-  for (const TrialResult& t : result.trials) {
-    md << "| " << fixed(t.factor, 4) << " | " << outcome(t) << " | "
-       << t.verdict << " | " << general(t.largest_displacement) << " | " << general(t.end_speed)
-       << " | " << general(t.end_speed_limit) << " | " << t.steps << " | " << fixed(t.wall_time_s, 2) << " |\n";
-  }
+  md << trials_table(result.trials);
   if (dynamic != nullptr && dynamic->computed) {
     md << "\n## Static and dynamic trials\n\n" << dynamic->text
        << " (dynamic coefficient 1, the same trial time and verdict; docs/factor-of-safety.md).\n\n"
-       << "| F | verdict | why | largest displacement (m) | end speed (m/s) | speed limit (m/s) | steps | wall time (s) |\n"
-       << "|---|---|---|---|---|---|---|---|\n";
-    for (const TrialResult& t : dynamic->trials) {
-      md << "| " << fixed(t.factor, 4) << " | " << outcome(t) << " | " << t.verdict << " | "
-         << general(t.largest_displacement) << " | " << general(t.end_speed) << " | "
-         << general(t.end_speed_limit) << " | " << t.steps << " | " << fixed(t.wall_time_s, 2) << " |\n";
-    }
+       << trials_table(dynamic->trials);
   }
   if (limit != nullptr) {
     md << "\n## A second factor: rigid-block limit analysis\n\n" << limit_analysis_line(*limit)
@@ -363,8 +364,9 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   if (limit != nullptr && limit->has_failing) {
     md << "\n## The first failing trial's mechanism\n\n" << failing_mechanism_line(*limit, scene)
        << ".\n\nBlocks that moved more than " << general(kMechanismShare)
-       << " of the largest displacement (\"rotating\": their rotation moved their corners more "
-          "than their centroid moved):\n\n| block | displacement x (m) | displacement y (m) | "
+       << " of the largest displacement (\"toppling\" or \"rotating\": they turned about a point "
+          "of their own, below their centroid or elsewhere; docs/factor-of-safety.md):\n\n"
+          "| block | displacement x (m) | displacement y (m) | "
           "rotation (rad) | mode |\n|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < std::min<std::size_t>(limit->failing.blocks.size(), 20); ++i) {
       const BlockMotion& b = limit->failing.blocks[i];

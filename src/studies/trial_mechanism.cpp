@@ -131,7 +131,9 @@ std::vector<BlockMotion> moved_blocks(const World& consolidated, const World& tr
   std::vector<BlockMotion> out;
   if (largest <= 0.0) return out;
   const std::vector<char> touched = touched_blocks(trial_end);
-  const Vec2 gravity = consolidated.gravity;
+  // Down: the gravity direction (the toppling test below).
+  const Vec2 down = consolidated.gravity.norm() > 0.0 ? Vec2(consolidated.gravity.normalized())
+                                                      : Vec2(0.0, -1.0);
   for (std::size_t i = 0; i < consolidated.blocks.size(); ++i) {
     const Block& before = consolidated.blocks[i];
     const Block& after = trial_end.blocks[i];
@@ -154,7 +156,6 @@ std::vector<BlockMotion> moved_blocks(const World& consolidated, const World& tr
       // centroid c: u = r z x (c - p), so p - c = (-u_y, u_x) / r; it lies within
       // kPivotReach x radius of c (the test above).
       const Vec2 to_pivot = Vec2(-u.y(), u.x()) / b.rotation;
-      const Vec2 down = gravity.norm() > 0.0 ? Vec2(gravity.normalized()) : Vec2(0.0, -1.0);
       b.mode = to_pivot.dot(down) > std::cos(M_PI / 4.0) * to_pivot.norm() ? "toppling" : "rotating";
     }
     out.push_back(b);

@@ -74,8 +74,10 @@ TrialStop TrialWatch::observe(const std::vector<Vec2>& now, double elapsed, long
     // called 11 trials failing that came to rest (docs/factor-of-safety.md, section 2).
     while (quarter_.size() > 1 && quarter_[1].time <= elapsed - 0.25 * T) quarter_.pop_front();
     // Moving fast: after half the trial time, over the whole last quarter at more than 4
-    // times the limit, and still faster than the limit over the last 20 steps (a transient
-    // that has died down by T/2 is not called failing on its past).
+    // times the limit, and still faster than the limit over the last 20 steps. The quarter
+    // alone called a transient failing that had died down at T/2 (the steep slope of
+    // verification/slope-cut at dt 0.002, F = 0.578: 2e-6 m/s over the last 20 steps against
+    // a limit of 2e-5).
     if (recent && recent->speed > recent->limit && elapsed >= 0.5 * T) {
       const SpeedWindow last_quarter = since(quarter_.front(), now, elapsed, steps);
       if (last_quarter.speed > kFailSpeedShare * last_quarter.limit) stop = TrialStop::MovingFast;
