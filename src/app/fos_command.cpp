@@ -17,6 +17,7 @@
 #include "solver/run.hpp"
 #include "studies/factor_cross_check.hpp"
 #include "studies/limit_analysis.hpp"
+#include "studies/settings_spread.hpp"
 #include "studies/trial_mechanism.hpp"
 
 namespace dda {
@@ -121,7 +122,10 @@ void write_limit_analysis_picture(const std::filesystem::path& path, const World
 }  // namespace
 
 int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,
-                const std::string& method, bool skip_limit_analysis, bool dynamic_check) {
+                const FosCommandOptions& options) {
+  const std::string& method = options.method;
+  const bool skip_limit_analysis = options.skip_limit_analysis;
+  const bool dynamic_check = options.dynamic_check;
   if (method != "strength-reduction" && method != "limit-analysis") {
     throw InputError("fos: --method: must be strength-reduction or limit-analysis, got " + method);
   }
@@ -135,6 +139,10 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   if (dynamic_check && settings.dynamic_coefficient >= 1.0) {
     throw InputError("fos: --dynamic-check compares dynamic trials with the search's, which are "
                      "dynamic already (--dynamic-coefficient 1)");
+  }
+  if (options.spread && method == "limit-analysis") {
+    throw InputError("fos: --spread repeats the strength-reduction search at other settings; "
+                     "--method limit-analysis runs none");
   }
   if (scene_path.empty()) {
     throw InputError(
@@ -172,6 +180,9 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   info.bonds_broken = consolidation.stats.bonds_broken;
   info.broken_bonds = consolidation.stats.broken_bonds;
   info.factor = settings.consolidation_factor;
+  // The settings as given, for the searches of --spread (each resolves its own from its
+  // consolidation, as a run at that setting would).
+  FosSettings given = settings;
   settings = resolve_fos_settings(world, settings);
   const auto stop_message = [&](const std::string& when) {
     return "interrupted (signal " + std::to_string(interrupt_signal()) + ") " + when;
@@ -218,7 +229,10 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   std::cerr << "dda: " << limit_analysis_line(limit) << "\n";
   // The limit analysis's upper end bounds the factor of non-dilating joints from above: the
   // search tries it first instead of F = 2 (FosSettings::first_failing_guess).
-  if (limit.analysis.found) settings.first_failing_guess = limit.analysis.upper;
+  if (limit.analysis.found) {
+    settings.first_failing_guess = limit.analysis.upper;
+    given.first_failing_guess = limit.analysis.upper;
+  }
   const auto draw_limit_analysis = [&] {
     write_limit_analysis_picture(std::filesystem::path(out_dir) / "limit_analysis.png", world,
                                  limit.analysis);
@@ -288,8 +302,30 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     }
     std::cerr << "dda: " << (dynamic->agrees ? "" : "note: ") << dynamic->text << "\n";
   }
+  // The search again at each of kSpreadSettings, one after another (each with its trials
+  // `jobs` at once).
+  std::optional<SettingsSpread> spread;
+  if (options.spread && result.found && !interrupted()) {
+    std::vector<SpreadFactor> factors;
+    for (const SpreadSetting& setting : kSpreadSettings) {
+      std::cerr << "dda: the search at " << setting.name << "\n";
+      factors.push_back(factor_at_setting(
+          scene, setting, settings.consolidation_factor, given,
+          [&setting](const TrialResult& t) {
+            std::cerr << "dda: " << setting.name << ": " << trial_line(t) << "\n";
+          },
+          interrupted));
+      if (interrupted()) break;
+    }
+    spread = judge_spread(result.factor_of_safety, std::move(factors));
+    if (interrupted()) {
+      spread->within = false;
+      spread->text = stop_message("during the searches at other settings; the search's factor stands");
+    }
+    std::cerr << "dda: " << (spread->within ? "" : "note: ") << spread->text << "\n";
+  }
   write_fos_report(out_dir, scene, settings, info, reported, wall, &limit,
-                   dynamic ? &*dynamic : nullptr);
+                   dynamic ? &*dynamic : nullptr, spread ? &*spread : nullptr);
   if (!result.found) {
     std::cerr << "dda: error: no factor of safety: " << result.message << "; trials in "
               << out_dir << "/report.json\n";

@@ -16,8 +16,15 @@ namespace dda {
 // "limit-analysis" (the consolidation and the limit analysis only). `skip_limit_analysis`:
 // the search alone (the report's limit_analysis says it was skipped). `dynamic_check`: after
 // the search, dynamic trials at 0.95 F and 1.05 F (studies/factor_cross_check.hpp).
+// What dda fos runs besides the search (its command-line flags).
+struct FosCommandOptions {
+  std::string method = "strength-reduction";  // or "limit-analysis" (that alone)
+  bool skip_limit_analysis = false;  // --skip-limit-analysis
+  bool dynamic_check = false;        // --dynamic-check: dynamic trials at 0.95 F and 1.05 F
+  bool spread = false;               // --spread: the search again at dt / 5, x 5, penalty / 10, x 10
+};
+
 int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,
-                const std::string& method = "strength-reduction",
-                bool skip_limit_analysis = false, bool dynamic_check = false);
+                const FosCommandOptions& options = {});
 
 }  // namespace dda

@@ -173,9 +173,7 @@ int main(int argc, char** argv) {
   std::string fos_scene;
   std::string fos_dir = "dda-fos";
   dda::FosSettings fos;
-  std::string fos_method = "strength-reduction";
-  bool fos_skip_la = false;
-  bool fos_dynamic_check = false;
+  dda::FosCommandOptions fos_options;
   CLI::App* fos_app = app.add_subcommand(
       "fos", "Factor of safety by strength reduction (docs/factor-of-safety.md)");
   fos_app->add_option("scene", fos_scene, "Scene file (JSON, see docs/scene-format.md)");
@@ -203,15 +201,19 @@ int main(int argc, char** argv) {
                       "Consolidate with the joints' strengths divided by this (e.g. 0.5 for a "
                       "slope whose factor is below 1)")->capture_default_str()
       ->check(CLI::Range(1e-3, 1.0));
-  fos_app->add_option("--method", fos_method,
+  fos_app->add_option("--method", fos_options.method,
                       "strength-reduction (the search, with the limit analysis beside it) or "
                       "limit-analysis (that alone; docs/limit-analysis.md)")
       ->capture_default_str()
       ->check(CLI::IsMember({"strength-reduction", "limit-analysis"}));
-  fos_app->add_flag("--dynamic-check", fos_dynamic_check,
+  fos_app->add_flag("--dynamic-check", fos_options.dynamic_check,
                     "After the search, run dynamic trials at 0.95 F and 1.05 F and say whether "
                     "the dynamic factor lies within 5 % of the static one");
-  fos_app->add_flag("--skip-limit-analysis", fos_skip_la,
+  fos_app->add_flag("--spread", fos_options.spread,
+                    "After the search, search again with the time steps / 5 and x 5 and the "
+                    "penalty / 10 and x 10, and say whether the factor holds within 2 % "
+                    "(five times the run)");
+  fos_app->add_flag("--skip-limit-analysis", fos_options.skip_limit_analysis,
                     "Run the strength-reduction search without the limit analysis beside it");
   fos_app->add_option("--seismic-coefficient", fos.seismic_coefficient,
                       "Pseudo-static horizontal body force, as a share of the weight, along +x "
@@ -240,7 +242,7 @@ int main(int argc, char** argv) {
     if (cut->parsed()) require_output_path(scene_out, "cut");
     if (run->parsed()) return run_command(scene_path, out_dir);
     if (point->parsed()) return material_point_command(spec_path, csv_file);
-    if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_method, fos_skip_la, fos_dynamic_check);
+    if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_options);
     if (cut->parsed()) return dda::cut_command(model_path, scene_out);
   } catch (const dda::InputError& e) {
     std::cerr << "dda: error: " << e.what() << "\n";

@@ -1,11 +1,14 @@
 #include "io/fos_report.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "io/text_file.hpp"
+#include "solver/world.hpp"
 
 namespace dda {
 namespace {
@@ -234,10 +237,64 @@ std::string failing_mechanism_line(const LimitAnalysisInfo& l, const Scene& scen
   return line;
 }
 
+namespace {
+
+// --spread: the search's factor at each of kSpreadSettings.
+json settings_spread_json(const SettingsSpread& spread) {
+  json factors = json::array();
+  for (const SpreadFactor& f : spread.factors) {
+    factors.push_back({{"setting", f.setting},
+                       {"time_step_scale", f.time_step_scale},
+                       {"penalty_scale", f.penalty_scale},
+                       {"time_step", f.time_step},
+                       {"penalty", f.penalty},
+                       {"found", f.found},
+                       {"factor", f.found ? json(f.factor) : json(nullptr)},
+                       {"bracket", f.found ? json::array({f.last_stable, f.first_failing}) : json(nullptr)},
+                       {"message", f.message},
+                       {"trials", f.trials},
+                       {"wall_time_s", f.wall_time_s},
+                       {"interrupted", f.interrupted}});
+  }
+  return {{"computed", spread.computed},
+          {"within", spread.within},
+          {"spread", spread.spread},
+          {"agreement", kSpreadAgreement},
+          {"text", spread.text},
+          {"factors", factors}};
+}
+
+std::string settings_spread_markdown(const Scene& scene, const FosResult& result,
+                                     const SettingsSpread& spread) {
+  std::string text = spread.text;
+  if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+  const std::vector<double>& steps =
+      scene.stages.empty() ? scene.control.time_steps : scene.stages.back().time_steps;
+  std::ostringstream md;
+  md << "\n## The factor over the time step and the penalty (--spread)\n\n" << text
+     << ". Each row consolidates the scene again with every time step or the penalty scaled "
+        "and searches as above; the spread is (max - min) / mean of the factors found "
+        "(docs/factor-of-safety.md, section 6).\n\n"
+     << "| setting | time step (s) | penalty (N/m) | F | bracket | trials | wall time (s) |\n"
+        "|---|---|---|---|---|---|---|\n"
+     << "| scene | " << general(*std::min_element(steps.begin(), steps.end())) << " | "
+     << general(resolve_penalty(scene)) << " | " << fixed(result.factor_of_safety, 4) << " | " << fixed(result.last_stable, 4)
+     << " to " << fixed(result.first_failing, 4) << " | " << result.trials.size() << " | |\n";
+  for (const SpreadFactor& f : spread.factors) {
+    md << "| " << f.setting << " | " << general(f.time_step) << " | " << general(f.penalty) << " | "
+       << (f.found ? fixed(f.factor, 4) : std::string("none")) << " | "
+       << (f.found ? fixed(f.last_stable, 4) + " to " + fixed(f.first_failing, 4) : f.message) << " | "
+       << f.trials << " | " << fixed(f.wall_time_s, 1) << " |\n";
+  }
+  return md.str();
+}
+
+}  // namespace
+
 void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
                       const FosSettings& s, const ConsolidationInfo& consolidation,
                       const FosResult& result, double wall_time_s, const LimitAnalysisInfo* limit,
-                      const DynamicCheck* dynamic) {
+                      const DynamicCheck* dynamic, const SettingsSpread* spread) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
@@ -299,6 +356,8 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   } else {
     report["dynamic_check"] = {{"computed", false}};
   }
+  report["settings_spread"] = spread != nullptr ? settings_spread_json(*spread)
+                                                : json{{"computed", false}};
   write_text_file((dir / "report.json").string(), report.dump(2) + "\n");
 
   std::ostringstream md;
@@ -345,6 +404,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
        << " (dynamic coefficient 1, the same trial time and verdict; docs/factor-of-safety.md).\n\n"
        << trials_table(dynamic->trials);
   }
+  if (spread != nullptr && spread->computed) md << settings_spread_markdown(scene, result, *spread);
   if (limit != nullptr) {
     md << "\n## A second factor: rigid-block limit analysis\n\n" << limit_analysis_line(*limit)
        << ".\n\nThe consolidated blocks taken as rigid, their closed contacts as the points "

@@ -514,6 +514,38 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   CHECK(both.exit_code == 2);
   CHECK_THAT(both.output, Catch::Contains("--dynamic-check"));
 
+  // With --spread: the block on its plane is a rigid mechanism on a frictional joint, its
+  // factor a property of the strengths alone, so the four other settings (dt 0.0004 and
+  // 0.01 s, penalty 5e10 and 5e12 N/m) find it to within a bisection step (the bracket's
+  // 0.01: verification/slope --spread measures 0.00 % on this case).
+  CHECK(report.at("settings_spread").at("computed") == false);
+  const auto spread = test::run_command(std::string(DDA_EXE) + " fos " +
+                                        test::shell_quote((dir.path / "planar.json").string()) +
+                                        " --spread --skip-limit-analysis --out " +
+                                        test::shell_quote((dir.path / "spread").string()));
+  INFO(spread.output);
+  REQUIRE(spread.exit_code == 0);
+  const json spread_report = json::parse(test::read_file(dir.path / "spread" / "report.json"));
+  const json& settings = spread_report.at("settings_spread");
+  CHECK(settings.at("computed") == true);
+  CHECK(settings.at("within") == true);
+  CHECK(settings.at("spread").get<double>() <= 0.01 / 1.2);
+  REQUIRE(settings.at("factors").size() == 4);
+  CHECK(settings.at("factors").at(0).at("time_step").get<double>() == Approx(0.0004).epsilon(1e-12));
+  CHECK(settings.at("factors").at(3).at("penalty").get<double>() == Approx(5e12).epsilon(1e-12));
+  for (const json& f : settings.at("factors")) {
+    CHECK(f.at("factor").get<double>() == Approx(1.2).margin(0.015));
+  }
+  CHECK_THAT(test::read_file(dir.path / "spread" / "report.md"),
+             Catch::Contains("The factor over the time step and the penalty"));
+  // It repeats the search, which the limit analysis alone does not run.
+  const auto la_spread = test::run_command(std::string(DDA_EXE) + " fos " +
+                                           test::shell_quote((dir.path / "planar.json").string()) +
+                                           " --spread --method limit-analysis --out " +
+                                           test::shell_quote((dir.path / "la").string()));
+  CHECK(la_spread.exit_code == 2);
+  CHECK_THAT(la_spread.output, Catch::Contains("--spread"));
+
   // No failing trial up to --max-factor 1.1: no factor, exit 3, and the report says why.
   const auto none = test::run_command(std::string(DDA_EXE) + " fos " +
                                       test::shell_quote((dir.path / "planar.json").string()) +

@@ -15,6 +15,8 @@
 namespace {
 
 using namespace dda::slope;
+using dda::SpreadSetting;
+using dda::kSpreadSettings;
 
 // A published value given to `decimals` decimals: ours must round to it.
 void check_published(double ours, double published, int decimals) {

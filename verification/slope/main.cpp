@@ -11,11 +11,13 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "report.hpp"
 #include "slope_cases.hpp"
 #include "slope_run.hpp"
+#include "studies/settings_spread.hpp"
 #include "studies/strength_reduction.hpp"
 
 namespace {
@@ -35,6 +37,10 @@ constexpr const char* kUsage =
 
 int main(int argc, char** argv) {
   using namespace dda::slope;
+  using dda::SpreadFactor;
+  using dda::SpreadSetting;
+  using dda::judge_spread;
+  using dda::kSpreadSettings;
   std::filesystem::path out;
   std::vector<std::string> only;
   bool smoke = false, verbose = false, list = false, spread = false;
@@ -100,22 +106,21 @@ int main(int argc, char** argv) {
       results.push_back(run_case(cases[i], options, progress));
       if (spread && results.back().found) {
         CaseResult& r = results.back();
-        std::vector<double> found{r.factor};
+        std::vector<SpreadFactor> found;
         for (const SpreadSetting& setting : kSpreadSettings) {
           RunOptions varied = options;
           varied.time_step_scale = setting.time_step_scale;
           varied.penalty_scale = setting.penalty_scale;
           const CaseResult v = run_case(cases[i], varied, progress);
           r.spread_factors.push_back(v.found ? v.factor : 0.0);
-          if (v.found) found.push_back(v.factor);
+          SpreadFactor f;
+          f.setting = setting.name;
+          f.found = v.found;
+          f.factor = v.factor;
+          found.push_back(f);
           std::cerr << "  " << setting.name << ": " << (v.found ? std::to_string(v.factor) : v.note) << '\n';
         }
-        if (found.size() > 1) {
-          const auto [lo, hi] = std::minmax_element(found.begin(), found.end());
-          double mean = 0.0;
-          for (double f : found) mean += f / static_cast<double>(found.size());
-          r.spread = (*hi - *lo) / mean;
-        }
+        r.spread = judge_spread(r.factor, std::move(found)).spread;
       }
       std::cerr << "[" << i + 1 << "/" << cases.size() << "] " << case_line(cases[i], results.back()) << '\n';
     }

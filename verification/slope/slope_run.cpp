@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
@@ -97,10 +98,8 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
     }
     throw;
   }
-  if (options.time_step_scale != 1.0) {
-    for (double& dt : scene.control.time_steps) dt *= options.time_step_scale;
-  }
-  if (options.penalty_scale != 1.0) scene.control.penalty = options.penalty_scale * resolve_penalty(scene);
+  // Every time step, the stages' too (a trial runs on the last stage's), and the penalty.
+  scene = with_spread_setting(std::move(scene), SpreadSetting{"", options.time_step_scale, options.penalty_scale});
   // A case whose factor is below 1 (the uplift and full-crack cases) cannot come to rest at
   // full strength: it consolidates at double strength (consolidation factor 0.5), else a
   // block that slid during the consolidation would have opened its tension crack before the

@@ -9,6 +9,7 @@
 
 #include "kinematics/types.hpp"
 #include "slope_cases.hpp"
+#include "studies/settings_spread.hpp"
 
 namespace dda::slope {
 
@@ -21,15 +22,6 @@ struct RunOptions {
   double time_step_scale = 1.0;
   double penalty_scale = 1.0;
 };
-
-// The settings --spread runs beside each case's own: dt / 5 and x 5, penalty / 10 and x 10.
-struct SpreadSetting {
-  const char* name;
-  double time_step_scale;
-  double penalty_scale;
-};
-inline constexpr SpreadSetting kSpreadSettings[] = {
-    {"dt/5", 0.2, 1.0}, {"dt*5", 5.0, 1.0}, {"penalty/10", 1.0, 0.1}, {"penalty*10", 1.0, 10.0}};
 
 // A toppling column at the first failing trial (moved against the consolidated state).
 struct ColumnMotion {
