@@ -24,7 +24,7 @@ enum class TrialStop {
   Continue,
   MovedTooFar,      // a watched point moved beyond the failure displacement
   AtRest,           // after T/4, every watched point still over the last 20 steps
-  MovingFast,       // k < 1, after T/2: fast over the last quarter and the last 20 steps
+  MovingFast,       // k < 1, after T/2: fast over the last quarter and the last 20 steps, not dying
 };
 
 // A speed over a window of steps: the fastest watched point's displacement over the window's
@@ -62,6 +62,9 @@ class TrialWatch {
     long step = 0;
   };
   SpeedWindow since(const Mark& from, const std::vector<Vec2>& to, double time, long step) const;
+  // Over the last quarter's marks: the fastest point moved less over the last eighth of the
+  // trial time than kDyingShare of what it moved over the eighth before.
+  bool dying(const std::vector<Vec2>& now, double elapsed) const;
 
   TrialWatchSettings s_;
   Mark start_;

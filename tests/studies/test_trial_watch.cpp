@@ -1,5 +1,6 @@
 // The trial verdict (studies/trial_watch.hpp) on made-up paths of one watched point: a steady
-// failure, a transient that dies away, a motion that slows but has not stopped by T/2, a jump
+// failure, a transient that dies away, a motion that slows but has not stopped by T/2, one
+// that dies just before T/2, a jump
 // beyond the failure displacement, a slow creep judged at the end, and a dynamic trial.
 #include <catch2/catch.hpp>
 
@@ -78,14 +79,31 @@ TEST_CASE("a failure fast over the last quarter stops at half the trial time, a 
     CHECK(o.time == Approx(rest).margin(1.01 * kDt));
   }
   SECTION("slowing steadily from 20 times the limit, still fast at T/2: failing there") {
-    // v = 20 limit (1 - t / 1.1): never steady (the later eighth always the slower), but at
-    // T/2 the last quarter averages 20 (1 - 0.75 / 1.1) = 6.4 times the limit, and the last
-    // 20 steps 20 (1 - 0.9 / 1.1) = 3.6 times.
+    // v = 20 limit (1 - t / 4): never steady (the later eighth always the slower), but at
+    // T/2 the last quarter averages 20 (1 - 0.75 / 4) = 16.25 times the limit, the last 20
+    // steps 20 (1 - 0.9 / 4) = 15.5 times, and the last eighth moved 0.925 of the eighth
+    // before: not dying.
     const Outcome o = follow(static_settings(), [](double t) {
-      return 20.0 * kLimit * (t - t * t / 2.2);
+      return 20.0 * kLimit * (t - t * t / 8.0);
     });
     CHECK(o.stop == TrialStop::MovingFast);
     CHECK(o.time == Approx(1.0).margin(1.01 * kDt));
+  }
+  SECTION("fast until 3T/8, then dying within the last eighth before T/2: let come to rest") {
+    // The 652-block slope at a tenth of the penalty, F = 0.995: steady for three eighths,
+    // then the last eighth before T/2 moved 0.24 of the one before, and the trial came to
+    // rest (docs/factor-of-safety.md, section 2). Here v = 20 limit until 0.75 s, then
+    // 20 limit exp(-(t - 0.75) / 0.1): at T/2 the last quarter averages 20 (0.25 + 0.0918)
+    // / 0.5 = 13.7 times the limit, but its last eighth moved 0.0918 / 0.25 = 0.37 of the
+    // one before. At rest once the mean speed over the last 20 steps falls below 1 % of the
+    // limit: 20 x 0.1 exp(-(t - 0.95) / 0.1) (1 - exp(-2)) / 0.2 = 0.01, t = 1.626 s.
+    const double v = 20.0 * kLimit, t0 = 0.75, tau = 0.1;
+    const Outcome o = follow(static_settings(), [=](double t) {
+      return t < t0 ? v * t : v * t0 + v * tau * (1.0 - std::exp(-(t - t0) / tau));
+    });
+    CHECK(o.stop == TrialStop::AtRest);
+    const double rest = 0.95 - tau * std::log(0.01 * 0.2 / (20.0 * tau * (1.0 - std::exp(-2.0))));
+    CHECK(o.time == Approx(rest).margin(1.01 * kDt));
   }
   SECTION("a jump beyond the failure displacement") {
     const Outcome o = follow(static_settings(), [](double t) { return t < 0.3 ? 0.0 : 0.06; });
