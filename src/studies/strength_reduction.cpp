@@ -370,7 +370,10 @@ FosResult find_factor_of_safety(const FosSettings& s, const TrialEvaluator& eval
       std::snprintf(failing, sizeof failing, "%.4f", *b.failing);
       result.message = "the verdicts are not monotone in F: stable at F = " + above +
                        ", above the failing F = " + failing +
-                       " (the bracket is the lowest failing factor and the stable one below it)";
+                       " (the bracket is the lowest failing factor and the stable one below it): "
+                       "near its factor a slope's trials are decided by which contacts slip "
+                       "first, which changes F in its sixth digit can change, so the factor is "
+                       "known to the width of that band (docs/factor-of-safety.md, section 6)";
     }
   } else if (b.stable) {
     result.message = "no trial failed up to F = " + std::to_string(s.max_factor) +

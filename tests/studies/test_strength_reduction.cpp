@@ -224,6 +224,7 @@ TEST_CASE("the search brackets a made-up threshold within its tolerance and alwa
     CHECK(r.first_failing <= 1.2 + s.tolerance);
     CHECK(r.last_stable < 1.2);
     CHECK_THAT(r.message, Catch::Contains("stable at F = 1.6667, above the failing F = 1.20"));
+    CHECK_THAT(r.message, Catch::Contains("which contacts slip first"));
   }
   // Nothing fails up to max_factor, or everything fails down to min_factor: no factor, with
   // a message, after a bounded number of trials.
