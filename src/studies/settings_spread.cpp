@@ -119,14 +119,15 @@ SettingsSpread judge_spread(double factor_of_safety, std::vector<SpreadFactor> f
   } else if (s.within) {
     s.text = "the factor holds within " + percent(s.spread) + " " + over + " (" + range + ")";
   } else {
+    // The scene's own settings are named first where they share the end with a setting.
     const auto named = [&](const SpreadFactor* f, double x) {
-      return f != nullptr && f->factor == x ? f->setting : std::string("the scene's settings");
+      return x == factor_of_safety || f == nullptr ? std::string("the scene's settings") : f->setting;
     };
     s.text = "the factor moves by " + percent(s.spread) + " " + over + " (" + range +
              ", lowest at " + named(lowest, *lo) + ", highest at " + named(highest, *hi) +
              "), more than " + percent(kSpreadAgreement) +
-             ": it depends on the time step or the contact stiffness as well as on the slope "
-             "(docs/factor-of-safety.md, section 6)";
+             ": it depends on the time step or the contact stiffness as well as on the slope; "
+             "plan with the lowest, F = " + number(*lo) + " (docs/factor-of-safety.md, section 6)";
   }
   return s;
 }

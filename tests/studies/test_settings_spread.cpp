@@ -84,6 +84,12 @@ TEST_CASE("the spread of the factor over the settings is judged against 2 %", "[
   CHECK_FALSE(apart.within);
   CHECK(apart.spread == Approx(0.06 / 0.992).epsilon(1e-12));
   CHECK_THAT(apart.text, Catch::Contains("lowest at penalty/10, highest at penalty*10"));
+  CHECK_THAT(apart.text, Catch::Contains("plan with the lowest, F = 0.9500"));
+  // Where the scene's own factor is an end, it is named (not a setting that ties it).
+  const SettingsSpread tied = judge_spread(
+      1.0, {found_at("dt/5", 1.0), found_at("dt*5", 1.0), found_at("penalty/10", 0.95),
+            found_at("penalty*10", 0.99)});
+  CHECK_THAT(tied.text, Catch::Contains("lowest at penalty/10, highest at the scene's settings"));
   // A setting with no factor is not within, whatever the others say.
   SpreadFactor none;
   none.setting = "dt*5";
