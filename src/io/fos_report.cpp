@@ -268,8 +268,6 @@ std::string settings_spread_markdown(const Scene& scene, const FosResult& result
                                      const SettingsSpread& spread) {
   std::string text = spread.text;
   if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
-  const std::vector<double>& steps =
-      scene.stages.empty() ? scene.control.time_steps : scene.stages.back().time_steps;
   std::ostringstream md;
   md << "\n## The factor over the time step and the penalty (--spread)\n\n" << text
      << ". Each row consolidates the scene again with every time step or the penalty scaled "
@@ -277,7 +275,7 @@ std::string settings_spread_markdown(const Scene& scene, const FosResult& result
         "(docs/factor-of-safety.md, section 6).\n\n"
      << "| setting | time step (s) | penalty (N/m) | F | bracket | trials | wall time (s) |\n"
         "|---|---|---|---|---|---|---|\n"
-     << "| scene | " << general(*std::min_element(steps.begin(), steps.end())) << " | "
+     << "| scene | " << general(trial_time_step(scene)) << " | "
      << general(resolve_penalty(scene)) << " | " << fixed(result.factor_of_safety, 4) << " | " << fixed(result.last_stable, 4)
      << " to " << fixed(result.first_failing, 4) << " | " << result.trials.size() << " | |\n";
   for (const SpreadFactor& f : spread.factors) {

@@ -24,6 +24,12 @@ std::string number(double x) {
 
 }  // namespace
 
+double trial_time_step(const Scene& scene) {
+  const std::vector<double>& steps =
+      scene.stages.empty() ? scene.control.time_steps : scene.stages.back().time_steps;
+  return *std::min_element(steps.begin(), steps.end());
+}
+
 Scene with_spread_setting(Scene scene, const SpreadSetting& setting) {
   if (setting.time_step_scale != 1.0) {
     for (double& dt : scene.control.time_steps) dt *= setting.time_step_scale;
@@ -53,9 +59,7 @@ SpreadFactor factor_at_setting(const Scene& scene, const SpreadSetting& setting,
   f.penalty_scale = setting.penalty_scale;
   const Scene varied = with_spread_setting(scene, setting);
   f.penalty = resolve_penalty(varied);
-  const std::vector<double>& steps =
-      varied.stages.empty() ? varied.control.time_steps : varied.stages.back().time_steps;
-  f.time_step = *std::min_element(steps.begin(), steps.end());
+  f.time_step = trial_time_step(varied);
   const Consolidation consolidated =
       consolidate(varied, consolidation_factor,
                   [&stop](const World&, const RunStats&) { return !(stop && stop()); });

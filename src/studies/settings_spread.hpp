@@ -29,6 +29,10 @@ inline constexpr SpreadSetting kSpreadSettings[] = {
 // depending on the settings: the 2 % a slope engineer can plan with.
 inline constexpr double kSpreadAgreement = 0.02;
 
+// The time step a strength-reduction trial of the scene runs on: the smallest of its last
+// stage's (control's when it has no stages), which the consolidation ends with.
+double trial_time_step(const Scene& scene);
+
 // The scene with the setting applied: control's time steps and every stage's (a stage
 // carries its own copy, and the trials take the last stage's), and the penalty.
 Scene with_spread_setting(Scene scene, const SpreadSetting& setting);

@@ -22,6 +22,13 @@ constexpr double kFailSpeedShare = 4.0;
 // failing trials at F = 1.0 and 1.02 showed 1.2 and 0.83 and kept moving.
 constexpr double kDyingShare = 0.5;
 
+// The farthest any watched point moved from `from` to `to` (m).
+double farthest(const std::vector<Vec2>& from, const std::vector<Vec2>& to) {
+  double d = 0.0;
+  for (std::size_t i = 0; i < from.size(); ++i) d = std::max(d, (to[i] - from[i]).norm());
+  return d;
+}
+
 }  // namespace
 
 TrialWatch::TrialWatch(const TrialWatchSettings& settings, std::vector<Vec2> start)
@@ -41,25 +48,17 @@ double TrialWatch::speed_limit(double window_time, long window_steps) const {
 SpeedWindow TrialWatch::since(const Mark& from, const std::vector<Vec2>& to, double time,
                               long step) const {
   const double span = time - from.time;
-  double fastest = 0.0;
-  for (std::size_t i = 0; i < from.points.size(); ++i) {
-    fastest = std::max(fastest, (to[i] - from.points[i]).norm());
-  }
-  return SpeedWindow{span > 0.0 ? fastest / span : 0.0, speed_limit(span, step - from.step)};
+  return SpeedWindow{span > 0.0 ? farthest(from.points, to) / span : 0.0,
+                     speed_limit(span, step - from.step)};
 }
 
 bool TrialWatch::dying(const std::vector<Vec2>& now, double elapsed) const {
   const double eighth = 0.125 * s_.trial_time;
-  const Mark& first = quarter_.front();
-  const auto mid = std::find_if(quarter_.begin(), quarter_.end(),
-                                [&](const Mark& m) { return m.time >= elapsed - eighth; });
+  // The first mark of the last eighth (the marks are in time order).
+  const auto mid = std::lower_bound(quarter_.begin(), quarter_.end(), elapsed - eighth,
+                                    [](const Mark& m, double t) { return m.time < t; });
   if (mid == quarter_.end() || mid == quarter_.begin()) return false;
-  double early = 0.0, late = 0.0;
-  for (std::size_t i = 0; i < now.size(); ++i) {
-    early = std::max(early, (mid->points[i] - first.points[i]).norm());
-    late = std::max(late, (now[i] - mid->points[i]).norm());
-  }
-  return late < kDyingShare * early;
+  return farthest(mid->points, now) < kDyingShare * farthest(quarter_.front().points, mid->points);
 }
 
 TrialStop TrialWatch::observe(const std::vector<Vec2>& now, double elapsed, long steps) {

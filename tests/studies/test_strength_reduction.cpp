@@ -442,9 +442,13 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   const test::TempDir dir("dda-fos-");
   const Planar planar;
   test::write_file(dir.path / "planar.json", planar.scene_text());
-  const auto result = test::run_command(std::string(DDA_EXE) + " fos " +
-                                        test::shell_quote((dir.path / "planar.json").string()) +
-                                        " --out " + test::shell_quote((dir.path / "out").string()));
+  // dda fos on the planar block with these options, its report in dir / out.
+  const auto fos = [&dir](const std::string& options, const char* out) {
+    return test::run_command(std::string(DDA_EXE) + " fos " +
+                             test::shell_quote((dir.path / "planar.json").string()) + options +
+                             " --out " + test::shell_quote((dir.path / out).string()));
+  };
+  const auto result = fos("", "out");
   INFO(result.output);
   REQUIRE(result.exit_code == 0);
   const json report = json::parse(test::read_file(dir.path / "out" / "report.json"));
@@ -494,9 +498,7 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   // With --dynamic-check: a block on a plane slides alike with and without inertia (dynamic
   // trials lie within 0.4 % of limit equilibrium, verification/slope), so dynamic trials at
   // 0.95 F and 1.05 F stand and fail.
-  const auto dyn = test::run_command(std::string(DDA_EXE) + " fos " +
-                                     test::shell_quote((dir.path / "planar.json").string()) +
-                                     " --dynamic-check --out " + test::shell_quote((dir.path / "dyn").string()));
+  const auto dyn = fos(" --dynamic-check", "dyn");
   INFO(dyn.output);
   REQUIRE(dyn.exit_code == 0);
   const json dyn_report = json::parse(test::read_file(dir.path / "dyn" / "report.json"));
@@ -508,10 +510,7 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   CHECK(check.at("trials").at(1).at("stable") == false);
   CHECK_THAT(test::read_file(dir.path / "dyn" / "report.md"), Catch::Contains("Static and dynamic trials"));
   // Nothing to compare when the search's trials are dynamic already.
-  const auto both = test::run_command(std::string(DDA_EXE) + " fos " +
-                                      test::shell_quote((dir.path / "planar.json").string()) +
-                                      " --dynamic-check --dynamic-coefficient 1 --out " +
-                                      test::shell_quote((dir.path / "both").string()));
+  const auto both = fos(" --dynamic-check --dynamic-coefficient 1", "both");
   CHECK(both.exit_code == 2);
   CHECK_THAT(both.output, Catch::Contains("--dynamic-check"));
 
@@ -520,10 +519,7 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   // 0.01 s, penalty 5e10 and 5e12 N/m) find it to within a bisection step (the bracket's
   // 0.01: verification/slope --spread measures 0.00 % on this case).
   CHECK(report.at("settings_spread").at("computed") == false);
-  const auto spread = test::run_command(std::string(DDA_EXE) + " fos " +
-                                        test::shell_quote((dir.path / "planar.json").string()) +
-                                        " --spread --skip-limit-analysis --out " +
-                                        test::shell_quote((dir.path / "spread").string()));
+  const auto spread = fos(" --spread --skip-limit-analysis", "spread");
   INFO(spread.output);
   REQUIRE(spread.exit_code == 0);
   const json spread_report = json::parse(test::read_file(dir.path / "spread" / "report.json"));
@@ -540,18 +536,12 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   CHECK_THAT(test::read_file(dir.path / "spread" / "report.md"),
              Catch::Contains("The factor over the time step and the penalty"));
   // It repeats the search, which the limit analysis alone does not run.
-  const auto la_spread = test::run_command(std::string(DDA_EXE) + " fos " +
-                                           test::shell_quote((dir.path / "planar.json").string()) +
-                                           " --spread --method limit-analysis --out " +
-                                           test::shell_quote((dir.path / "la").string()));
+  const auto la_spread = fos(" --spread --method limit-analysis", "la");
   CHECK(la_spread.exit_code == 2);
   CHECK_THAT(la_spread.output, Catch::Contains("--spread"));
 
   // No failing trial up to --max-factor 1.1: no factor, exit 3, and the report says why.
-  const auto none = test::run_command(std::string(DDA_EXE) + " fos " +
-                                      test::shell_quote((dir.path / "planar.json").string()) +
-                                      " --max-factor 1.1 --out " +
-                                      test::shell_quote((dir.path / "none").string()));
+  const auto none = fos(" --max-factor 1.1", "none");
   CHECK(none.exit_code == 3);
   const json none_report = json::parse(test::read_file(dir.path / "none" / "report.json"));
   CHECK(none_report.at("factor_of_safety").is_null());
