@@ -18,6 +18,7 @@
 #include "studies/factor_cross_check.hpp"
 #include "studies/limit_analysis.hpp"
 #include "studies/settings_spread.hpp"
+#include "studies/speculative_search.hpp"
 #include "studies/trial_mechanism.hpp"
 
 namespace dda {
@@ -250,11 +251,10 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
             << settings.failure_displacement << " m, " << settings.jobs << " at once\n";
 
   const auto start = std::chrono::steady_clock::now();
-  const FosResult result = find_factor_of_safety(settings, [&](const std::vector<double>& factors) {
-    return run_trials(
-        world, settings, factors,
-        [](const TrialResult& t) { std::cerr << "dda: " << trial_line(t) << "\n"; }, interrupted);
-  });
+  const FosResult result = search_on_threads(
+      settings,
+      [&](double f, const StopQuery& stop) { return run_trial(world, settings, f, stop); },
+      [](const TrialResult& t) { std::cerr << "dda: " << trial_line(t) << "\n"; }, interrupted);
   const double wall = consolidation.stats.wall_time_s +
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.interrupted) {

@@ -337,6 +337,8 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         {"factor", consolidation.factor},
         {"bond_check", bond_check_json(consolidation.bond_check)}}},
       {"trials", trials},
+      {"discarded_trials",
+       {{"count", result.discarded_trials}, {"wall_time_s", result.discarded_wall_time_s}}},
       {"wall_time_s", wall_time_s},
   };
   if (limit != nullptr) {
@@ -432,7 +434,13 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
          << " | " << general(b.rotation) << " | " << b.mode << " |\n";
     }
   }
-  md << "\nWall time " << fixed(wall_time_s, 1) << " s in all.\n";
+  md << "\nWall time " << fixed(wall_time_s, 1) << " s in all";
+  if (result.discarded_trials > 0) {
+    md << ", of which " << result.discarded_trials << " trials started ahead of a verdict and "
+       << "dropped when it went the other way took " << fixed(result.discarded_wall_time_s, 1)
+       << " s of a thread's time";
+  }
+  md << ".\n";
   write_text_file((dir / "report.md").string(), md.str());
 }
 

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "solver/world.hpp"
+#include "studies/speculative_search.hpp"
 
 namespace dda {
 namespace {
@@ -76,9 +77,10 @@ SpreadFactor factor_at_setting(const Scene& scene, const SpreadSetting& setting,
   }
   const World& world = consolidated.world;
   const FosSettings resolved = resolve_fos_settings(world, settings);
-  const FosResult r = find_factor_of_safety(resolved, [&](const std::vector<double>& factors) {
-    return run_trials(world, resolved, factors, on_trial, stop);
-  });
+  const FosResult r = search_on_threads(
+      resolved,
+      [&](double factor, const StopQuery& q) { return run_trial(world, resolved, factor, q); },
+      on_trial, stop);
   f.found = r.found;
   f.interrupted = r.interrupted;
   if (r.found) {

@@ -327,16 +327,24 @@ std::vector<double> next_factors(const std::vector<TrialResult>& trials, const F
 }
 
 FosResult find_factor_of_safety(const FosSettings& s, const TrialEvaluator& evaluate) {
-  FosResult result;
+  std::vector<TrialResult> trials;
+  bool interrupted = false;
   for (;;) {
-    const std::vector<double> factors = next_factors(result.trials, s);
+    const std::vector<double> factors = next_factors(trials, s);
     if (factors.empty()) break;
     for (TrialResult& t : evaluate(factors)) {
-      result.interrupted = result.interrupted || t.interrupted;
-      result.trials.push_back(std::move(t));
+      interrupted = interrupted || t.interrupted;
+      trials.push_back(std::move(t));
     }
-    if (result.interrupted) break;
+    if (interrupted) break;
   }
+  return conclude_search(std::move(trials), interrupted, s);
+}
+
+FosResult conclude_search(std::vector<TrialResult> trials, bool interrupted, const FosSettings& s) {
+  FosResult result;
+  result.trials = std::move(trials);
+  result.interrupted = interrupted;
   const Bracket b = bracket_of(result.trials);
   if (result.interrupted) {
     long judged = 0;

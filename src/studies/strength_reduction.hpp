@@ -172,6 +172,10 @@ struct FosResult {
   // with has_bracket.
   bool interrupted = false;
   bool has_bracket = false;
+  // Trials a search on threads started ahead of a verdict and dropped when the verdict went
+  // the other way (studies/speculative_search.hpp): how many, and their wall time (s).
+  int discarded_trials = 0;
+  double discarded_wall_time_s = 0.0;
 };
 
 // The next factors to try given the trials so far: from F = 1 (and, with more jobs, F = 2)
@@ -184,5 +188,10 @@ std::vector<double> next_factors(const std::vector<TrialResult>& trials, const F
 // jobs + 1 or moves a search end by a factor of 2 towards the range's limits.
 // A round that returns an interrupted trial ends it, interrupted.
 FosResult find_factor_of_safety(const FosSettings& settings, const TrialEvaluator& evaluate);
+
+// The search's result from its trials (in the order they ran): the bracket, the factor and
+// the message; `interrupted` when a trial came back interrupted and the search stopped.
+FosResult conclude_search(std::vector<TrialResult> trials, bool interrupted,
+                          const FosSettings& settings);
 
 }  // namespace dda

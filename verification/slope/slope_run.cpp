@@ -9,6 +9,7 @@
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
 #include "studies/limit_analysis.hpp"
+#include "studies/speculative_search.hpp"
 #include "studies/strength_reduction.hpp"
 #include "solver/world.hpp"
 #include "contact/contact.hpp"
@@ -129,11 +130,12 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
   r.la_factor = limit.factor;
   r.la_upper = limit.upper;
   r.la_note = limit.computed ? "" : limit.reason;
-  FosResult fos = find_factor_of_safety(settings, [&](const std::vector<double>& factors) {
-    return run_trials(world, settings, factors, [&](const TrialResult& t) {
-      if (progress) progress(trial_line(c.name, t));
-    });
-  });
+  FosResult fos = search_on_threads(
+      settings,
+      [&](double f, const StopQuery& stop) { return run_trial(world, settings, f, stop); },
+      [&](const TrialResult& t) {
+        if (progress) progress(trial_line(c.name, t));
+      });
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.trials = static_cast<int>(fos.trials.size());
   r.found = fos.found;
