@@ -317,7 +317,8 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
           interrupted));
       if (interrupted()) break;
     }
-    spread = judge_spread(result.factor_of_safety, std::move(factors));
+    spread = judge_spread(result.factor_of_safety, result.first_failing - result.last_stable,
+                          std::move(factors));
     if (interrupted()) {
       spread->within = false;
       spread->text = stop_message("during the searches at other settings; the search's factor stands");

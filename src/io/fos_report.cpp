@@ -259,6 +259,7 @@ json settings_spread_json(const SettingsSpread& spread) {
   return {{"computed", spread.computed},
           {"within", spread.within},
           {"spread", spread.spread},
+          {"resolution", spread.resolution},
           {"agreement", kSpreadAgreement},
           {"text", spread.text},
           {"factors", factors}};

@@ -95,7 +95,8 @@ SpreadFactor factor_at_setting(const Scene& scene, const SpreadSetting& setting,
   return f;
 }
 
-SettingsSpread judge_spread(double factor_of_safety, std::vector<SpreadFactor> factors) {
+SettingsSpread judge_spread(double factor_of_safety, double bracket_width,
+                            std::vector<SpreadFactor> factors) {
   SettingsSpread s;
   s.computed = true;
   s.factors = std::move(factors);
@@ -103,12 +104,14 @@ SettingsSpread judge_spread(double factor_of_safety, std::vector<SpreadFactor> f
   std::string missing;
   const SpreadFactor* lowest = nullptr;
   const SpreadFactor* highest = nullptr;
+  double widest = bracket_width;
   for (const SpreadFactor& f : s.factors) {
     if (!f.found) {
       missing += (missing.empty() ? "" : ", ") + f.setting;
       continue;
     }
     found.push_back(f.factor);
+    widest = std::max(widest, f.first_failing - f.last_stable);
     if (lowest == nullptr || f.factor < lowest->factor) lowest = &f;
     if (highest == nullptr || f.factor > highest->factor) highest = &f;
   }
@@ -116,6 +119,7 @@ SettingsSpread judge_spread(double factor_of_safety, std::vector<SpreadFactor> f
   double mean = 0.0;
   for (double f : found) mean += f / static_cast<double>(found.size());
   s.spread = found.size() > 1 && mean > 0.0 ? (*hi - *lo) / mean : 0.0;
+  s.resolution = mean > 0.0 ? widest / mean : 0.0;
   s.within = missing.empty() && s.spread <= kSpreadAgreement;
   const std::string range = "F from " + number(*lo) + " to " + number(*hi);
   const std::string over = "over dt / 5 to x 5 and the penalty / 10 to x 10";
@@ -134,6 +138,10 @@ SettingsSpread judge_spread(double factor_of_safety, std::vector<SpreadFactor> f
              "), more than " + percent(kSpreadAgreement) +
              ": it depends on the time step or the contact stiffness as well as on the slope; "
              "plan with the lowest, F = " + number(*lo) + " (docs/factor-of-safety.md, section 6)";
+  }
+  if (found.size() > 1) {
+    s.text += "; each factor is its search's bracket's midpoint, so the spread is known to " +
+              percent(s.resolution) + " (a smaller --tolerance narrows the brackets)";
   }
   return s;
 }

@@ -65,11 +65,16 @@ struct SettingsSpread {
   bool computed = false;
   std::vector<SpreadFactor> factors;  // in the order of kSpreadSettings
   double spread = 0.0;     // (max - min) / mean of the search's factor and those found
+  // How well the spread is known: the widest bracket of those factors over their mean. Each
+  // factor is its bracket's midpoint and the slope's threshold may lie anywhere in the
+  // bracket, so two midpoints differ from the two thresholds' difference by up to this.
+  double resolution = 0.0;
   bool within = false;     // every setting found a factor and the spread <= kSpreadAgreement
   std::string text;        // one sentence for the report
 };
 
-// The search's own factor beside the settings' factors.
-SettingsSpread judge_spread(double factor_of_safety, std::vector<SpreadFactor> factors);
+// The search's own factor (and its bracket's width) beside the settings' factors.
+SettingsSpread judge_spread(double factor_of_safety, double bracket_width,
+                            std::vector<SpreadFactor> factors);
 
 }  // namespace dda

@@ -35,6 +35,9 @@ SpreadFactor found_at(const char* setting, double factor) {
   f.setting = setting;
   f.found = true;
   f.factor = factor;
+  // A bracket 0.006 wide about it, as a search to the default tolerance leaves.
+  f.last_stable = factor - 0.003;
+  f.first_failing = factor + 0.003;
   return f;
 }
 
@@ -71,15 +74,18 @@ TEST_CASE("a spread setting scales the penalty, auto or given", "[fos][spread]")
 TEST_CASE("the spread of the factor over the settings is judged against 2 %", "[fos][spread]") {
   // Within: 1.000 to 1.015 about a mean of 1.006 is 1.49 %.
   const SettingsSpread close = judge_spread(
-      1.0, {found_at("dt/5", 1.005), found_at("dt*5", 1.015), found_at("penalty/10", 1.0),
+      1.0, 0.004, {found_at("dt/5", 1.005), found_at("dt*5", 1.015), found_at("penalty/10", 1.0),
             found_at("penalty*10", 1.01)});
   CHECK(close.computed);
   CHECK(close.within);
   CHECK(close.spread == Approx(0.015 / 1.006).epsilon(1e-12));
   CHECK_THAT(close.text, Catch::Contains("holds within 1.49 %"));
+  // Known to the widest bracket over the mean: the settings' 0.006 (the search's 0.004).
+  CHECK(close.resolution == Approx(0.006 / 1.006).epsilon(1e-12));
+  CHECK_THAT(close.text, Catch::Contains("the spread is known to 0.60 %"));
   // Beyond: a tenth of the penalty gives 0.95; the text names the settings at both ends.
   const SettingsSpread apart = judge_spread(
-      1.0, {found_at("dt/5", 1.0), found_at("dt*5", 1.0), found_at("penalty/10", 0.95),
+      1.0, 0.004, {found_at("dt/5", 1.0), found_at("dt*5", 1.0), found_at("penalty/10", 0.95),
             found_at("penalty*10", 1.01)});
   CHECK_FALSE(apart.within);
   CHECK(apart.spread == Approx(0.06 / 0.992).epsilon(1e-12));
@@ -87,7 +93,7 @@ TEST_CASE("the spread of the factor over the settings is judged against 2 %", "[
   CHECK_THAT(apart.text, Catch::Contains("plan with the lowest, F = 0.9500"));
   // Where the scene's own factor is an end, it is named (not a setting that ties it).
   const SettingsSpread tied = judge_spread(
-      1.0, {found_at("dt/5", 1.0), found_at("dt*5", 1.0), found_at("penalty/10", 0.95),
+      1.0, 0.004, {found_at("dt/5", 1.0), found_at("dt*5", 1.0), found_at("penalty/10", 0.95),
             found_at("penalty*10", 0.99)});
   CHECK_THAT(tied.text, Catch::Contains("lowest at penalty/10, highest at the scene's settings"));
   // A setting with no factor is not within, whatever the others say.
@@ -95,7 +101,7 @@ TEST_CASE("the spread of the factor over the settings is judged against 2 %", "[
   none.setting = "dt*5";
   none.message = "no trial failed up to F = 10";
   const SettingsSpread missing = judge_spread(
-      1.0, {found_at("dt/5", 1.0), none, found_at("penalty/10", 1.0), found_at("penalty*10", 1.0)});
+      1.0, 0.004, {found_at("dt/5", 1.0), none, found_at("penalty/10", 1.0), found_at("penalty*10", 1.0)});
   CHECK_FALSE(missing.within);
   CHECK(missing.spread == 0.0);
   CHECK_THAT(missing.text, Catch::Contains("no factor found at dt*5"));

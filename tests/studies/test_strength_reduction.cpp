@@ -461,6 +461,9 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
     CHECK(t.at("stable").is_boolean());
   }
   CHECK(report.at("joint_laws").at("default") == "coulomb_slip");
+  // Trials started ahead of a verdict and dropped are counted, never listed among the trials.
+  CHECK(report.at("discarded_trials").at("count").get<int>() >= 0);
+  CHECK(report.at("discarded_trials").at("wall_time_s").get<double>() >= 0.0);
   CHECK(std::filesystem::exists(dir.path / "out" / "report.md"));
   // The second factor beside it, and the failing trial's mechanism: one block sliding, its
   // own bound the same limit-analysis factor. Beside the search the analysis brackets to

@@ -117,10 +117,12 @@ int main(int argc, char** argv) {
           f.setting = setting.name;
           f.found = v.found;
           f.factor = v.factor;
+          f.last_stable = v.last_stable;
+          f.first_failing = v.first_failing;
           found.push_back(f);
           std::cerr << "  " << setting.name << ": " << (v.found ? std::to_string(v.factor) : v.note) << '\n';
         }
-        r.spread = judge_spread(r.factor, std::move(found)).spread;
+        r.spread = judge_spread(r.factor, r.first_failing - r.last_stable, std::move(found)).spread;
       }
       std::cerr << "[" << i + 1 << "/" << cases.size() << "] " << case_line(cases[i], results.back()) << '\n';
     }
