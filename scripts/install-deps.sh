@@ -5,7 +5,7 @@ set -euo pipefail
 pkgs=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libsuitesparse-dev libsundials-dev
-  libopenblas0-serial
+  libopenblas0-pthread
   libcgal-dev coinor-libclp-dev
   catch2 nlohmann-json3-dev libcli11-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib

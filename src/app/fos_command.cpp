@@ -15,6 +15,7 @@
 #include "io/scene_reader.hpp"
 #include "solver/energy.hpp"
 #include "solver/run.hpp"
+#include "solver/sparse_cholesky.hpp"
 #include "studies/factor_cross_check.hpp"
 #include "studies/limit_analysis.hpp"
 #include "studies/settings_spread.hpp"
@@ -248,7 +249,12 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     return limit.analysis.found ? kExitOk : kExitNoFactor;
   }
   std::cerr << "dda: trials of " << settings.trial_time << " s, failing beyond "
-            << settings.failure_displacement << " m, " << settings.jobs << " at once\n";
+            << settings.failure_displacement << " m, " << settings.jobs << " at once"
+            << (settings.jobs > 1 && blas_calls_serialised()
+                    ? " (their BLAS calls one at a time: the BLAS loaded is not known to be safe "
+                      "for concurrent callers; docs/factor-of-safety.md, section 3)"
+                    : "")
+            << "\n";
 
   const auto start = std::chrono::steady_clock::now();
   const FosResult result = search_on_threads(

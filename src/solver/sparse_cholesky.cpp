@@ -1,5 +1,6 @@
 #include "solver/sparse_cholesky.hpp"
 
+#include <dlfcn.h>
 #include <malloc.h>
 #include <omp.h>
 
@@ -27,15 +28,48 @@ void keep_large_allocations_mapped() {
   (void)done;
 }
 
-// CHOLMOD's supernodal factorisation and solve call BLAS, and Debian's serial OpenBLAS
-// (libopenblas0-serial, the alternative scripts/install-deps.sh selects) is not safe for
-// concurrent callers: two strength-reduction trials factorising at once on two threads
-// (dda fos) got corrupted factors, "not positive definite or not finite", where each alone
-// ran clean (and ran clean together under the reference BLAS). The calls that reach BLAS
-// take this lock; everything else in a step (assembly, contacts, CG) runs in parallel.
+// CHOLMOD's supernodal factorisation and solve call BLAS, and whether two threads may call
+// it at once depends on which BLAS the process loaded (Debian chooses it by alternatives).
+// Debian's serial OpenBLAS (libopenblas0-serial) is not safe for concurrent callers: two
+// strength-reduction trials factorising at once on two threads (dda fos) got corrupted
+// factors, "not positive definite or not finite", where each alone ran clean. Its threaded
+// build (libopenblas0-pthread, the one scripts/install-deps.sh installs) locks its shared
+// buffers and, told to use one thread a call, runs each call on its caller's thread with the
+// same kernels as the serial build: concurrent calls are safe. With the serial build (or a
+// BLAS we cannot identify) the calls that reach BLAS take a process-wide lock. It cost the
+// 1965-block slope's search, two trials at once, 135 s of waiting in 780 s of threads' time.
+struct BlasPolicy {
+  bool serialise = true;
+};
+
+const BlasPolicy& blas_policy() {
+  static const BlasPolicy policy = [] {
+    BlasPolicy p;
+    // OpenBLAS's own entry points (openblas_get_parallel: 0 serial, 1 pthreads, 2 OpenMP).
+    const auto get_parallel =
+        reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_parallel"));
+    const auto set_threads =
+        reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    if (get_parallel != nullptr && set_threads != nullptr && get_parallel() == 1) {
+      // One thread a call: the callers are the trials' threads, and the results are those of
+      // the serial kernels whatever the cores.
+      set_threads(1);
+      p.serialise = false;
+    }
+    return p;
+  }();
+  return policy;
+}
+
 std::mutex& blas_mutex() {
   static std::mutex m;
   return m;
+}
+
+// Held around every call that reaches BLAS: the lock when the BLAS needs it, else nothing.
+std::unique_lock<std::mutex> blas_lock() {
+  if (blas_policy().serialise) return std::unique_lock<std::mutex>(blas_mutex());
+  return {};
 }
 
 // A cholmod_sparse view of an Eigen compressed lower triangle (no copy).
@@ -68,6 +102,8 @@ cholmod_sparse SparseCholesky::view_pattern() const {
                     inner_.data(), values_.data());
 }
 
+bool blas_calls_serialised() { return blas_policy().serialise; }
+
 SparseCholesky::SparseCholesky() {
   // Debian's CHOLMOD asks OpenMP for teams of 4 threads in some loops of the supernodal
   // factorisation. On a process pinned to one core (or two cores shared with other work)
@@ -76,6 +112,8 @@ SparseCholesky::SparseCholesky() {
   // than the cores it may use.
   omp_set_dynamic(1);
   keep_large_allocations_mapped();
+  (void)blas_policy();  // before any call reaches BLAS
+
   cholmod_start(&common_);
   common_.supernodal = CHOLMOD_AUTO;  // simplicial LDL' when small, supernodal LL' when not
   common_.final_ll = 0;               // a simplicial factor stays LDL' (what updown needs)
@@ -208,7 +246,7 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   }
   modified_ = false;
   {
-    const std::lock_guard<std::mutex> lock(blas_mutex());
+    const std::unique_lock<std::mutex> lock = blas_lock();
     if (!cholmod_factorize(&a, factor_, &common_)) return false;
   }
   factored_ = common_.status == CHOLMOD_OK && positive_pivots();
@@ -341,7 +379,7 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) {
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
   {
-    const std::lock_guard<std::mutex> lock(blas_mutex());
+    const std::unique_lock<std::mutex> lock = blas_lock();
     if (cholmod_solve2(CHOLMOD_A, factor_, &rhs, nullptr, &solve_x_, nullptr, &solve_y_,
                        &solve_e_, &common_) == 0 ||
         solve_x_ == nullptr) {

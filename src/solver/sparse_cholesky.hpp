@@ -19,6 +19,11 @@
 
 namespace dda {
 
+// Whether factorisations and solves on different threads take turns for BLAS: true unless the
+// process loaded a BLAS that is safe for concurrent callers (Debian's threaded OpenBLAS, told
+// to use one thread a call). dda fos runs its trials on threads.
+bool blas_calls_serialised();
+
 // A symmetric rank-one term sign * c c^T, c sparse: (row, value) pairs.
 struct RankOneTerm {
   std::vector<std::pair<int, double>> entries;

@@ -11,6 +11,7 @@
 #include "contact/joint_law.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
+#include "solver/sparse_cholesky.hpp"
 #include "studies/strength_reduction.hpp"
 #include "solver/world.hpp"
 #include "support/material_builders.hpp"
@@ -606,7 +607,8 @@ TEST_CASE("trials run on two threads give exactly what they give one at a time",
   const std::vector<TrialResult> threaded = run_trials(c.world, s, factors, {});
   for (std::size_t k = 0; k < factors.size(); ++k) {
     const TrialResult alone = run_trial(c.world, s, factors[k]);
-    INFO("F = " << factors[k] << ": " << threaded[k].verdict << " / " << alone.verdict);
+    INFO("F = " << factors[k] << ": " << threaded[k].verdict << " / " << alone.verdict
+                << (blas_calls_serialised() ? " (BLAS calls serialised)" : " (BLAS calls concurrent)"));
     CHECK(threaded[k].steps == alone.steps);
     CHECK(threaded[k].steps == 5);
     CHECK(threaded[k].largest_displacement == alone.largest_displacement);
