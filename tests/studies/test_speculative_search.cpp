@@ -5,8 +5,8 @@
 // interleaving, never an assertion.
 #include <catch2/catch.hpp>
 
-#include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <set>
@@ -130,7 +130,6 @@ TEST_CASE("the plan runs ahead of a running trial on the verdict predicted for i
   CHECK(predicted_stable(0.9, {}, 1.0));
   CHECK_FALSE(predicted_stable(1.3, {judged(1.0, true)}, 1.0));
   // Every round judged: done, and the path is the search's.
-  std::vector<TrialResult> all;
   const Verdict v{1.093, false};
   const FosResult rounds = one_round_at_a_time(s, v);
   const SearchPlan end = plan_search(rounds.trials, s, 2);
