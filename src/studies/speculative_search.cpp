@@ -91,7 +91,8 @@ FosResult search_on_threads(const FosSettings& s, const TrialRunner& run,
   // The trials running, each with the flag that stops it when the plan drops it.
   std::map<double, std::shared_ptr<std::atomic<bool>>> running;
   std::map<double, TrialResult> stopped;  // ended by `stop`, not by the plan
-  FosResult dropped;                       // only its discarded_* counts
+  int discarded = 0;                       // trials the plan stopped, and their time (s)
+  double discarded_wall_time_s = 0.0;
   bool stopping = false;
   const auto asked_to_stop = [&stop] { return stop && stop(); };
 
@@ -114,20 +115,14 @@ FosResult search_on_threads(const FosSettings& s, const TrialRunner& run,
         changed.notify_all();
         return;
       }
-      double next = 0.0;
-      bool found = false;
-      for (double f : plan.wanted) {
-        if (running.count(f) == 0) {
-          next = f;
-          found = true;
-          break;
-        }
-      }
-      if (!found) {
+      const auto first_idle = std::find_if(plan.wanted.begin(), plan.wanted.end(),
+                                           [&running](double f) { return running.count(f) == 0; });
+      if (first_idle == plan.wanted.end()) {
         // A verdict changes the plan; the timeout only lets a waiting thread see `stop`.
         changed.wait_for(lock, std::chrono::milliseconds(100));
         continue;
       }
+      const double next = *first_idle;
       const auto flag = std::make_shared<std::atomic<bool>>(false);
       running.emplace(next, flag);
       lock.unlock();
@@ -140,8 +135,8 @@ FosResult search_on_threads(const FosSettings& s, const TrialRunner& run,
       } else if (stopping || asked_to_stop()) {
         stopped[next] = std::move(r);
       } else {
-        ++dropped.discarded_trials;
-        dropped.discarded_wall_time_s += r.wall_time_s;
+        ++discarded;
+        discarded_wall_time_s += r.wall_time_s;
       }
       changed.notify_all();
     }
@@ -174,8 +169,8 @@ FosResult search_on_threads(const FosSettings& s, const TrialRunner& run,
     }
   }
   FosResult result = conclude_search(std::move(trials), interrupted, s);
-  result.discarded_trials = dropped.discarded_trials;
-  result.discarded_wall_time_s = dropped.discarded_wall_time_s;
+  result.discarded_trials = discarded;
+  result.discarded_wall_time_s = discarded_wall_time_s;
   return result;
 }
 
