@@ -50,6 +50,10 @@ def wall(n, steps=200):
 
 
 def main():
+    if len(sys.argv) != 2 or sys.argv[1].startswith("-"):
+        # An option read as OUT_DIR once wrote the walls into a directory named "--help".
+        print("usage: peer_scenes.py OUT_DIR", file=sys.stderr)
+        sys.exit(0 if len(sys.argv) == 2 and sys.argv[1] in ("-h", "--help") else 2)
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
     scenes = {f"wall{n}": wall(n) for n in (30, 110, 420, 1000, 4000)}
