@@ -46,6 +46,14 @@ if [ -n "$NTDDA_DRIVER" ] && [ ! -x "$NTDDA_DRIVER" ]; then
   echo "compare.sh: NTDDA_DRIVER=$NTDDA_DRIVER is not executable" >&2; exit 2
 fi
 
+# Each scene's runs are kept under its file's name: two scenes of one name (the wall1000 of
+# make_scenes.py --moving and that of peer_scenes.py) would overwrite each other's results.
+names=$(for scene in "$@"; do basename "$scene" .json; done | sort | uniq -d)
+if [ -n "$names" ]; then
+  echo "compare.sh: two scenes share the name $(echo $names | tr '\n' ' ')(one call per name, or rename one)" >&2
+  exit 2
+fi
+
 now() { date +%s.%N; }
 elapsed() { printf "%.6f" "$(echo "$2 - $1" | bc)"; }
 # user + system CPU seconds from /usr/bin/time's "%U %S" (the last line: it may add a note)

@@ -1,13 +1,14 @@
 #!/usr/bin/python3
 """Writes the scenes of the side-by-side comparison with ntdda (docs/peer-comparison.md).
 
-    peer_scenes.py OUT_DIR
+    peer_scenes.py OUT_DIR [--end-time T]
 
 OUT_DIR/wallN.json, N = 30, 110, 420, 1000, 4000: brick walls as a user writes them, settling
 from their built state: bricks 1 m x 0.5 m in running bond (the odd rows closed by half
 bricks), on a fixed base 1 m thick reaching 1 m beyond either end, as bench/brick_wall.hpp
 builds them; rock (2700 kg/m3, E 1 GPa, nu 0.25), joints at 30 degrees without cohesion,
-dt 0.002 s, 200 steps, everything else at its default (penalty auto = 50 E).
+dt 0.002 s, 200 steps (with --end-time T: run to T seconds instead, as the comparison to
+0.4 s does), everything else at its default (penalty auto = 50 E).
 The moving scenes of issue 25 (box150, hopper300, ...) come from
 verification/hard-cases/make_scenes.py --moving.
 """
@@ -24,7 +25,7 @@ def rect(x0, y0, x1, y1):
     return [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]
 
 
-def wall(n, steps=200):
+def wall(n, steps=200, end_time=None):
     cols = math.ceil(math.sqrt(2.0 * n))
     blocks = [{"vertices": rect(-1.0, -1.0, cols + 1.0, 0.0), "material": "rock", "fixed": True}]
     row = placed = 0
@@ -43,20 +44,33 @@ def wall(n, steps=200):
     return {"description": f"brick wall of {n} bricks in running bond settling from its built "
                            "state (bench/peer/peer_scenes.py)",
             "gravity": [0.0, -9.81],
-            "control": {"time_step": 0.002, "steps": steps},
+            "control": ({"time_step": 0.002, "end_time": end_time} if end_time
+                        else {"time_step": 0.002, "steps": steps}),
             "materials": {"rock": ROCK},
             "joint_materials": {"default": JOINT},
             "blocks": blocks}
 
 
 def main():
-    if len(sys.argv) != 2 or sys.argv[1].startswith("-"):
+    args = sys.argv[1:]
+    end_time = None
+    if len(args) == 3 and args[1] == "--end-time":
+        try:
+            end_time = float(args[2])
+        except ValueError:
+            end_time = -1.0
+        if not end_time > 0.0:
+            print(f"peer_scenes.py: --end-time needs a positive number of seconds, not {args[2]!r}",
+                  file=sys.stderr)
+            sys.exit(2)
+        args = args[:1]
+    if len(args) != 1 or args[0].startswith("-"):
         # An option read as OUT_DIR once wrote the walls into a directory named "--help".
-        print("usage: peer_scenes.py OUT_DIR", file=sys.stderr)
-        sys.exit(0 if len(sys.argv) == 2 and sys.argv[1] in ("-h", "--help") else 2)
-    out = sys.argv[1]
+        print("usage: peer_scenes.py OUT_DIR [--end-time T]", file=sys.stderr)
+        sys.exit(0 if args in (["-h"], ["--help"]) else 2)
+    out = args[0]
     os.makedirs(out, exist_ok=True)
-    scenes = {f"wall{n}": wall(n) for n in (30, 110, 420, 1000, 4000)}
+    scenes = {f"wall{n}": wall(n, end_time=end_time) for n in (30, 110, 420, 1000, 4000)}
     for name, s in scenes.items():
         with open(os.path.join(out, name + ".json"), "w") as f:
             json.dump(s, f, indent=1)
