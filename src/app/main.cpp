@@ -19,6 +19,7 @@
 #include "io/material_point_reader.hpp"
 #include "io/output.hpp"
 #include "io/scene_reader.hpp"
+#include "solver/energy.hpp"
 #include "solver/run.hpp"
 #include "solver/step.hpp"
 #include "studies/strength_reduction.hpp"
@@ -104,6 +105,15 @@ int run_command(const std::string& scene_path, const std::string& out_dir) {
   }
   std::cerr << "dda: " << stats.steps << " steps (" << stats.cut_steps << " cut) in "
             << stats.wall_time_s << " s; results in " << out_dir << "\n";
+  const dda::EnergyLedger& led = world.energy;
+  if (dda::energy_lost_beyond(led, world.control.energy_tolerance)) {
+    std::cerr << "dda: warning: the energy account lost " << -led.remainder_min
+              << " J/m that no term books (" << -100.0 * led.remainder_min / led.scale
+              << " % of the energy scale, beyond control.energy_tolerance "
+              << world.control.energy_tolerance << "), most at step " << led.remainder_min_step
+              << " (summary.json energy.losses_beyond_tolerance; control.energy_losses \"stop\" "
+                 "stops such a run)\n";
+  }
   return kExitOk;
 }
 

@@ -222,6 +222,7 @@ json settings_json(const World& w) {
       {"free_blocks", std::count_if(w.blocks.begin(), w.blocks.end(),
                                     [](const Block& b) { return !b.fixed; })},
       {"energy_tolerance", c.energy_tolerance},
+      {"energy_losses", c.stop_on_energy_loss ? "stop" : "report"},
       {"linear_solver", c.reuse_factor ? "reuse" : "factorise"},
       {"inertia", name_in(kInertiaNames, w.pseudo_rigid ? Inertia::PseudoRigid : Inertia::Shi)},
       {"inertia_rule", c.inertia ? "user" : "auto"},
@@ -403,7 +404,11 @@ json energy_json(const World& world) {
           {"remainder", led.remainder},
           {"remainder_max", led.remainder_max},
           {"remainder_max_step", led.remainder_max_step},
-          {"remainder_max_share", led.scale > 0.0 ? led.remainder_max / led.scale : 0.0}};
+          {"remainder_max_share", led.scale > 0.0 ? led.remainder_max / led.scale : 0.0},
+          {"remainder_min", led.remainder_min},
+          {"remainder_min_step", led.remainder_min_step},
+          {"remainder_min_share", led.scale > 0.0 ? led.remainder_min / led.scale : 0.0},
+          {"losses_beyond_tolerance", energy_lost_beyond(led, world.control.energy_tolerance)}};
 }
 }  // namespace
 

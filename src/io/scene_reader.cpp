@@ -102,7 +102,8 @@ ControlSettings read_control(const Field& f, bool staged) {
   f.expect_keys({"time_step", "steps", "end_time", "max_displacement_ratio",
                  "dynamic_coefficient", "rotation_update", "penalty", "output_every",
                  "max_open_close", "max_augmentations", "allowed_penetration",
-                 "energy_tolerance", "linear_solver", "inertia", "contact_solver"});
+                 "energy_tolerance", "energy_losses", "linear_solver", "inertia",
+                 "contact_solver"});
   ControlSettings c;
   c.time_steps = read_time_steps(f.member("time_step"));
   read_run_length(f, c, staged);
@@ -135,6 +136,13 @@ ControlSettings read_control(const Field& f, bool staged) {
     c.allowed_penetration = positive_or_auto(*g, "m");
   }
   if (auto g = f.optional_member("energy_tolerance")) c.energy_tolerance = positive_number(*g);
+  if (auto g = f.optional_member("energy_losses")) {
+    const std::string name = g->string();
+    if (name != "report" && name != "stop") {
+      g->fail("unknown energy_losses \"" + name + "\" (known: \"report\", \"stop\")");
+    }
+    c.stop_on_energy_loss = name == "stop";
+  }
   if (auto g = f.optional_member("linear_solver")) {
     const std::string name = g->string();
     if (name != "reuse" && name != "factorise") {

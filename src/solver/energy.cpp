@@ -218,6 +218,26 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
     led.remainder_max = led.remainder;
     led.remainder_max_step = world.step;
   }
+  if (led.remainder < led.remainder_min) {
+    led.remainder_min = led.remainder;
+    led.remainder_min_step = world.step;
+  }
+}
+
+bool energy_lost_beyond(const EnergyLedger& led, double tolerance) {
+  return led.remainder_min < -tolerance * led.scale;
+}
+
+std::string energy_loss_message(const World& world, double tolerance) {
+  const EnergyLedger& led = world.energy;
+  if (!(led.remainder < -tolerance * led.scale)) return {};
+  std::ostringstream out;
+  out << "step " << world.step << " (t = " << world.time << " s): the energy account shows "
+      << -led.remainder << " J/m lost without a cause, " << -100.0 * led.remainder / led.scale
+      << " % of the scene's energy scale " << led.scale << " J/m (control.energy_tolerance "
+      << tolerance << "); no friction, plasticity or damping booked it, so the run dissipated "
+         "energy it does not account for (control.energy_losses \"stop\")";
+  return out.str();
 }
 
 std::string energy_guard_message(const World& world, const StepEnergy& step, double tolerance) {

@@ -46,6 +46,12 @@ struct StepEnergy {
 // The energy guard: a message naming the step and the suspect contacts when the
 // unexplained gain passes `tolerance` x the scene's energy scale; empty otherwise.
 std::string energy_guard_message(const World& world, const StepEnergy& step, double tolerance);
+// The same for a loss: a message when the remainder after the last step is below minus
+// `tolerance` times the scale (energy gone that no term booked), else empty.
+std::string energy_loss_message(const World& world, double tolerance);
+// Whether the run's most negative remainder so far lies below minus `tolerance` times the
+// scale (summary.json's energy `losses_beyond_tolerance`).
+bool energy_lost_beyond(const EnergyLedger& led, double tolerance);
 
 // Elastic strain energy of one block (J/m): A/2 e^T D e for elastic blocks; for plastic
 // ones A/2 (s - s0) : C^-1 : (s - s0) over (xx, yy, zz, xy), which excludes plastic strain.

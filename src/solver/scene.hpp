@@ -232,6 +232,11 @@ struct ControlSettings {
   // default 0.02 is four times the largest gain of the hard cases (verification/hard-cases)
   // at their coarsest time step and far below the gains of the faults it exists for.
   double energy_tolerance = 0.02;
+  // Energy the account loses without a term that books it (a remainder below minus the
+  // tolerance share of the scale) is always reported (summary.json's energy
+  // `losses_beyond_tolerance`, and a warning at the end of `dda run`); true also stops the
+  // run as diverged there, as a gain does (scene key `energy_losses`: "report" or "stop").
+  bool stop_on_energy_loss = false;
   // The contact solver of every step (see ContactSolver; the converged one by default,
   // Shi's loop kept as the reference path).
   ContactSolver contact_solver = ContactSolver::Newton;

@@ -916,6 +916,11 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     //    (beyond the tolerance) ends it; the step is kept, so the output shows it.
     std::string gained = energy_guard_message(world, energy_terms, world.control.energy_tolerance);
     if (!gained.empty()) return {false, std::move(gained)};
+    //    With control.energy_losses "stop", a loss no term books ends it too.
+    if (world.control.stop_on_energy_loss) {
+      std::string lost = energy_loss_message(world, world.control.energy_tolerance);
+      if (!lost.empty()) return {false, std::move(lost)};
+    }
     return {};
   }
 }

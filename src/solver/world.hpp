@@ -140,6 +140,8 @@ struct EnergyLedger {
   double remainder = 0.0;             // unexplained: now - start - work + dissipations
   double remainder_max = 0.0;         // the largest remainder so far (gain)
   int remainder_max_step = 0;         // the step where it was reached
+  double remainder_min = 0.0;         // the most negative remainder so far (energy lost unbooked)
+  int remainder_min_step = 0;         // the step where it was reached
   // The scene's own energy scale, against which the remainder is judged: the largest of
   // the energy it starts with (less potential), the work gravity and the point loads would
   // do moving every free block by w0, the largest kinetic energy and |load work| so far.

@@ -231,6 +231,8 @@ std::vector<BadScene> bad_scenes() {
       {"penalty negative", edit(s, "2.5e10", "-5"), "control.penalty", {"must be positive"}},
       {"penalty unknown word", edit(s, "2.5e10", "\"big\""), "control.penalty",
        {"positive number", "\"auto\""}},
+      {"unknown energy_losses", edit(s, "\"output_every\": 5", "\"output_every\": 5, \"energy_losses\": \"warn\""),
+       "control.energy_losses", {"unknown energy_losses \"warn\"", "\"report\", \"stop\""}},
       // ---- run length ----
       {"both steps and end_time", edit(s, "\"steps\": 40", "\"steps\": 40, \"end_time\": 1"),
        "control", {"not both", "steps", "end_time"}},
