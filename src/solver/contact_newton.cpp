@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "solver/contact_assembly.hpp"
 #include "solver/linear_solver.hpp"
@@ -211,12 +209,6 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
                                   shear_difference / ks_) /
                          resolution;
     out.largest_mismatch = std::max(out.largest_mismatch, share);
-    static const bool dbg = std::getenv("DDA_MDEBUG") != nullptr;
-    if (dbg && share > 1.0) {
-      std::fprintf(stderr, "MM %d%d>%d%d share %.3g N %.4g Nr %.4g S %.4g Sr %.4g sh %.4g shr %.4g\n",
-                   (int)c.state.mode, c.state.slide_sign, (int)t.response.mode, t.response.slide_sign, share,
-                   normal, t.response.normal_force, solved_strength_[i], t.response.strength, shear, t.response.shear_force);
-    }
     if (share > 1.0) ++out.mismatched;
     if (std::abs(t.response.normal_force - normal) / kn_ > resolution) {
       ++out.normal_mismatched;

@@ -1,8 +1,6 @@
 #include "solver/step.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -518,7 +516,6 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
     }
     const Eigen::VectorXd d_symmetric = d_hat;
     if (friction_follows) d_hat += ws.system.expand(*correction);
-    if (std::getenv("DDA_MDEBUG")) std::fprintf(stderr, "SOLVE step %d it %d\n", world.step, r.iterations);
     NewtonCheck check = newton.check(world, world.contacts, d_hat, friction_follows);
     if (friction_follows && check.mismatched == 0) {
       const std::optional<Eigen::VectorXd> refined = ws.solver.solve_low_rank_coupled(
