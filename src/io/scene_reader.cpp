@@ -6,8 +6,10 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <utility>
+#include <variant>
 
 #include "contact/broad_phase.hpp"
 #include "io/input_limits.hpp"
@@ -322,6 +324,36 @@ std::vector<std::string> unused_joint_material_warnings(const Scene& scene,
     warnings.push_back(source + ": " +
                        input::member_path("joint_materials", scene.joint_materials[i].name) +
                        ": not used by any pair of blocks (name it in \"joints\")");
+  }
+  return warnings;
+}
+
+// A plastic material with friction but no dilation has no return for a stress beyond its
+// apex (materials/return_mohr_coulomb.cpp, return_drucker_prager.cpp): a free block of it
+// put in that much tension by an impact or a pull stops the run. Mohr-Coulomb's tension
+// cut-off gives such stresses a return. Warned when a free block uses the material.
+std::vector<std::string> apex_without_return_warnings(const Scene& scene, const std::string& source) {
+  std::vector<std::string> warnings;
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const MaterialParameters& p = scene.materials[i].parameters;
+    const FrictionalStrength* f = frictional_strength(p);
+    if (f == nullptr || f->friction_angle <= 0.0 || f->dilation_angle > 0.0) continue;
+    const auto* mc = std::get_if<MohrCoulombParameters>(&p.model_parameters);
+    if (mc != nullptr && mc->tensile_strength) continue;
+    const bool used = std::any_of(scene.blocks.begin(), scene.blocks.end(), [i](const BlockSpec& b) {
+      return !b.fixed && b.material == static_cast<int>(i);
+    });
+    if (!used) continue;
+    const double apex = f->cohesion / std::tan(f->friction_angle * std::numbers::pi / 180.0);
+    std::ostringstream text;
+    text << source << ": " << input::member_path("materials", scene.materials[i].name) << ": "
+         << (mc != nullptr ? "mohr_coulomb" : "drucker_prager")
+         << " with dilation_angle 0" << (mc != nullptr ? " and no tensile_strength" : "")
+         << " has no return for a stress beyond its apex (a mean tension of " << apex
+         << " Pa, c cot phi): a block of it put in that much tension (an impact, a pull) can stop the run";
+    text << (mc != nullptr ? "; a tension cut-off (tensile_strength, 0 for none) or a dilation angle gives such stresses a return"
+                           : "; a dilation angle gives such stresses a return");
+    warnings.push_back(text.str());
   }
   return warnings;
 }
@@ -766,6 +798,7 @@ Scene read_scene(const Field& root, const std::string& source) {
     check_staged_run_length(root.member("control"), scene.stages, scene.control);
   }
   scene.warnings = unused_joint_material_warnings(scene, source);
+  for (std::string& w : apex_without_return_warnings(scene, source)) scene.warnings.push_back(std::move(w));
   if (std::none_of(scene.blocks.begin(), scene.blocks.end(), [](const BlockSpec& b) { return !b.fixed; })) {
     scene.warnings.push_back(source + ": blocks: every block is fixed, so nothing will move (the "
                              "run takes its steps and writes its output unchanged)");

@@ -326,6 +326,7 @@ struct LoopResult {
   bool solved = true;         // false: the global system could not be solved
   std::optional<CutReason> unsettled;  // the loop did not settle: the reason to cut
   double material_fraction = 1.0;      // with CutReason::Material: the return's suggestion
+  std::string material_reason;         // with CutReason::Material: the block and why it failed
   int augmentations = 0;               // augmented-Lagrangian rounds (penetration control)
 };
 
@@ -432,6 +433,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
       if (materials.failed) {
         r.unsettled = CutReason::Material;
         r.material_fraction = materials.suggested_fraction;
+        r.material_reason = materials.reason;
         return r;
       }
     }
@@ -630,6 +632,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
           r.d = d;
           r.unsettled = CutReason::Material;
           r.material_fraction = materials.suggested_fraction;
+          r.material_reason = materials.reason;
           return r;
         }
       }
@@ -862,9 +865,18 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   clock.lap(stats.stage_times.detect);
   int penetration_cuts = 0;
   bool was_cut = false;
+  std::string material_failure;  // why the last attempt's return map failed, if it did
 
   for (;;) {
     if (dt < kSmallestStepShare * scheduled_dt) {
+      if (!material_failure.empty()) {
+        // Shorter steps did not cure a return map: say which block and why, not "the
+        // contacts do not settle" (a Mohr-Coulomb block without a tension cut-off hit by
+        // an impact that puts it in tension beyond its apex cut 209 steps before this).
+        return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
+                                               "the material of " + material_failure +
+                                               " at every step length tried")};
+      }
       return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
                                              "the contacts or the motion do not settle")};
     }
@@ -902,6 +914,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
              << " N/m) or control.allowed_penetration";
         return {false, describe_failure(world, what.str())};
       }
+      material_failure = *cut == CutReason::Material ? loop.material_reason : std::string();
       count_cut(*cut, stats);
       was_cut = true;
       dt *= cut_share(*cut, moved, loop.material_fraction, 1.0, deepest_overshoot);

@@ -754,6 +754,39 @@ TEST_CASE("a joint material no pair of blocks uses is a warning, not an error",
   CHECK(single.warnings[0].find("one.json: joint_materials.weak: not used") == 0);
 }
 
+TEST_CASE("a frictional plastic material without dilation or a tension cut-off is warned about",
+          "[scene][input][materials]") {
+  // Mohr-Coulomb with psi = 0 and no cut-off has no return beyond its apex (c cot phi in
+  // mean tension): a free block of it that an impact puts in tension stops the run
+  // (tests/solver/test_material_coupling.cpp). The warning names the material and the apex:
+  // c = 1 kPa, phi = 30 degrees: 1000 / tan 30 = 1732.05 Pa.
+  auto scene_with = [](const std::string& soil, bool fixed) {
+    return std::string(R"json({
+    "control": {"time_step": 0.01, "steps": 1},
+    "materials": {"soil": )json") + soil + R"json(},
+    "blocks": [{"vertices": [[0, 0], [1, 0], [0, 1]], "material": "soil", "fixed": )json" +
+           (fixed ? "true" : "false") + "}]\n  }";
+  };
+  const std::string mc = R"({"model": "mohr_coulomb", "density": 2000, "young": 1e7, "poisson": 0.3, "cohesion": 1000, "friction_angle": 30)";
+  const dda::Scene plain = dda::parse_scene_text(scene_with(mc + "}", false), "apex.json");
+  REQUIRE(plain.warnings.size() == 1);
+  CHECK(plain.warnings[0].find("apex.json: materials.soil: mohr_coulomb with dilation_angle 0 and "
+                               "no tensile_strength has no return for a stress beyond its apex") == 0);
+  CHECK(plain.warnings[0].find("1732.05 Pa") != std::string::npos);
+  // A cut-off or a dilation angle gives such stresses a return; a fixed block never strains.
+  CHECK(dda::parse_scene_text(scene_with(mc + R"(, "tensile_strength": 0})", false), "a.json").warnings.empty());
+  CHECK(dda::parse_scene_text(scene_with(mc + R"(, "dilation_angle": 5})", false), "a.json").warnings.empty());
+  CHECK(dda::parse_scene_text(scene_with(mc + "}", true), "a.json").warnings.size() == 1);  // every block fixed
+  CHECK(dda::parse_scene_text(scene_with(mc + "}", true), "a.json").warnings[0].find("every block is fixed") !=
+        std::string::npos);
+  // Drucker-Prager likewise, without the cut-off (it has none).
+  const std::string dp = R"({"model": "drucker_prager", "density": 2000, "young": 1e7, "poisson": 0.3, "cohesion": 1000, "friction_angle": 30})";
+  const dda::Scene cone = dda::parse_scene_text(scene_with(dp, false), "dp.json");
+  REQUIRE(cone.warnings.size() == 1);
+  CHECK(cone.warnings[0].find("dp.json: materials.soil: drucker_prager with dilation_angle 0 has no "
+                              "return") == 0);
+}
+
 TEST_CASE("blocks that touch are accepted, wherever they touch", "[scene][input]") {
   // A third block on block 0 whose left corner is block 1's right corner (2, 1): it shares
   // a vertex with block 1 and part of an edge with block 0; block 1 also stands on block 0.
