@@ -46,6 +46,18 @@ double normal_spring_energy(ContactMode mode, double gap, double kn) {
 // A plastic block's stress with its out-of-plane component, (xx, yy, zz, xy).
 Vec4 stress4(const Block& b) { return Vec4(b.stress[0], b.stress[1], b.szz, b.stress[2]); }
 
+// A plastic block's stress and total strain in the frame its material integrates in: the
+// block frame for the treatments that keep one (b.stress is global, turned by the block's
+// angle), else the global frame.
+Vec4 material_stress(const World& world, const Block& b) {
+  if (!keeps_block_frame(world.control.rotation_update)) return stress4(b);
+  const Vec3 s = stress_in_turned_frame(b.stress, b.rotation);
+  return Vec4(s[0], s[1], b.szz, s[2]);
+}
+const Vec3& material_strain(const World& world, const Block& b) {
+  return keeps_block_frame(world.control.rotation_update) ? b.local_strain : b.strain;
+}
+
 }  // namespace
 
 double block_strain_energy(const World& world, const Block& b) {
@@ -90,6 +102,8 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
   StepEnergy s;
   s.plastic_elastic_before.assign(world.blocks.size(), 0.0);
   s.plastic_stress_before.assign(world.blocks.size(), Vec4::Zero());
+  s.plastic_strain_before.assign(world.blocks.size(), Vec3::Zero());
+  s.plastic_area_before.assign(world.blocks.size(), 0.0);
   const double kn = ctx.penalty;
   const double ks = kShearSpringRatio * ctx.penalty;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
@@ -105,7 +119,9 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     // the work of s_end on de falls short of the stored energy's rise by A/2 de^T D de.
     if (b.plastic) {
       s.plastic_elastic_before[i] = block_strain_energy(world, b);
-      s.plastic_stress_before[i] = stress4(b);
+      s.plastic_stress_before[i] = material_stress(world, b);
+      s.plastic_strain_before[i] = material_strain(world, b);
+      s.plastic_area_before[i] = b.moments.area;
     } else {
       s.damping_dissipation += 0.5 * area * de.dot(elastic_of(world, b) * de);
     }
@@ -184,7 +200,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
 }
 
 void commit_step_energy(World& world, const StepEnergy& step, const std::vector<Contact>& contacts,
-                        const Eigen::VectorXd& d, double penalty) {
+                        double penalty) {
   EnergyLedger& led = world.energy;
   led.load_work += step.load_work;
   led.multiplier_work += step.multiplier_work;
@@ -194,19 +210,27 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
     if (!b.plastic || b.fixed) continue;
-    // The stress the converged step applied is the end stress: its work on the strain
-    // increment, less the initial stress's share (in load_work) and the rise of elastic
-    // energy, is what plastic flow took plus the backward-Euler share A/2 ds : C^-1 : ds
-    // (zero plastic work for a step that stays elastic); the latter goes to damping.
-    const Vec3 de = d.segment<3>(b.first_dof + kEx);
-    const Vec3 s0 = initial_stress_now(world, b);
-    const Vec4 ds = stress4(b) - step.plastic_stress_before[i];
+    // The material's own account, in the frame it integrates in: the end stress (less the
+    // initial stress, whose share load_work books) on the strain increment the step
+    // committed, less the rise of elastic energy, is what plastic flow took plus the
+    // backward-Euler share A/2 ds : C^-1 : ds (zero plastic work for a step that stays
+    // elastic); the latter goes to damping. Read in the global frame instead, the
+    // increment d[ex..] (turned into the block by the mid-step angle) and the global
+    // stresses (turned by the start and end angles) booked a spinning block that never
+    // yields 6 J of negative plastic work: the treatment's placement error, which belongs
+    // to the remainder.
+    const Vec4 stress = material_stress(world, b);
+    const Vec3 de = material_strain(world, b) - step.plastic_strain_before[i];
+    const Vec4 ds = stress - step.plastic_stress_before[i];
+    const Vec3 s0 = b.initial_stress;
     const MaterialParameters& m = material_of(world, b);
-    const double implicit = b.moments.area * complementary_density(ds, m.young, m.poisson);
+    const double area = step.plastic_area_before[i];
+    const double implicit = area * complementary_density(ds, m.young, m.poisson);
     led.damping_dissipation += implicit;
-    led.plastic_dissipation += b.moments.area * (b.stress - s0).dot(de) -
-                               (block_strain_energy(world, b) - step.plastic_elastic_before[i]) -
-                               implicit;
+    const double elastic_rise =
+        area * (block_strain_energy(world, b) / b.moments.area - step.plastic_elastic_before[i] / area);
+    led.plastic_dissipation += area * (Vec3(stress[0], stress[1], stress[3]) - s0).dot(de) -
+                               elastic_rise - implicit;
   }
   led.contact_energy = contact_energy(world, contacts, penalty);
   const EnergyTotals totals = scene_energy(world);

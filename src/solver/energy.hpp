@@ -30,9 +30,13 @@ struct StepEnergy {
   double friction_dissipation = 0.0;  // sum over sliding contacts of max(0, -F . slip)
   double damping_dissipation = 0.0;   // implicit springs and strains, dynamic coefficient
   double friction_gain = 0.0;         // sum of max(0, F . slip): friction pushing forward
-  // Plastic blocks: elastic energy before the step and A s0 . de (for the plastic work).
+  // Plastic blocks, before the step: their elastic energy, and their stress (xx, yy, zz,
+  // xy) and total strain in the frame their material integrates in (the block frame for
+  // the treatments that keep one, else global), for the plastic work.
   std::vector<double> plastic_elastic_before;
-  std::vector<Vec4> plastic_stress_before;  // (xx, yy, zz, xy), global frame
+  std::vector<Vec4> plastic_stress_before;
+  std::vector<Vec3> plastic_strain_before;
+  std::vector<double> plastic_area_before;  // m^2
   // The contacts that brought the most energy into the step (what their springs held at its
   // start, plus friction that pushed forward), largest first, at most three: the energy
   // guard names them.
@@ -73,7 +77,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
 // After the update: adds the step's terms and the plastic work to world.energy and
 // recomputes the remainder against the start.
 void commit_step_energy(World& world, const StepEnergy& step, const std::vector<Contact>& contacts,
-                        const Eigen::VectorXd& d, double penalty);
+                        double penalty);
 
 // Starts the account on the world's present state (before the first step).
 void start_energy_account(World& world);

@@ -770,7 +770,7 @@ void commit_step(World& world, const Eigen::VectorXd& d,
   clock.lap(stats.stage_times.update);
   world.time += ctx.dt;
   ++world.step;
-  commit_step_energy(world, energy_terms, world.contacts, d, ctx.penalty);
+  commit_step_energy(world, energy_terms, world.contacts, ctx.penalty);
   record_spring_energies(world.contacts, ctx.penalty);
   count_step(world, iterations, stats);
 }

@@ -307,3 +307,57 @@ TEST_CASE("energy guard: energy lost without a cause is reported, and stops the 
   // It stops at the step that lost the energy, the same step the full run reports.
   CHECK(summary["steps"].get<int>() == e["remainder_min_step"].get<int>());
 }
+
+TEST_CASE("energy account: a Mohr-Coulomb block that never yields books no plastic work",
+          "[energy][plastic]") {
+  // A 1 m quadrilateral thrown spinning (3 rad/s) onto a floor, dynamic, 2 s, once of an
+  // elastic material and once of a Mohr-Coulomb one too strong to yield (c = 100 MPa
+  // against impact stresses near 1 MPa). Its plastic work must be zero at every step, and
+  // its account the elastic block's. Read in the global frame, the increment d[ex..] and
+  // the stresses turned by the start and end angles booked -6.1 J of plastic work (and
+  // the change of the block's area with its strain another share): measured now 1e-13 J,
+  // round-off of 1000 steps of terms near 1e4 J. Bound 1e-9 J: a tenth of a
+  // nanojoule, far below the 6 J the frame error booked. The two runs' remainders
+  // (-34.11 J, the impacts' unbooked loss) agree to 1e-3 J, 3e-5 of them: the trajectories
+  // part at round-off through the impacts; bound 1e-3 of the remainder (except the polar
+  // treatment, below).
+  auto scene = [](const std::string& soil, const std::string& treatment) {
+    return parse_scene_text(std::string(R"({
+      "gravity": [0, -9.81],
+      "control": {"time_step": 0.002, "end_time": 2, "dynamic_coefficient": 1, "rotation_update": ")") +
+                                treatment + R"("},
+      "materials": {"soil": )" + soil + R"(,
+        "rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}},
+      "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
+      "blocks": [
+        {"vertices": [[-1, -1], [6, -1], [6, 0], [-1, 0]], "material": "rock", "fixed": true},
+        {"vertices": [[0, 0.3], [1, 0.1], [1.2, 1.1], [0.2, 1.3]], "material": "soil", "velocity": [2, 0, 3]}
+      ]
+    })", "spin.json");
+  };
+  const std::string elastic = R"({"model": "elastic", "density": 2000, "young": 5e7, "poisson": 0.3})";
+  const std::string strong = R"({"model": "mohr_coulomb", "density": 2000, "young": 5e7, "poisson": 0.3,
+                                 "cohesion": 1e8, "friction_angle": 30, "tensile_strength": 1e8})";
+  for (const char* treatment : {"finite_rotation", "finite_rotation_polar", "original"}) {
+    INFO(treatment);
+    World e = make_world(scene(elastic, treatment));
+    REQUIRE_FALSE(run_quietly(e).diverged);
+    World p = make_world(scene(strong, treatment));
+    double worst = 0.0;
+    const RunStats stats = run(p, [&](const World& w, const RunStats&) {
+      worst = std::max(worst, std::abs(w.energy.plastic_dissipation));
+      return true;
+    });
+    REQUIRE_FALSE(stats.diverged);
+    INFO("plastic work at most " << worst << " J; remainders " << p.energy.remainder << " and "
+                                 << e.energy.remainder << " J");
+    CHECK(worst < 1e-9);
+    // finite_rotation_polar's plastic blocks follow their material through its Newton
+    // iteration with a tangent that is not yet the polar strain's (docs/
+    // polar-placement-prototype.md): their remainder, -37.33 J, is not the elastic
+    // block's -39.57 J. The plastic work is zero there too.
+    if (std::string(treatment) != "finite_rotation_polar") {
+      CHECK(std::abs(p.energy.remainder - e.energy.remainder) < 1e-3 * std::abs(e.energy.remainder));
+    }
+  }
+}
