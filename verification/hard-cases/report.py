@@ -17,12 +17,19 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-# The remainder tolerance: 1 % of the case's energy scale. Shi's scheme with penalty
-# contacts only removes energy, so an honest remainder is the account's own error (terms
-# taken at the step's end, round-off), which is second order in the step and far below
-# this; a run that creates energy shows as a block bouncing higher than it fell or a pile
-# that never settles, and 1 % of the drop is already a gain a user would see in a plot.
-TOLERANCE = 0.01
+# The remainder tolerances, as shares of the case's energy scale. Gains: 1e-3. Shi's scheme
+# with penalty contacts only removes energy, so an honest gain is the account's own error
+# (terms taken at the step's end, round-off); measured on every run of the suite, of
+# --moving (both contact solvers), --moving-small and --arches on 2026-11-26: at most
+# 1.1e-4 with the default solver (the falling column at dt 0.002 s), 2.6e-4 with Shi's
+# loop (the dominoes). 1e-3 is four times the largest. (It was 1 % until then, a gain a
+# user would see in a plot.) Losses: 2 %. A contact solved open over the step it
+# opens in neither returns nor books what its spring held (docs/energy-balance.md,
+# "Losses"): the head-on collision at dt 0.0002 s loses 1.13 %, the dynamic piles and the
+# toppling columns 0.2 to 0.6 % (of the energy that moved, judge()); 2 % is not quite twice
+# the largest, and three times any other.
+TOLERANCE = 1e-3
+LOSS_TOLERANCE = 0.02
 FULL_ACCOUNT = "energy_remainder"
 TERMS = ["kinetic", "potential", "strain_energy", "contact_energy", "load_work",
          "friction_dissipation", "plastic_dissipation", "damping_dissipation"]
@@ -205,6 +212,8 @@ def load_run(out, m):
         # summary.json's maximum covers every step, the history only the output steps.
         series = [f[FULL_ACCOUNT] for f in frames]
         run["remainder_max"] = worst([energy.get("remainder_max", 0.0)] + series)
+        # The most negative remainder (a binary older than the key: the output steps').
+        run["remainder_min"] = -worst([-energy.get("remainder_min", 0.0)] + [-v for v in series])
     else:
         # The binary has no energy account: kinetic + potential + strain against the start.
         # It leaves out the contact springs and every dissipation, so it can hide a gain
@@ -212,6 +221,7 @@ def load_run(out, m):
         e0 = frames[0]["kinetic"] + frames[0]["potential"] + frames[0]["strain_energy"]
         series = [f["kinetic"] + f["potential"] + f["strain_energy"] - e0 for f in frames]
         run["remainder_max"] = worst([0.0] + series)
+        run["remainder_min"] = 0.0  # not judged: the partial account leaves out every dissipation
     run["series"] = series
     return run
 
@@ -229,6 +239,14 @@ def judge(m, run, rc):
             results.append((False, f"{c['kind']} not measurable ({e})"))
     physics_ok = all(ok for ok, _ in results)
     text = "; ".join(("" if ok else "FAIL ") + t for ok, t in results)
+    # A loss is judged against the energy that moved: the larger of the case's scale and
+    # the run's own (summary.json's energy.scale holds the largest kinetic energy reached;
+    # the toppling columns release 2.4 times their case's scale).
+    moved = max(run["scale"], run["summary"].get("energy", {}).get("scale", 0.0))
+    loss = -run["remainder_min"] / moved
+    if loss > LOSS_TOLERANCE:
+        physics_ok = False
+        text = (text + "; " if text else "") + f"FAIL lost {loss:.3g} of the scale unbooked (<= {LOSS_TOLERANCE:g})"
     return rc == 0 and share <= TOLERANCE and physics_ok, share, text
 
 
@@ -301,8 +319,9 @@ def main():
             notes.append(f"- `{m['name']}`: {s['message'][:400]}")
     lines = ["# Hard cases (issue 9): multi-block dynamics that never gains energy", "",
              f"{len(manifest) - failed} of {len(manifest)} runs pass. A run passes when `dda` "
-             f"exits 0, its energy remainder stays within {TOLERANCE:.0%} of the case's energy "
-             "scale and its physics checks hold (`verification/hard-cases/README.md`).", "",
+             f"exits 0, its energy remainder stays below {TOLERANCE:g} of the case's energy "
+             f"scale (and above -{LOSS_TOLERANCE:g}: energy lost unbooked) and its physics "
+             "checks hold (`verification/hard-cases/README.md`).", "",
              "| case | dt (s) | mode | exit | steps | cut steps | open-close mean / max | "
              "deepest penetration (m) | penalty raises | wall (s) | remainder / scale | "
              "physics (measured) | verdict |",
