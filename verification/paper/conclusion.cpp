@@ -192,8 +192,13 @@ std::string conclusion_report(const Options& opt, const AllResults& r) {
     md << ". Its cause: the step is solved with the first-order T and the block then "
           "placed by the exact rotation, so the pinned point drifts by about l r0^2 / 2 a "
           "step and the pin does positive work pulling it back (docs/rotating-inertia.md, "
-          "docs/scene-format.md on finite_rotation). The paper's Table 2 reports only "
-          "lengths, so it could not see this.\n\n";
+          "docs/scene-format.md on finite_rotation). The paper's Table 2 gives its method's "
+          "lengths and strains at step 5000 (strains 4e-6 to 4e-5): a block that still "
+          "swings, not one spinning about its pin. The paper does not state its dynamic "
+          "coefficient; at 0.999 the same method swings to 3.067 rad at most and ends with "
+          "strains of the paper's order, the gain taken by the damping "
+          "(verification/paper/README.md, \"The swinging octagon under damping\"), so "
+          "whether the paper's own runs gained energy cannot be read from its tables.\n\n";
   }
   double shi_swing = 0.0, shi_spin = 0.0;
   for (const SwingStress& s : r.rotation.swing) {
