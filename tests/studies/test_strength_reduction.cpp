@@ -609,3 +609,72 @@ TEST_CASE("trials run on two threads give exactly what they give one at a time",
     CHECK(threaded[k].kinetic_end == alone.kinetic_end);
   }
 }
+
+TEST_CASE("reduce_materials: a Mohr-Coulomb column fails where its reduced strength "
+          "carries its load",
+          "[fos][plastic]") {
+  // scenes/plastic_column.json without hardening: a 1 m square of Mohr-Coulomb soil (c =
+  // 40 kPa, phi = 30, associated) carries a 1 m x 0.5 m elastic block of 98.1 kN per metre
+  // on a fixed base, frictionless joints, no lateral support. One block holds one stress,
+  // so the soil is in unconfined plane-strain compression, q = 98.1 kPa plus half its own
+  // weight (0.098 kPa), and it flows once 2 c sqrt(N) falls below q (docs/closed-forms.md).
+  // With the material's strengths divided by F (c / F, tan(phi) / F; the dilation angle
+  // kept at most the reduced friction angle), F is the root of
+  // 2 (c / F) tan(45 + phi_F / 2) = q, tan(phi_F) = tan(phi) / F: 1.26665. The joints have
+  // no strength to reduce, so without --reduce-materials nothing ever fails.
+  const std::string scene = R"({
+    "gravity": [0, -9.81],
+    "control": {"time_step": 0.01, "steps": 60, "max_displacement_ratio": 0.01, "dynamic_coefficient": 0},
+    "materials": {
+      "soil": {"model": "mohr_coulomb", "density": 20, "young": 5e7, "poisson": 0.3,
+               "cohesion": 4e4, "friction_angle": 30, "dilation_angle": 30},
+      "weight": {"model": "elastic", "density": 20000, "young": 1e9, "poisson": 0.25}
+    },
+    "joint_materials": {"default": {"friction_angle": 0, "cohesion": 0, "tensile_strength": 0}},
+    "blocks": [
+      {"vertices": [[-1, -1], [2, -1], [2, 0], [-1, 0]], "material": "weight", "fixed": true},
+      {"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "soil"},
+      {"vertices": [[0, 1], [1, 1], [1, 1.5], [0, 1.5]], "material": "weight"}
+    ]
+  })";
+  const double q = 20000.0 * 0.5 * 9.81 + 0.5 * 20.0 * 9.81;
+  const auto strength = [](double f) {
+    const double phi = std::atan(std::tan(deg(30.0)) / f);
+    return 2.0 * (4e4 / f) * std::tan(0.25 * kPi + 0.5 * phi);
+  };
+  double lo = 1.0, hi = 2.0;  // strength(1) = 138.6 kPa > q > strength(2)
+  for (int i = 0; i < 100; ++i) (strength(0.5 * (lo + hi)) > q ? lo : hi) = 0.5 * (lo + hi);
+  const double exact = 0.5 * (lo + hi);
+  REQUIRE(exact == Approx(1.26665).epsilon(1e-5));
+
+  World w = make_world(parse_scene_text(scene, "column.json"));
+  REQUIRE_FALSE(run(w, [](const World&, const RunStats&) { return true; }).diverged);
+  FosSettings settings;
+  settings.reduce_materials = true;
+  settings.tolerance = 0.002;
+  const FosSettings s = resolve_fos_settings(w, settings);
+  const FosResult r = find_factor_of_safety(s, [&](const std::vector<double>& factors) {
+    return run_trials(w, s, factors, {});
+  });
+  INFO(r.message << "; F = " << r.factor_of_safety << " in [" << r.last_stable << ", "
+                 << r.first_failing << "], exact " << exact);
+  REQUIRE(r.found);
+  // Error budget: half the bracket (0.001) plus the verdict's resolution. The column fails
+  // by the weight sinking under an out-of-balance force q - strength(F); a trial calls that
+  // failing once it accelerates the weight at 0.002 g, i.e. once strength(F) < 0.998 q,
+  // which F passes within 0.2 % of itself (d ln strength / d ln F is about -1.2 here).
+  const double resolution = 0.002 * exact;
+  CHECK(std::abs(r.factor_of_safety - exact) <= 0.5 * s.tolerance + resolution);
+  CHECK(r.last_stable <= exact + resolution);
+
+  // Without --reduce-materials the soil keeps its strength and the column stands at every
+  // F up to max_factor: no factor is found.
+  FosSettings plain;
+  plain.max_factor = 3.0;
+  const FosSettings p = resolve_fos_settings(w, plain);
+  const FosResult none = find_factor_of_safety(p, [&](const std::vector<double>& factors) {
+    return run_trials(w, p, factors, {});
+  });
+  INFO(none.message);
+  CHECK_FALSE(none.found);
+}
