@@ -249,12 +249,30 @@ void polygon_features(const Polygon& poly, PolygonFeatures& out) {
   }
 }
 
-FaceShares face_shares(const Polygon& vp, int v, const Vec2& normal) {
+FaceShares face_shares(const Polygon& vp, int v, const Vec2& edge_start, const Vec2& edge_end) {
   const int n = static_cast<int>(vp.size());
   FaceShares out;
+  const Vec2 along = edge_end - edge_start;
+  const double edge_length = along.norm();
+  if (!(edge_length > 0.0)) return out;
+  const Vec2 t = along / edge_length;
+  const Vec2 normal(t.y(), -t.x());
   for (int w : {wrap(v - 1, n), wrap(v + 1, n)}) {
     const Vec2 a = vp[w] - vp[v];
-    if (std::abs(a.dot(normal)) <= kWedgeTolerance * a.norm()) out.halves[out.count++] = 0.5 * a;
+    if (std::abs(a.dot(normal)) > kWedgeTolerance * a.norm()) continue;  // at an angle
+    // The face's and the edge's extents along the edge, and their overlap.
+    const double s_vertex = t.dot(vp[v] - edge_start), s_other = t.dot(vp[w] - edge_start);
+    const double lo = std::max(std::min(s_vertex, s_other), 0.0);
+    const double hi = std::min(std::max(s_vertex, s_other), edge_length);
+    if (!(hi > lo)) continue;  // end to end, or beside it: no common face
+    // The half of the overlap next to the vertex: from the overlap's end nearer the
+    // vertex towards its middle.
+    const double near = s_other >= s_vertex ? lo : hi;
+    const double middle = 0.5 * (lo + hi);
+    const double scale = (middle - near) / (s_other - s_vertex);
+    out.from[out.count] = vp[v] + ((near - s_vertex) / (s_other - s_vertex)) * a;
+    out.halves[out.count] = scale * a;
+    ++out.count;
   }
   return out;
 }

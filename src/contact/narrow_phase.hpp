@@ -71,16 +71,23 @@ inline constexpr double kCandidateWedgeTolerance = 0.26;
 // search distance from that end (narrow_phase.cpp says why).
 inline constexpr double kPairClearanceShare = 0.05;
 
-// The share of a face-to-face contact that vertex `v` of `vp` carries: each of its two edges
-// that lies along a contact edge of outward normal `normal` (within kWedgeTolerance) gives
-// its half next to the vertex, as the vector from the vertex to that edge's midpoint. A
-// vertex meeting the edge at an angle (a point contact) carries none. Contact::length is
-// their total length (what cohesion and tensile strength act on); joint water wets them.
+// The share of a face-to-face contact that vertex `v` of `vp` carries against the contact
+// edge from `edge_start` to `edge_end`: each of the vertex's two faces that lies along the
+// edge (parallel within kWedgeTolerance) and overlaps it gives half of the overlap, the
+// half next to the vertex: a segment from `from` (the vertex's place along the overlap) of
+// vector `halves`. The two contacts at the ends of an overlap then carry it once between
+// them: a block on a wider base its whole face; a brick over two bricks of the course
+// below, on each, the length it covers (each of the two faces' vertices carrying half the
+// overlap, not half its own face); two blocks whose faces meet end to end on one line
+// (the corner of a mesh, diagonal neighbours in a grid) nothing. A vertex meeting the edge
+// at an angle (a point contact) carries none. Contact::length is their total length (what
+// cohesion and tensile strength act on); joint water wets them.
 struct FaceShares {
   int count = 0;
+  std::array<Vec2, 2> from{Vec2::Zero(), Vec2::Zero()};
   std::array<Vec2, 2> halves{Vec2::Zero(), Vec2::Zero()};
 };
-FaceShares face_shares(const Polygon& vp, int v, const Vec2& normal);
+FaceShares face_shares(const Polygon& vp, int v, const Vec2& edge_start, const Vec2& edge_end);
 
 // Appends the contacts between polygons a (block ia) and b (block ib), ia < ib, for vertices
 // within `search_distance` of an edge (on either side). Deterministic: the same geometry

@@ -13,8 +13,8 @@ namespace {
 
 // The length of the face share this vertex carries (narrow_phase.hpp, face_shares): a point
 // contact carries none, so no cohesion or tensile strength.
-double contact_length(const Polygon& vp, int v, const Vec2& edge_normal) {
-  const FaceShares shares = face_shares(vp, v, edge_normal);
+double contact_length(const Polygon& vp, int v, const EdgeFrame& edge) {
+  const FaceShares shares = face_shares(vp, v, edge.start, edge.end);
   double length = 0.0;
   for (int k = 0; k < shares.count; ++k) length += shares.halves[static_cast<std::size_t>(k)].norm();
   return length;
@@ -37,7 +37,7 @@ Contact make_contact(const World& world, const ContactCandidate& c, const EdgeFr
   // its shear spring must be anchored where the vertex really is (a clamped anchor starts
   // the spring stretched by the overhang: a box of tumbling blocks gained 9 MJ/m that way).
   k.t = proj.t;
-  k.length = contact_length(vp, c.vertex, frame.normal);
+  k.length = contact_length(vp, c.vertex, frame);
   k.allowed_penetration = contact_allowance(world, c.vertex_block, c.edge_block);
   return k;
 }

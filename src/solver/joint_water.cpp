@@ -96,9 +96,10 @@ std::vector<BlockForce> joint_water_forces(const WaterTable& water,
     const Polygon& vp = *polygons[static_cast<std::size_t>(c.key.vertex_block)];
     const Vec2& p = vp[static_cast<std::size_t>(c.key.vertex)];
     // The same share as the contact's length (and its cohesion).
-    const FaceShares shares = face_shares(vp, c.key.vertex, c.normal);
+    const FaceShares shares = face_shares(vp, c.key.vertex, c.edge_start, c.edge_end);
     for (int k = 0; k < shares.count; ++k) {
       const Vec2& half = shares.halves[static_cast<std::size_t>(k)];
+      const Vec2& start = shares.from[static_cast<std::size_t>(k)];
       Face* face = nullptr;
       for (Face& f : faces) {
         if (f.a == a && f.b == b && f.normal.dot(n) > std::cos(kWedgeTolerance) &&
@@ -112,7 +113,7 @@ std::vector<BlockForce> joint_water_forces(const WaterTable& water,
         face = &faces.back();
       }
       const Vec2 t(-face->normal.y(), face->normal.x());
-      const double s0 = t.dot(p), s1 = t.dot(p + half);
+      const double s0 = t.dot(start), s1 = t.dot(start + half);
       face->covered.emplace_back(std::min(s0, s1), std::max(s0, s1));
     }
   }

@@ -853,3 +853,39 @@ TEST_CASE("a square in the notch of an L turned by 90 degrees: held by both wall
         std::vector<std::string>{"v1.0 on e0.3", "v1.1 on e0.2 (vv)", "v1.1 on e0.3 (vv)",
                                  "v1.2 on e0.2"});
 }
+
+TEST_CASE("face shares: a vertex carries half of the overlap of its face with the contact edge",
+          "[contact-geometry]") {
+  // What cohesion and tensile strength act on (Contact::length). The two contacts at the
+  // ends of a common face carry it once between them.
+  const auto length = [](const Polygon& p, int v, const Vec2& s, const Vec2& e) {
+    const FaceShares f = face_shares(p, v, s, e);
+    double l = 0.0;
+    for (int k = 0; k < f.count; ++k) l += f.halves[static_cast<std::size_t>(k)].norm();
+    return l;
+  };
+  // A 4 m box on a 10 m base (edge (5, 0) -> (-5, 0)): each base vertex half the face, 2 m.
+  const Polygon box{{0, 0}, {4, 0}, {4, 1}, {0, 1}};
+  CHECK_THAT(length(box, 0, {5, 0}, {-5, 0}), WithinAbs(2.0, kTol));
+  CHECK_THAT(length(box, 1, {5, 0}, {-5, 0}), WithinAbs(2.0, kTol));
+  // Running bond: a brick over [0.5, 1.5] on a brick of the course below over [0, 1] (its
+  // top edge (1, 0) -> (0, 0)): they share [0.5, 1]. The upper brick's vertex at 0.5 and the
+  // lower brick's at 1 carry a quarter metre each, half a metre in all, not half a brick
+  // each (a metre, twice the face they share, until 2026-11-26).
+  const Polygon upper{{0.5, 0}, {1.5, 0}, {1.5, 0.5}, {0.5, 0.5}};
+  const Polygon lower{{0, -0.5}, {1, -0.5}, {1, 0}, {0, 0}};
+  CHECK_THAT(length(upper, 0, {1, 0}, {0, 0}), WithinAbs(0.25, kTol));
+  CHECK_THAT(length(lower, 2, {1.5, 0}, {0.5, 0}), WithinAbs(0.25, kTol));
+  // The half next to the vertex, from where the overlap starts: water wets [0.5, 0.75].
+  const FaceShares f = face_shares(upper, 0, {1, 0}, {0, 0});
+  REQUIRE(f.count == 1);
+  CHECK_THAT((f.from[0] - Vec2(0.5, 0)).norm(), WithinAbs(0.0, kTol));
+  CHECK_THAT((f.from[0] + f.halves[0] - Vec2(0.75, 0)).norm(), WithinAbs(0.0, kTol));
+  // Two cells of a mesh whose faces meet end to end on one line (the bottom triangles of
+  // neighbouring cells, touching at (1, 0) only): no face in common, no share.
+  const Polygon right_cell{{1, 0}, {2, 0}, {1.5, 0.5}};
+  CHECK(face_shares(right_cell, 0, {1, 0}, {0, 0}).count == 0);
+  // A vertex meeting the edge at an angle: a point contact.
+  const Polygon wedge{{0, 0}, {1, 1}, {-1, 1}};
+  CHECK(face_shares(wedge, 0, {5, 0}, {-5, 0}).count == 0);
+}

@@ -55,23 +55,26 @@ TEST_CASE("a rigid strip footing on a Tresca layer of blocks reaches Prandtl's l
   // crossed diagonals). The refinement study (verification/footing/README.md) measured
   // +24.8 % on this mesh at 150 steps, +14.6 % at h = 0.25 m and +8.6 % at h = 0.125 m
   // (order 0.77 in h; Richardson's extrapolation gives 5.139 c, -0.05 % from Prandtl). The
-  // result is deterministic: this mesh at the test's 30 steps gives +24.93 % (q / c =
-  // 6.4236, 2026-11-26), and the study's 150 and 300 steps 6.4192 and 6.4186, so the load
+  // result is deterministic: this mesh at the test's 30 steps gives +24.94 % (q / c =
+  // 6.4240, 2026-11-26; 6.4236 before point contacts lost their spurious face shares), and the study's 150 and 300 steps 6.4192 and 6.4186, so the load
   // step moves it by 0.07 %. The band, +24.93 % +- 0.5 % of q_u (7 times that), lets the
   // load step, the penalty and the solver's tolerances move it and catches any change of
   // the method's answer (it was +- 5 points of q_u until 2026-11-26).
   CHECK(q > qu);
   CHECK(q / qu - 1.0 == Approx(0.2493).margin(0.005));
 
-  // The load has levelled off: over the last third of the push the curve rises at less than
-  // 5 % of its initial (elastic) slope. Measured: 0.8 % (the residual hardening).
+  // The load has levelled off: over the last third of the push the curve's slope is within
+  // 5 % of its initial (elastic) slope, and it does not soften beyond 1 % of it. Measured:
+  // -0.1 % (0.8 % until 2026-11-26, when point contacts between triangles that meet only
+  // at a mesh node still carried half a face of bond each: contact/narrow_phase.hpp,
+  // face_shares).
   const CurvePoint& first = r.curve[1];
   const CurvePoint& two_thirds = r.curve[static_cast<std::size_t>(2 * c.steps / 3)];
   const CurvePoint& last = r.curve.back();
   const double initial_slope = first.pressure / first.settlement;
   const double final_slope = (last.pressure - two_thirds.pressure) / (last.settlement - two_thirds.settlement);
   INFO("final slope / initial slope " << final_slope / initial_slope);
-  CHECK(final_slope >= 0.0);
+  CHECK(final_slope >= -0.01 * initial_slope);
   CHECK(final_slope < 0.05 * initial_slope);
 
   // A mechanism, not a crushed column: the soil has yielded beside the footing, at the
