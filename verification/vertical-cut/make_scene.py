@@ -3,7 +3,7 @@
 and slide (verification/vertical-cut/README.md).
 
     make_scene.py OUT.json [--cells-per-height N] [--stability-number S] [--joints MODE]
-                  [--joint-strength R]
+                  [--joint-strength R] [--model MODEL]
 
 The cut is H = 10 m high, its toe at (0, 0); the soil reaches H in front of the toe, 2 H
 behind it and 0.4 H below it, on a fixed rough base, between fixed smooth side walls. The
@@ -19,6 +19,10 @@ with the soil's cohesion, no friction and a tensile strength of 2 c (the soil's 
 uniaxial tension under Tresca), so a mechanism may slip along the mesh's lines as a
 velocity discontinuity of the same soil or form inside the blocks; "strong": the joints
 are bonded at 1000 c (a finite-element mesh: only the blocks can yield).
+
+--model MODEL: "mohr_coulomb" (default; Tresca at phi = 0) or "drucker_prager" (von Mises
+at phi = 0, fitted with the plane-strain match, which in plane strain has Tresca's limit
+loads: the same critical height).
 
 --joint-strength R: with "soil" joints, their cohesion and tensile strength are R times the
 soil's (default 1). Below about 0.97 the planar wedge that slides on the mesh's 45-degree
@@ -40,7 +44,8 @@ def rect(x0, y0, x1, y1):
     return [[x0, y0], [x1, y0], [x1, y1], [x0, y1]]
 
 
-def scene(cells_per_height=5, stability_number=3.0, joints="soil", joint_strength=1.0):
+def scene(cells_per_height=5, stability_number=3.0, joints="soil", joint_strength=1.0,
+          model="mohr_coulomb"):
     h = H / cells_per_height
     front = cells_per_height            # cells from the toe to the left wall (H)
     back = 2 * cells_per_height         # cells from the toe to the right wall (2 H)
@@ -80,7 +85,7 @@ def scene(cells_per_height=5, stability_number=3.0, joints="soil", joint_strengt
     return {
         "description": f"vertical cut H = {H:g} m in Tresca soil, c = {c:.1f} Pa (gamma H / c = "
                        f"{stability_number:g}), {len(blocks) - 3} triangular blocks, joints {joints} "
-                       f"(strength ratio {joint_strength:g}) "
+                       f"(strength ratio {joint_strength:g}), {model} "
                        "(verification/vertical-cut)",
         "gravity": [0.0, -G],
         "plane": "strain",
@@ -91,8 +96,9 @@ def scene(cells_per_height=5, stability_number=3.0, joints="soil", joint_strengt
         "stages": [{"duration": 0.5, "dynamic_coefficient": 0.0, "gravity_ramp": [0.0, 1.0]},
                    {"duration": 2.0, "dynamic_coefficient": 0.0}],
         "materials": {
-            "soil": {"model": "mohr_coulomb", "density": GAMMA / G, "young": YOUNG, "poisson": POISSON,
-                     "cohesion": c, "friction_angle": 0.0, "dilation_angle": 0.0},
+            "soil": dict({"model": model, "density": GAMMA / G, "young": YOUNG, "poisson": POISSON,
+                          "cohesion": c, "friction_angle": 0.0, "dilation_angle": 0.0},
+                         **({"match": "plane_strain"} if model == "drucker_prager" else {})),
             "base": {"model": "elastic", "density": GAMMA / G, "young": YOUNG, "poisson": POISSON},
         },
         "joint_materials": {
@@ -114,18 +120,21 @@ def main():
         sys.exit(2)
     out = args.pop(0)
     opts = {"--cells-per-height": 5, "--stability-number": 3.0, "--joints": "soil",
-            "--joint-strength": 1.0}
+            "--joint-strength": 1.0, "--model": "mohr_coulomb"}
     while args:
         key = args.pop(0)
         if key not in opts or not args:
             print(f"make_scene.py: unknown option or missing value: {key}", file=sys.stderr)
             sys.exit(2)
         opts[key] = type(opts[key])(args.pop(0))
+    if opts["--model"] not in ("mohr_coulomb", "drucker_prager"):
+        print("make_scene.py: --model is mohr_coulomb or drucker_prager", file=sys.stderr)
+        sys.exit(2)
     if opts["--joints"] not in ("soil", "strong"):
         print("make_scene.py: --joints is soil or strong", file=sys.stderr)
         sys.exit(2)
     s = scene(opts["--cells-per-height"], opts["--stability-number"], opts["--joints"],
-              opts["--joint-strength"])
+              opts["--joint-strength"], opts["--model"])
     with open(out, "w") as f:
         json.dump(s, f, indent=1)
         f.write("\n")

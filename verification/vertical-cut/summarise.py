@@ -31,7 +31,7 @@ def main():
             gamma = soil["density"] * G
             height = 10.0
             blocks = sum(1 for b in scene["blocks"] if not b.get("fixed"))
-            row = {"case": name, "cells_per_height": int(cells), "joints": joints,
+            row = {"case": name, "cells_per_height": int(cells), "joints": joints, "model": soil["model"],
                    "blocks": blocks, "exit": int(rc), "wall_time_s": float(wall),
                    "design_number": gamma * height / soil["cohesion"]}
             try:
@@ -57,15 +57,15 @@ def main():
              f"Stability number N = F gamma H / c against limit analysis: rigorous bounds "
              f"{LOWER} and {UPPER}, best estimate {BEST} (README.md). A run fails when N lies "
              "below the lower bound.", "",
-             "| case | cells per H | joints | blocks | F | bracket | N | N / 3.78 - 1 | trials | wall (s) | check |",
-             "|---|---:|---|---:|---:|---|---:|---:|---:|---:|---|"]
+             "| case | cells per H | joints | soil | blocks | F | bracket | N | N / 3.78 - 1 | trials | wall (s) | check |",
+             "|---|---:|---|---|---:|---:|---|---:|---:|---:|---:|---|"]
     for r in rows:
         if r["factor"] is None:
-            lines.append(f"| {r['case']} | {r['cells_per_height']} | {r['joints']} | {r['blocks']} | "
-                         f"none (exit {r['exit']}) | | | | | {r['wall_time_s']:.0f} | FAIL |")
+            lines.append(f"| {r['case']} | {r['cells_per_height']} | {r['joints']} | {r['model']} | "
+                         f"{r['blocks']} | none (exit {r['exit']}) | | | | | {r['wall_time_s']:.0f} | FAIL |")
             continue
-        lines.append(f"| {r['case']} | {r['cells_per_height']} | {r['joints']} | {r['blocks']} | "
-                     f"{r['factor']:.4f} | [{r['bracket'][0]:.4f}, {r['bracket'][1]:.4f}] | "
+        lines.append(f"| {r['case']} | {r['cells_per_height']} | {r['joints']} | {r['model']} | "
+                     f"{r['blocks']} | {r['factor']:.4f} | [{r['bracket'][0]:.4f}, {r['bracket'][1]:.4f}] | "
                      f"{r['stability_number']:.3f} | {100 * r['error_from_best']:+.1f} % | "
                      f"{r['trials']} | {r['wall_time_s']:.0f} | "
                      f"{'FAIL: below the lower bound' if r['below_lower_bound'] else 'pass'} |")
