@@ -3,7 +3,7 @@
 and slide (verification/vertical-cut/README.md).
 
     make_scene.py OUT.json [--cells-per-height N] [--stability-number S] [--joints MODE]
-                  [--joint-strength R] [--model MODEL]
+                  [--joint-strength R] [--model MODEL] [--softening EPS]
 
 The cut is H = 10 m high, its toe at (0, 0); the soil reaches H in front of the toe, 2 H
 behind it and 0.4 H below it, on a fixed rough base, between fixed smooth side walls. The
@@ -23,6 +23,10 @@ are bonded at 1000 c (a finite-element mesh: only the blocks can yield).
 --model MODEL: "mohr_coulomb" (default; Tresca at phi = 0) or "drucker_prager" (von Mises
 at phi = 0, fitted with the plane-strain match, which in plane strain has Tresca's limit
 loads: the same critical height).
+
+--softening EPS: the soil's cohesion falls linearly from c to c / 2 as its equivalent plastic
+strain grows from 0 to EPS (a hardening table), constant beyond (default: none, perfectly
+plastic). The joints keep c.
 
 --joint-strength R: with "soil" joints, their cohesion and tensile strength are R times the
 soil's (default 1). Below about 0.97 the planar wedge that slides on the mesh's 45-degree
@@ -45,7 +49,7 @@ def rect(x0, y0, x1, y1):
 
 
 def scene(cells_per_height=5, stability_number=3.0, joints="soil", joint_strength=1.0,
-          model="mohr_coulomb"):
+          model="mohr_coulomb", softening=0.0):
     h = H / cells_per_height
     front = cells_per_height            # cells from the toe to the left wall (H)
     back = 2 * cells_per_height         # cells from the toe to the right wall (2 H)
@@ -98,7 +102,8 @@ def scene(cells_per_height=5, stability_number=3.0, joints="soil", joint_strengt
         "materials": {
             "soil": dict({"model": model, "density": GAMMA / G, "young": YOUNG, "poisson": POISSON,
                           "cohesion": c, "friction_angle": 0.0, "dilation_angle": 0.0},
-                         **({"match": "plane_strain"} if model == "drucker_prager" else {})),
+                         **({"match": "plane_strain"} if model == "drucker_prager" else {}),
+                         **({"hardening": [[0.0, c], [softening, 0.5 * c]]} if softening > 0.0 else {})),
             "base": {"model": "elastic", "density": GAMMA / G, "young": YOUNG, "poisson": POISSON},
         },
         "joint_materials": {
@@ -120,7 +125,7 @@ def main():
         sys.exit(2)
     out = args.pop(0)
     opts = {"--cells-per-height": 5, "--stability-number": 3.0, "--joints": "soil",
-            "--joint-strength": 1.0, "--model": "mohr_coulomb"}
+            "--joint-strength": 1.0, "--model": "mohr_coulomb", "--softening": 0.0}
     while args:
         key = args.pop(0)
         if key not in opts or not args:
@@ -134,7 +139,7 @@ def main():
         print("make_scene.py: --joints is soil or strong", file=sys.stderr)
         sys.exit(2)
     s = scene(opts["--cells-per-height"], opts["--stability-number"], opts["--joints"],
-              opts["--joint-strength"], opts["--model"])
+              opts["--joint-strength"], opts["--model"], opts["--softening"])
     with open(out, "w") as f:
         json.dump(s, f, indent=1)
         f.write("\n")

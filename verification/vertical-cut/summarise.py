@@ -31,7 +31,8 @@ def main():
             gamma = soil["density"] * G
             height = 10.0
             blocks = sum(1 for b in scene["blocks"] if not b.get("fixed"))
-            row = {"case": name, "cells_per_height": int(cells), "joints": joints, "model": soil["model"],
+            row = {"case": name, "cells_per_height": int(cells), "joints": joints,
+                   "model": soil["model"] + (" softening" if soil.get("hardening") else ""),
                    "blocks": blocks, "exit": int(rc), "wall_time_s": float(wall),
                    "design_number": gamma * height / soil["cohesion"]}
             try:
@@ -47,7 +48,9 @@ def main():
                 row["error_from_best"] = row["stability_number"] / BEST - 1.0
                 # The check: never below the rigorous lower bound (the bracket's upper end,
                 # so that a bracket straddling the bound is not called a failure).
-                row["below_lower_bound"] = f_hi * row["design_number"] < LOWER
+                # A softening soil is not held to it: its factor is the mesh's (README).
+                row["below_lower_bound"] = (not soil.get("hardening") and
+                                            f_hi * row["design_number"] < LOWER)
                 failed |= row["below_lower_bound"]
             else:
                 row["factor"] = None
