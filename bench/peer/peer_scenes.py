@@ -12,10 +12,10 @@ dt 0.002 s, 200 steps (with --end-time T: run to T seconds instead, as the compa
 The moving scenes of issue 25 (box150, hopper300, ...) come from
 verification/hard-cases/make_scenes.py --moving.
 """
+import argparse
 import json
 import math
 import os
-import sys
 
 ROCK = {"model": "elastic", "density": 2700.0, "young": 1.0e9, "poisson": 0.25}
 JOINT = {"friction_angle": 30.0, "cohesion": 0.0, "tensile_strength": 0.0}
@@ -51,28 +51,25 @@ def wall(n, steps=200, end_time=None):
             "blocks": blocks}
 
 
+def positive_seconds(text):
+    value = float(text)
+    if not value > 0.0:
+        raise ValueError(text)
+    return value
+
+
 def main():
-    args = sys.argv[1:]
-    end_time = None
-    if len(args) == 3 and args[1] == "--end-time":
-        try:
-            end_time = float(args[2])
-        except ValueError:
-            end_time = -1.0
-        if not end_time > 0.0:
-            print(f"peer_scenes.py: --end-time needs a positive number of seconds, not {args[2]!r}",
-                  file=sys.stderr)
-            sys.exit(2)
-        args = args[:1]
-    if len(args) != 1 or args[0].startswith("-"):
-        # An option read as OUT_DIR once wrote the walls into a directory named "--help".
-        print("usage: peer_scenes.py OUT_DIR [--end-time T]", file=sys.stderr)
-        sys.exit(0 if args in (["-h"], ["--help"]) else 2)
-    out = args[0]
-    os.makedirs(out, exist_ok=True)
-    scenes = {f"wall{n}": wall(n, end_time=end_time) for n in (30, 110, 420, 1000, 4000)}
+    # argparse: an option is never read as OUT_DIR (one once wrote the walls into a
+    # directory named "--help").
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("out_dir")
+    ap.add_argument("--end-time", type=positive_seconds, default=None,
+                    help="run each wall to this many seconds instead of 200 steps")
+    a = ap.parse_args()
+    os.makedirs(a.out_dir, exist_ok=True)
+    scenes = {f"wall{n}": wall(n, end_time=a.end_time) for n in (30, 110, 420, 1000, 4000)}
     for name, s in scenes.items():
-        with open(os.path.join(out, name + ".json"), "w") as f:
+        with open(os.path.join(a.out_dir, name + ".json"), "w") as f:
             json.dump(s, f, indent=1)
             f.write("\n")
 

@@ -34,8 +34,8 @@ line from the toe is weaker than any mechanism through the blocks: its factor is
 4 R c / (gamma H) exactly (the joints carry c R along the line, the wedge's weight
 gamma H^2 / 2 pulls along it at 45 degrees).
 """
+import argparse
 import json
-import sys
 
 GAMMA = 20e3      # N/m^3
 G = 9.81
@@ -119,28 +119,18 @@ def scene(cells_per_height=5, stability_number=3.0, joints="soil", joint_strengt
 
 
 def main():
-    args = sys.argv[1:]
-    if not args or args[0].startswith("-"):
-        print(__doc__.strip().splitlines()[3].strip(), file=sys.stderr)
-        sys.exit(2)
-    out = args.pop(0)
-    opts = {"--cells-per-height": 5, "--stability-number": 3.0, "--joints": "soil",
-            "--joint-strength": 1.0, "--model": "mohr_coulomb", "--softening": 0.0}
-    while args:
-        key = args.pop(0)
-        if key not in opts or not args:
-            print(f"make_scene.py: unknown option or missing value: {key}", file=sys.stderr)
-            sys.exit(2)
-        opts[key] = type(opts[key])(args.pop(0))
-    if opts["--model"] not in ("mohr_coulomb", "drucker_prager"):
-        print("make_scene.py: --model is mohr_coulomb or drucker_prager", file=sys.stderr)
-        sys.exit(2)
-    if opts["--joints"] not in ("soil", "strong"):
-        print("make_scene.py: --joints is soil or strong", file=sys.stderr)
-        sys.exit(2)
-    s = scene(opts["--cells-per-height"], opts["--stability-number"], opts["--joints"],
-              opts["--joint-strength"], opts["--model"], opts["--softening"])
-    with open(out, "w") as f:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("out", metavar="OUT.json")
+    ap.add_argument("--cells-per-height", type=int, default=5)
+    ap.add_argument("--stability-number", type=float, default=3.0)
+    ap.add_argument("--joints", choices=("soil", "strong"), default="soil")
+    ap.add_argument("--joint-strength", type=float, default=1.0)
+    ap.add_argument("--model", choices=("mohr_coulomb", "drucker_prager"), default="mohr_coulomb")
+    ap.add_argument("--softening", type=float, default=0.0)
+    a = ap.parse_args()
+    s = scene(a.cells_per_height, a.stability_number, a.joints, a.joint_strength, a.model,
+              a.softening)
+    with open(a.out, "w") as f:
         json.dump(s, f, indent=1)
         f.write("\n")
 
