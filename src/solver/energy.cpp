@@ -227,8 +227,10 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
     const double area = step.plastic_area_before[i];
     const double implicit = area * complementary_density(ds, m.young, m.poisson);
     led.damping_dissipation += implicit;
+    // The energy density's rise over the start area (plastic_elastic_before is the start
+    // area's energy), not the area's change.
     const double elastic_rise =
-        area * (block_strain_energy(world, b) / b.moments.area - step.plastic_elastic_before[i] / area);
+        area / b.moments.area * block_strain_energy(world, b) - step.plastic_elastic_before[i];
     led.plastic_dissipation += area * (Vec3(stress[0], stress[1], stress[3]) - s0).dot(de) -
                                elastic_rise - implicit;
   }
