@@ -27,6 +27,10 @@ Mat2 sine_rotation_column(double r) {
   return (Mat2() << diagonal, -1.0, 1.0, diagonal).finished();
 }
 
+Mat2 rotation_column(const LinearT& t) {
+  return (Mat2() << t.dx(0, kR0), t.dy(0, kR0), t.dx(1, kR0), t.dy(1, kR0)).finished();
+}
+
 LinearT t_with_rotation_column(const Mat2& a) {
   LinearT t;
   t.constant(0, kU0) = 1.0;

@@ -30,6 +30,9 @@ const LinearT& shi_t();
 // quarter turn). Used with the columns below; every other column is Shi's.
 LinearT t_with_rotation_column(const Mat2& a);
 
+// The rotation column a of a T made by t_with_rotation_column(a) (J for Shi's).
+Mat2 rotation_column(const LinearT& t);
+
 // The quarter turn J = [[0, -1], [1, 0]]: Shi's first-order rotation column.
 Mat2 quarter_turn();
 

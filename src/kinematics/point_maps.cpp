@@ -65,4 +65,53 @@ PolarDecomposition polar_decomposition(const Mat2& f, double near) {
   return p;
 }
 
+namespace {
+
+// atanh(x) / x and sinh(q) / q, by their series below 1e-4 (the next term, x^6/7 or
+// q^6/5040, is then below 1e-24 of 1).
+double atanh_over(double x) {
+  if (std::abs(x) < 1e-4) return 1.0 + x * x / 3.0 + x * x * x * x / 5.0;
+  return std::atanh(x) / x;
+}
+double sinh_over(double q) {
+  if (q < 1e-4) return 1.0 + q * q / 6.0 + q * q * q * q / 120.0;
+  return std::sinh(q) / q;
+}
+
+// The mean diagonal m and half the eigenvalue spread q of a symmetric [ex, ey, gxy] tensor
+// (shear on the off-diagonals as gxy / 2).
+struct Spread {
+  double mean;
+  double half;
+};
+Spread spread_of(double xx, double yy, double xy) {
+  return {0.5 * (xx + yy), std::hypot(0.5 * (xx - yy), xy)};
+}
+
+}  // namespace
+
+Vec3 hencky_from_stretch(const Vec3& biot) {
+  // S = I + E: mean 1 + mu, spread q; ln S = a I + b (S - (1 + mu) I), with
+  // a = ln((1 + mu)^2 - q^2) / 2 taken by log1p (strains of 1e-6 keep their digits).
+  const Spread s = spread_of(biot[0], biot[1], 0.5 * biot[2]);
+  const double m = 1.0 + s.mean;
+  const double b = atanh_over(s.half / m) / m;
+  const double a = 0.5 * std::log1p(2.0 * s.mean + s.mean * s.mean - s.half * s.half);
+  return Vec3(a + b * (biot[0] - s.mean), a + b * (biot[1] - s.mean), b * biot[2]);
+}
+
+Vec3 stretch_from_hencky(const Vec3& hencky) {
+  const Spread s = spread_of(hencky[0], hencky[1], 0.5 * hencky[2]);
+  const double e = std::exp(s.mean);
+  const double b = e * sinh_over(s.half);
+  // exp(H) - I = c I + b (H - m I), c = e^m cosh q - 1 = expm1(m) + e^m 2 sinh^2(q/2).
+  const double sh = std::sinh(0.5 * s.half);
+  const double c = std::expm1(s.mean) + 2.0 * e * sh * sh;
+  return Vec3(c + b * (hencky[0] - s.mean), c + b * (hencky[1] - s.mean), b * hencky[2]);
+}
+
+Mat2 hencky_frame_map(double r, const Vec3& hencky) {
+  return rotation_matrix(r) * (Mat2::Identity() + strain_tensor(stretch_from_hencky(hencky)));
+}
+
 }  // namespace dda

@@ -43,4 +43,17 @@ struct PolarDecomposition {
 };
 PolarDecomposition polar_decomposition(const Mat2& f, double near);
 
+// The Hencky (logarithmic) strain ln U of the stretch U = I + E (E the Biot strain), and
+// back, both as [ex, ey, gxy] (engineering shear). A symmetric 2x2 matrix S with eigenvalues
+// m +- q (m its mean diagonal, q = sqrt(((Sxx - Syy)/2)^2 + Sxy^2)) has
+//   ln S = (ln(m^2 - q^2) / 2) I + (atanh(q/m) / q) (S - m I)      (S positive definite),
+//   exp S = e^m (cosh(q) I + (sinh(q) / q) (S - m I)),
+// the scalar factors taken by their series where q is small (no 0/0).
+Vec3 hencky_from_stretch(const Vec3& biot);
+Vec3 stretch_from_hencky(const Vec3& hencky);
+
+// finite_rotation_polar's map from the initial configuration: A = R(r) exp(H), H the
+// block-frame Hencky strain.
+Mat2 hencky_frame_map(double r, const Vec3& hencky);
+
 }  // namespace dda

@@ -2,6 +2,7 @@
 
 #include "kinematics/block_matrices.hpp"
 #include "kinematics/rotating_inertia.hpp"
+#include "solver/configuration_update.hpp"
 
 namespace dda {
 namespace {
@@ -23,18 +24,23 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
   // stress (initial_stress_force below): a steady spin then balances with no shear in the
   // block frame (at the mid-step angle, half a step's turn, r0/2, would show as shear).
   if (!ctx.spins.empty() && !b.rigid) {
-    f -= rotating_inertia_force(b.material_inertia, b.rotation, b.local_strain,
+    f -= rotating_inertia_force(b.material_inertia, b.rotation,
+                                stretch_strain(world.control.rotation_update, b),
                                 ctx.spins[static_cast<std::size_t>(index)]);
   }
   if (b.plastic && !ctx.material_terms.empty()) {
     // Newton: the stress at increment de is taken as s + D_t (de - de_k) (the material
     // linearised at the last solution, solver/material_coupling.hpp).
     const MaterialLinearization& l = ctx.material_terms[static_cast<std::size_t>(index)];
-    k.block<3, 3>(kEx, kEx) += b.moments.area * l.tangent;
-    f.segment<3>(kEx) -= b.moments.area * (l.stress - l.tangent * l.strain_increment);
+    const double area = stress_area(world.control.rotation_update, b);
+    k.block<3, 3>(kEx, kEx) += area * l.tangent;
+    f.segment<3>(kEx) -= area * (l.stress - l.tangent * l.strain_increment);
   } else if (!b.rigid) {
-    k += elastic_stiffness(b.moments, elastic_of(world, b));
-    f += initial_stress_force(b.moments, b.stress);
+    // (The stress's area: stress_area, which only finite_rotation_polar changes.)
+    Moments stressed = b.moments;
+    stressed.area = stress_area(world.control.rotation_update, b);
+    k += elastic_stiffness(stressed, elastic_of(world, b));
+    f += initial_stress_force(stressed, b.stress);
   }
 }
 

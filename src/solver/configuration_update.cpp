@@ -70,24 +70,6 @@ Vec3 local_increment(const Block& b, const Vec6& db) {
   return strain_in_turned_frame(db.segment<3>(kEx), mid_step_frame_angle(b, db));
 }
 
-// finite_rotation_polar, a free deformable block: its rotation, block-frame strain and map
-// after the step. The step's T moved the present shape x - xc = F (X - Xc), F = R(r)(I + E^),
-// by (R(r0) + dE) (the secant column at the step's own r0 is exactly R(r0) - I; the strain
-// columns carry the global-frame increment dE), so F' = (R(r0) + dE) F; then F' = R(r') U',
-// r' nearest r + r0, E^' = U' - I.
-struct PolarStep {
-  double rotation = 0.0;
-  Vec3 local_strain = Vec3::Zero();
-  Mat2 map = Mat2::Identity();
-};
-
-PolarStep polar_step(const Block& b, const Vec6& db) {
-  const Mat2 f = frame_map(b.rotation, b.local_strain);
-  const Mat2 after = (rotation_matrix(db[kR0]) + strain_tensor(db.segment<3>(kEx))) * f;
-  const PolarDecomposition p = polar_decomposition(after, b.rotation + db[kR0]);
-  return {p.angle, p.strain, after};
-}
-
 bool places_by_polar(RotationUpdate treatment, const Block& b) {
   return treatment == RotationUpdate::FiniteRotationPolar && !b.fixed && !b.rigid;
 }
@@ -103,7 +85,8 @@ Vec2 place(const Block& b, const Mat2& a, const Vec2& material_point) {
 // of a homogeneously deformed polygon is the image of the initial one, so xc (the reference
 // point of the next step) stays the centroid.
 template <class FrameMap>
-void rebuild_in_frame(World& world, const Eigen::VectorXd& d, FrameMap frame_map) {
+void rebuild_in_frame(World& world, const Eigen::VectorXd& d, const StepContext* ctx,
+                      FrameMap frame_map) {
   std::vector<Mat2> maps(world.blocks.size(), Mat2::Identity());
   const RotationUpdate treatment = world.control.rotation_update;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
@@ -112,7 +95,8 @@ void rebuild_in_frame(World& world, const Eigen::VectorXd& d, FrameMap frame_map
     const Vec6 db = increments_of(b, d);
     b.translation += db.head<2>();
     if (places_by_polar(treatment, b)) {
-      const PolarStep p = polar_step(b, db);
+      const PolarStep p =
+          polar_step(b, db, solved_rotation_column(ctx, static_cast<int>(i), db[kR0]));
       b.last_local_increment = p.local_strain - b.local_strain;
       b.rotation = p.rotation;
       b.local_strain = p.local_strain;
@@ -151,7 +135,7 @@ void remember_rotation_increments(World& world, const Eigen::VectorXd& d) {
   }
 }
 
-void move_blocks(World& world, const Eigen::VectorXd& d) {
+void move_blocks(World& world, const Eigen::VectorXd& d, const StepContext* ctx) {
   switch (world.control.rotation_update) {
     case RotationUpdate::Original: {
       // Shi 1988: x += T(x - x0) d with the first-order rotation column (paper Eq. 2).
@@ -172,37 +156,64 @@ void move_blocks(World& world, const Eigen::VectorXd& d) {
       });
       return;
     case RotationUpdate::LocalFrame:  // Eq. 19, consistent: x = xc + R(r)(I + E^)(X - Xc)
-      rebuild_in_frame(world, d, frame_map);
+      rebuild_in_frame(world, d, ctx, frame_map);
       return;
     case RotationUpdate::LocalFrameAsPrinted:  // Eq. 19 as printed: x = xc + (R + E)(X - Xc)
-      rebuild_in_frame(world, d, frame_map_as_printed);
+      rebuild_in_frame(world, d, ctx, frame_map_as_printed);
       return;
     case RotationUpdate::SinVariable:  // T' d' with the step's T' (Eqs. 10-12)
       move_by_increments(world, d, sine_column_displacement);
       return;
     case RotationUpdate::FiniteRotation:  // local_frame's map; the step used the secant T
     case RotationUpdate::FiniteRotationPolar:  // deformable blocks: the step's own map, polar
-      rebuild_in_frame(world, d, frame_map);
+      rebuild_in_frame(world, d, ctx, frame_map);
       return;
   }
 }
 
 }  // namespace
 
+PolarStep polar_step(const Block& b, const Vec6& db, const Mat2& column) {
+  const Mat2 f = hencky_frame_map(b.rotation, b.local_strain);
+  const Mat2 after =
+      (Mat2::Identity() + db[kR0] * column + strain_tensor(db.segment<3>(kEx))) * f;
+  const PolarDecomposition p = polar_decomposition(after, b.rotation + db[kR0]);
+  return {p.angle, hencky_from_stretch(p.strain), after};
+}
+
+double stress_area(RotationUpdate treatment, const Block& b) {
+  return places_by_polar(treatment, b) ? b.initial_area : b.moments.area;
+}
+
+Vec3 stretch_strain(RotationUpdate treatment, const Block& b) {
+  return places_by_polar(treatment, b) ? stretch_from_hencky(b.local_strain) : b.local_strain;
+}
+
+Mat2 solved_rotation_column(const StepContext* ctx, int index, double r0) {
+  if (ctx == nullptr) return secant_rotation_column(r0);
+  return rotation_column(step_t(*ctx, index));
+}
+
 Vec3 block_frame_increment(const Block& b, const Vec6& db) {
   return strain_in_turned_frame(db.segment<3>(kEx), b.rotation + 0.5 * db[kR0]);
 }
 
-Vec3 block_frame_increment(RotationUpdate treatment, const Block& b, const Vec6& db) {
-  if (places_by_polar(treatment, b)) return polar_step(b, db).local_strain - b.local_strain;
+Vec3 block_frame_increment(RotationUpdate treatment, const Block& b, const Vec6& db,
+                           const Mat2* column) {
+  if (places_by_polar(treatment, b)) {
+    const Mat2 a = column != nullptr ? *column : secant_rotation_column(db[kR0]);
+    return polar_step(b, db, a).local_strain - b.local_strain;
+  }
   return block_frame_increment(b, db);
 }
 
-Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db) {
+Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db,
+                  const Mat2* column) {
   if (b.fixed) return b.vertices[k];
   if (places_by_polar(treatment, b)) {
+    const Mat2 a = column != nullptr ? *column : secant_rotation_column(db[kR0]);
     return b.initial_centroid + b.translation + db.head<2>() +
-           polar_step(b, db).map * (b.initial_vertices[k] - b.initial_centroid);
+           polar_step(b, db, a).map * (b.initial_vertices[k] - b.initial_centroid);
   }
   const Vec2 offset = b.vertices[k] - b.moments.centroid;
   switch (treatment) {
@@ -247,8 +258,8 @@ double max_displacement_share(const World& world, const Eigen::VectorXd& d) {
   return largest;
 }
 
-void update_configuration(World& world, const Eigen::VectorXd& d) {
-  move_blocks(world, d);
+void update_configuration(World& world, const Eigen::VectorXd& d, const StepContext* ctx) {
+  move_blocks(world, d, ctx);
   remember_rotation_increments(world, d);
 }
 

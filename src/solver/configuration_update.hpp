@@ -27,7 +27,11 @@ double max_displacement_share(const World& world, const Eigen::VectorXd& d);
 //     d holds r0 = asin of the solved unknown), strains added in the global frame;
 //   finite_rotation: as local_frame (the step itself used the secant rotation column).
 // Every treatment then records each block's r0 as its last_rotation_increment.
-void update_configuration(World& world, const Eigen::VectorXd& d);
+// finite_rotation_polar places its deformable blocks by the rotation column of the T each
+// was solved with (ctx's; without ctx, the secant column at the block's own r0, the exact
+// rotation), so that every point goes exactly to x + T d.
+void update_configuration(World& world, const Eigen::VectorXd& d,
+                          const StepContext* ctx = nullptr);
 
 // The step's strain increment db[ex, ey, gxy] (global frame) in block b's frame, turned by
 // the mid-step angle b.rotation + r0 / 2, for a block not yet updated (the update takes the
@@ -35,11 +39,43 @@ void update_configuration(World& world, const Eigen::VectorXd& d);
 Vec3 block_frame_increment(const Block& b, const Vec6& db);
 // The same for the given treatment: finite_rotation_polar's deformable blocks take the change
 // of the polar decomposition's strain over the step instead.
-Vec3 block_frame_increment(RotationUpdate treatment, const Block& b, const Vec6& db);
+// (`column`: the rotation column of the block's T, as update_configuration's; null: the
+// secant column at its own r0.)
+Vec3 block_frame_increment(RotationUpdate treatment, const Block& b, const Vec6& db,
+                           const Mat2* column = nullptr);
+
+// finite_rotation_polar, a free deformable block: the map the step applies to its present
+// shape, F' = (I + r0 a + dE) F, with F = R(r) exp(H) at the step's start (H its block-frame
+// Hencky strain), a the rotation column of the block's T (the secant column at r0 makes
+// I + r0 a = R(r0) exactly) and dE the global-frame strain increment; and the polar
+// decomposition F' = R(r') U': the block's rotation r' (nearest r + r0) and block-frame
+// Hencky strain H' = ln U' after the step (docs/large-strain.md).
+struct PolarStep {
+  double rotation = 0.0;
+  Vec3 local_strain = Vec3::Zero();  // H' = ln U'
+  Mat2 map = Mat2::Identity();       // F'
+};
+PolarStep polar_step(const Block& b, const Vec6& db, const Mat2& column);
+
+// The block-frame stretch U - I of block b (the Biot strain): its local_strain, which
+// finite_rotation_polar keeps as the Hencky strain ln U and the other treatments as U - I.
+Vec3 stretch_strain(RotationUpdate treatment, const Block& b);
+
+// The area block b's stress acts over in the step's strain columns and its strain energy
+// is counted over: its present area, the stress being Cauchy's; under
+// finite_rotation_polar a deformable block's initial area, its stress being the
+// Kirchhoff stress J s (J = area / initial area), the one that does work on the Hencky
+// strain (docs/large-strain.md).
+double stress_area(RotationUpdate treatment, const Block& b);
+
+// The rotation column block `index` was solved with: that of ctx's T; without ctx, the
+// secant column at r0.
+Mat2 solved_rotation_column(const StepContext* ctx, int index, double r0);
 
 // Where vertex k of block b will be after update_configuration with the block's increments
 // db, without moving anything (the same rule per treatment; tests check that the two agree).
-Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db);
+Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db,
+                  const Mat2* column = nullptr);
 
 // Stress from total strain (elastic, never added): s = s_initial + D e in the global frame,
 // or, for the local-frame treatments, s_initial + D e^ in the block frame turned to the

@@ -6,6 +6,7 @@
 
 #include "kinematics/block_matrices.hpp"
 #include "kinematics/frames.hpp"
+#include "solver/configuration_update.hpp"
 #include "solver/contact_assembly.hpp"
 
 namespace dda {
@@ -61,11 +62,14 @@ const Vec3& material_strain(const World& world, const Block& b) {
 }  // namespace
 
 double block_strain_energy(const World& world, const Block& b) {
-  if (!b.plastic) return 0.5 * b.moments.area * b.strain.dot(elastic_of(world, b) * b.strain);
+  // Over the area the stress acts over (stress_area: the initial one under
+  // finite_rotation_polar, whose stress is Kirchhoff's).
+  const double area = stress_area(world.control.rotation_update, b);
+  if (!b.plastic) return 0.5 * area * b.strain.dot(elastic_of(world, b) * b.strain);
   const Vec3 s0 = initial_stress_now(world, b);
   const Vec4 ds = stress4(b) - Vec4(s0[0], s0[1], initial_stress4(world, b)[2], s0[2]);
   const MaterialParameters& m = material_of(world, b);
-  return b.moments.area * complementary_density(ds, m.young, m.poisson);
+  return area * complementary_density(ds, m.young, m.poisson);
 }
 
 double contact_energy(const World& world, const std::vector<Contact>& contacts, double penalty) {
@@ -112,6 +116,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     const Vec6 db = d.segment<6>(b.first_dof);
     const Vec3 de = db.segment<3>(kEx);
     const double area = b.moments.area;
+    const double stressed = stress_area(world.control.rotation_update, b);
     // Base shaking: the d'Alembert force -m a_ground of the ground's frame does work on the
     // block's translation (solver/base_motion.hpp); zero without it.
     s.load_work -= density_now(world, b) * area * ctx.base_acceleration.dot(db.head<2>());
@@ -121,11 +126,11 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
       s.plastic_elastic_before[i] = block_strain_energy(world, b);
       s.plastic_stress_before[i] = material_stress(world, b);
       s.plastic_strain_before[i] = material_strain(world, b);
-      s.plastic_area_before[i] = b.moments.area;
+      s.plastic_area_before[i] = stressed;
     } else {
-      s.damping_dissipation += 0.5 * area * de.dot(elastic_of(world, b) * de);
+      s.damping_dissipation += 0.5 * stressed * de.dot(elastic_of(world, b) * de);
     }
-    s.load_work -= area * initial_stress_now(world, b).dot(de);
+    s.load_work -= stressed * initial_stress_now(world, b).dot(de);
     // The dynamic coefficient k carries k v0 into the step: (1 - k^2) of the kinetic energy
     // is removed before the step starts.
     const double k = ctx.dynamic_coefficient;
@@ -230,7 +235,8 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
     // The energy density's rise over the start area (plastic_elastic_before is the start
     // area's energy), not the area's change.
     const double elastic_rise =
-        area / b.moments.area * block_strain_energy(world, b) - step.plastic_elastic_before[i];
+        area / stress_area(world.control.rotation_update, b) * block_strain_energy(world, b) -
+        step.plastic_elastic_before[i];
     led.plastic_dissipation += area * (Vec3(stress[0], stress[1], stress[3]) - s0).dot(de) -
                                elastic_rise - implicit;
   }

@@ -76,13 +76,14 @@ std::vector<MaterialLinearization> start_linearization(const World& world) {
 Vec3 material_strain_after(const World& world, const Block& b, const Vec6& db) {
   const Vec3 increment = db.segment<3>(kEx);
   if (!keeps_block_frame(world.control.rotation_update)) return b.strain + increment;
-  // finite_rotation_polar: the strain its update will commit (the tangent in evaluate()
-  // still takes the start-angle turn, an approximation of this strain's derivative).
-  if (world.control.rotation_update == RotationUpdate::FiniteRotationPolar) {
-    return b.local_strain + block_frame_increment(world.control.rotation_update, b, db);
-  }
   // The start angle, as in evaluate(); the update adds the same increment at the mid-step
   // angle, a difference of r0/2 of the increment's turn, second order in the step.
+  // finite_rotation_polar's update commits the Hencky strain of the map the step applied
+  // instead, ln U', whose derivative with respect to the global increment is this turn up
+  // to O(|H|^2) (docs/large-strain.md): the step is linear in the block's strain, as for
+  // finite_rotation, and an elastic block's equations are those of a plastic block that
+  // does not yield; what the linearisation leaves, O(|H|^2 de + de^2), is committed with the
+  // strain and so starts the next step (never accumulated: the strain is total).
   return b.local_strain + strain_in_turned_frame(increment, b.rotation);
 }
 

@@ -184,8 +184,9 @@ void follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx
     const Block& b = world.blocks[i];
     if (b.fixed || b.rigid) continue;
     const Vec6 db = d.segment<6>(b.first_dof);
+    const Mat2 column = rotation_column(step_t(ctx, static_cast<int>(i)));
     ctx.spins[i] = Spin{db[kR0] / ctx.dt,
-                        block_frame_increment(world.control.rotation_update, b, db) / ctx.dt};
+                        block_frame_increment(world.control.rotation_update, b, db, &column) / ctx.dt};
   }
 }
 
@@ -672,23 +673,30 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
 
 // How deep the vertex of the open contact c ends the step inside the edge's block, by the
 // configuration update's own placement (0 if outside, or if it passes the edge's ends).
-double overshoot(const World& world, const Contact& c, const Eigen::VectorXd& d) {
+double overshoot(const World& world, const StepContext& ctx, const Contact& c,
+                 const Eigen::VectorXd& d) {
   const Block& bv = world.blocks[static_cast<std::size_t>(c.key.vertex_block)];
   const Block& be = world.blocks[static_cast<std::size_t>(c.key.edge_block)];
   const RotationUpdate treatment = world.control.rotation_update;
   const auto increments = [&d](const Block& b) {
     return b.fixed ? Vec6(Vec6::Zero()) : Vec6(d.segment<6>(b.first_dof));
   };
+  // The rotation columns each block was solved with (finite_rotation_polar places by them).
+  const Mat2 column_v = rotation_column(step_t(ctx, c.key.vertex_block));
+  const Mat2 column_e = rotation_column(step_t(ctx, c.key.edge_block));
   const std::size_t n = be.vertices.size();
   const std::size_t k = static_cast<std::size_t>(c.key.edge);
-  const Vec2 v = vertex_after(treatment, bv, static_cast<std::size_t>(c.key.vertex), increments(bv));
+  const Vec2 v = vertex_after(treatment, bv, static_cast<std::size_t>(c.key.vertex),
+                              increments(bv), &column_v);
   const EdgeProjection p = project_on_edge(
-      v, edge_frame(vertex_after(treatment, be, k, increments(be)),
-                    vertex_after(treatment, be, (k + 1) % n, increments(be))));
+      v, edge_frame(vertex_after(treatment, be, k, increments(be), &column_e),
+                    vertex_after(treatment, be, (k + 1) % n, increments(be), &column_e)));
   if (p.gap >= 0.0 || p.t < 0.0 || p.t > 1.0) return 0.0;
   // Behind the edge's line is not always inside (an acute corner): ask the polygon.
   Polygon after(n);
-  for (std::size_t i = 0; i < n; ++i) after[i] = vertex_after(treatment, be, i, increments(be));
+  for (std::size_t i = 0; i < n; ++i) {
+    after[i] = vertex_after(treatment, be, i, increments(be), &column_e);
+  }
   return contains_point(after, v) ? -p.gap : 0.0;
 }
 
@@ -722,7 +730,7 @@ std::optional<CutReason> check_step(const World& world, const StepContext& ctx,
   for (const Contact& c : world.contacts) {
     if (c.state.mode != ContactMode::Open || !(c.allowed_penetration > 0.0)) continue;
     deepest_overshoot = std::max(deepest_overshoot,
-                                 overshoot(world, c, d) / (kOvershootShare * c.allowed_penetration));
+                                 overshoot(world, ctx, c, d) / (kOvershootShare * c.allowed_penetration));
   }
   if (deepest_overshoot > 1.0) return CutReason::Overshoot;
   return std::nullopt;
@@ -764,7 +772,7 @@ void commit_step(World& world, const Eigen::VectorXd& d,
                  const StepContext& ctx, int iterations, RunStats& stats, StageClock& clock,
                  StepEnergy& energy_terms) {
   energy_terms = step_energy(world, world.contacts, d, ctx);
-  update_configuration(world, d);
+  update_configuration(world, d, &ctx);
   update_stresses(world);
   update_velocities(world, d, ctx);
   clock.lap(stats.stage_times.update);

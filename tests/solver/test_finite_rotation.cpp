@@ -272,7 +272,8 @@ TEST_CASE("finite_rotation places a strained block off the step's T by the incre
 namespace {
 
 // A triangle in the shear-band state of the test above, turned by `turned` as well, with the
-// state finite_rotation_polar keeps (rotation, Biot strain) and its vertices placed by it.
+// state finite_rotation_polar keeps (rotation, Hencky strain ln(I + total)) and its
+// vertices placed by it.
 World strained_triangle(RotationUpdate treatment, double turned, const Vec3& total) {
   Scene s = test::base_scene(1, 0.01);
   s.control.rotation_update = treatment;
@@ -280,8 +281,9 @@ World strained_triangle(RotationUpdate treatment, double turned, const Vec3& tot
   World w = make_world(s);
   Block& b = w.blocks[0];
   b.rotation = turned;
-  b.local_strain = total;
-  b.strain = strain_from_turned_frame(total, turned);
+  b.local_strain =
+      treatment == RotationUpdate::FiniteRotationPolar ? hencky_from_stretch(total) : total;
+  b.strain = strain_from_turned_frame(b.local_strain, turned);
   const Mat2 f = frame_map(turned, total);
   for (std::size_t k = 0; k < b.vertices.size(); ++k) {
     b.vertices[k] = b.initial_centroid + f * (b.initial_vertices[k] - b.initial_centroid);
@@ -327,10 +329,11 @@ TEST_CASE("finite_rotation_polar places a strained block where the step's T puts
       for (std::size_t k = 0; k < after.vertices.size(); ++k) {
         CHECK((after.vertices[k] - linear[k]).norm() < 1e-15);
         const Vec2 rebuilt = after.initial_centroid + after.translation +
-                             frame_map(after.rotation, after.local_strain) *
+                             hencky_frame_map(after.rotation, after.local_strain) *
                                  (after.initial_vertices[k] - after.initial_centroid);
-        // F' = R(r') U' to round-off of O(1) matrix entries times offsets of 0.03 m.
-        CHECK((rebuilt - linear[k]).norm() < 1e-15);
+        // F' = R(r') exp(ln U') to round-off of O(1) matrix entries times offsets of
+        // 0.03 m (the log and exp each a few ulps of U's O(1) entries).
+        CHECK((rebuilt - linear[k]).norm() < 2e-15);
       }
       // The rotation is continuous: near r + r0, off it only by the strain's spin.
       CHECK(std::abs(after.rotation - (turned + r0)) < 0.05);

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "kinematics/point_maps.hpp"
+#include "solver/configuration_update.hpp"
 #include "solver/run.hpp"
 #include "solver/world.hpp"
 #include "support/scene_builders.hpp"
@@ -35,7 +36,8 @@ inline AreaRun pinned_l_block_area(RotationUpdate treatment, double energy_toler
   AreaRun out;
   const RunStats stats = run(world, [&](const World& w, const RunStats&) {
     const Block& b = w.blocks[0];
-    const Mat2 stretch = Mat2::Identity() + strain_tensor(b.local_strain);
+    // U = I + E^, E^ the Biot strain (finite_rotation_polar keeps ln U: stretch_strain).
+    const Mat2 stretch = Mat2::Identity() + strain_tensor(stretch_strain(treatment, b));
     out.worst = std::max(out.worst, std::abs(b.moments.area - a0 * stretch.determinant()) / a0);
     out.largest_strain = std::max(out.largest_strain, b.local_strain.cwiseAbs().maxCoeff());
     out.largest_rotation = std::max(out.largest_rotation, std::abs(b.rotation));
