@@ -205,7 +205,7 @@ struct ControlSettings {
   // Share of the end-of-step velocity carried into the next step: 1 dynamic, 0 static
   // (velocities dropped each step). Range [0, 1].
   double dynamic_coefficient = 1.0;
-  RotationUpdate rotation_update = RotationUpdate::FiniteRotation;
+  RotationUpdate rotation_update = RotationUpdate::FiniteRotationPolar;
   // Penalty stiffness of pins (N/m per metre of thickness); nullopt means "auto"
   // (50 x the largest Young's modulus, Shi's usual g0; see README).
   std::optional<double> penalty;

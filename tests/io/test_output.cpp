@@ -213,7 +213,7 @@ TEST_CASE("summary.json holds the settings, run statistics and final blocks", "[
   CHECK(set["end_time"].is_null());
   CHECK(set["max_displacement_ratio"] == 0.01);
   CHECK(set["dynamic_coefficient"] == 1.0);
-  CHECK(set["rotation_update"] == "finite_rotation");
+  CHECK(set["rotation_update"] == "finite_rotation_polar");
   CHECK(set["penalty"] == 5e11);
   CHECK(set["penalty_rule"] == "auto");
   CHECK(set["output_every"] == 10);

@@ -673,7 +673,7 @@ TEST_CASE("optional keys take their documented defaults", "[scene][input]") {
   CHECK(*scene.control.end_time == 2.5);
   CHECK(scene.control.max_displacement_ratio == 0.01);
   CHECK(scene.control.dynamic_coefficient == 1.0);
-  CHECK(scene.control.rotation_update == dda::RotationUpdate::FiniteRotation);
+  CHECK(scene.control.rotation_update == dda::RotationUpdate::FiniteRotationPolar);
   CHECK_FALSE(scene.control.penalty.has_value());  // "auto"
   CHECK(scene.control.output_every == 10);
   CHECK(scene.control.max_open_close == 8);

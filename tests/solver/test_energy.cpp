@@ -10,6 +10,7 @@
 #include "support/contact_scenes.hpp"
 #include "io/scene_reader.hpp"
 #include "support/scene_builders.hpp"
+#include "solver/configuration_update.hpp"
 #include "solver/energy.hpp"
 #include "solver/run.hpp"
 #include "solver/step.hpp"
@@ -108,7 +109,10 @@ TEST_CASE("energy account: a block dropped on a floor creates no energy", "[ener
   // A 0.5 m square dropped 0.1 m onto a fixed floor, friction 30 degrees, dynamic; dt over a
   // factor 10. The impact's loss goes to damping; nothing may come out of nowhere.
   const double dt = GENERATE(0.002, 0.0002);
+  const RotationUpdate rotation =
+      GENERATE(RotationUpdate::FiniteRotation, RotationUpdate::FiniteRotationPolar);
   Scene s = test::base_scene(0, dt);
+  s.control.rotation_update = rotation;
   s.control.steps.reset();
   s.control.end_time = 0.6;
   s.control.max_displacement_ratio = 0.01;
@@ -120,7 +124,8 @@ TEST_CASE("energy account: a block dropped on a floor creates no energy", "[ener
   World w = make_world(s);
   const double drop = mass_of(w, w.blocks[1]) * 9.81 * 0.1;
   const RunStats stats = run_quietly(w);
-  INFO(stats.message << " dt " << dt << ", remainder max " << w.energy.remainder_max);
+  INFO(stats.message << " dt " << dt << ", " << rotation_update_name(rotation)
+                     << ", remainder max " << w.energy.remainder_max);
   REQUIRE_FALSE(stats.diverged);
   // The gain never exceeds round-off, and the block comes to rest on the floor. Round-off:
   // the account's terms are up to ~10 times the drop's energy (the potential energy from
@@ -128,7 +133,15 @@ TEST_CASE("energy account: a block dropped on a floor creates no energy", "[ener
   // few units of 1.1e-16 of them: ~1e-11 of the drop's energy if they all added up; 1e-9
   // (measured 3.4e-12 of it at dt 2 ms, 6.9e-13 at 0.2 ms). (1e-3 of it until 2026-11-25,
   // for the re-detection jumps docs/energy-balance.md describes; this drop shows none.)
-  CHECK(w.energy.remainder_max < 1e-9 * drop);
+  // finite_rotation_polar (the default) commits the Hencky strain of the map the step
+  // applied, ln U', where the step was linear in the strain increment de: the two differ
+  // by de^2 / 2, and the account books s . (ln U' - ln U) for work s . de. At dt 2 ms the
+  // impact strains the block by 4.4e-4 in one step at 5e5 Pa, A s de^2 / 2 ~ 0.012 J, 1.9e-5
+  // of the drop's energy (measured 0.0123 J, at that one step; finite_rotation's account
+  // is off by -0.0135 J there, a loss the gain check does not see). At 0.2 ms the impact
+  // spreads over ten steps, each de ten times smaller: round-off (measured 4.5e-13 J).
+  const double bound = rotation == RotationUpdate::FiniteRotationPolar && dt > 1e-3 ? 4e-5 : 1e-9;
+  CHECK(w.energy.remainder_max < bound * drop);
   CHECK(scene_energy(w).kinetic < 1e-3 * drop);
   CHECK(w.energy.damping_dissipation > 0.5 * drop);
 }
@@ -208,7 +221,10 @@ TEST_CASE("energy account: plastic dissipation of a hardening Mohr-Coulomb soil 
   const double density = (sig[0] * sig[0] + sig[1] * sig[1] + sig[2] * sig[2] -
                           2 * nu * (sig[0] * sig[1] + sig[1] * sig[2] + sig[2] * sig[0]) +
                           2 * (1 + nu) * sig[3] * sig[3]) / (2 * e);
-  CHECK_THAT(block_strain_energy(w, soil), WithinRel(soil.moments.area * density, 1e-12));
+  // (Over the area the stress acts on: the initial one under the default
+  // finite_rotation_polar, whose stress is Kirchhoff's; configuration_update.hpp.)
+  CHECK_THAT(block_strain_energy(w, soil),
+             WithinRel(stress_area(w.control.rotation_update, soil) * density, 1e-12));
 }
 
 TEST_CASE("energy guard: a run that creates energy stops with exit 3 and says so", "[energy][cli]") {
@@ -304,8 +320,12 @@ TEST_CASE("energy guard: energy lost without a cause is reported, and stops the 
       nlohmann::json::parse(dda::test::read_file(dir.path / "stop" / "summary.json"));
   CHECK(summary["diverged"].get<bool>());
   CHECK(summary["settings"]["energy_losses"] == "stop");
-  // It stops at the step that lost the energy, the same step the full run reports.
-  CHECK(summary["steps"].get<int>() == e["remainder_min_step"].get<int>());
+  // It stops at the step whose loss first passed the tolerance: the step the contact opens,
+  // where the full run's loss is already beyond it (its deepest point, one step later
+  // under finite_rotation_polar, or the same step, is at most a step on).
+  const int stop_step = summary["steps"].get<int>();
+  CHECK(stop_step <= e["remainder_min_step"].get<int>());
+  CHECK(stop_step >= e["remainder_min_step"].get<int>() - 1);
 }
 
 TEST_CASE("energy account: a Mohr-Coulomb block that never yields books no plastic work",
