@@ -48,7 +48,7 @@ struct FootingCase {
   double time_step = 0.01;   // s
   double max_displacement_ratio = 0.05;
   double penalty_factor = 50.0;  // penalty = this x E (50: the "auto" penalty)
-  // control.rotation_update by its scene name; empty: the scene default (finite_rotation).
+  // control.rotation_update by its scene name; empty: the scene default (finite_rotation_polar).
   std::string rotation_update;
   std::string label() const;  // e.g. "crossed_h0.5_n150"
 };

@@ -38,7 +38,7 @@ constexpr const char* kUsage =
     "                uniform (one, all the same way), both (crossed and diagonal) or all\n"
     "  --phi DEG     the soil's friction angle (= dilation angle: associated), default 0 (Tresca)\n"
     "  --penalty F   contact and pin penalty F x E (default 50, Shi's auto)\n"
-    "  --rotation R  control.rotation_update (default the scene's, finite_rotation)\n"
+    "  --rotation R  control.rotation_update (default the scene's, finite_rotation_polar)\n"
     "  --jobs N      runs at once (default 1)\n";
 
 std::vector<double> numbers(const std::string& text) {
