@@ -1,7 +1,10 @@
 // Scene energy totals against closed forms.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -379,5 +382,120 @@ TEST_CASE("energy account: a Mohr-Coulomb block that never yields books no plast
     if (std::string(treatment) != "finite_rotation_polar") {
       CHECK(std::abs(p.energy.remainder - e.energy.remainder) < 1e-3 * std::abs(e.energy.remainder));
     }
+  }
+}
+
+namespace {
+
+// A plastic block in an impact (issue 27, item 8), run under the default treatment: the
+// largest gain and loss of its energy account, the least plastic dissipation a step
+// booked, the plastic dissipation at the end and the kinetic energy left.
+struct ImpactRun {
+  bool diverged = false;
+  std::string message;
+  double gain = 0.0, loss = 0.0, scale = 0.0;
+  double least_plastic_step = 0.0;
+  double plastic = 0.0;
+  double kinetic_end = 0.0;
+};
+
+ImpactRun run_impact(const std::string& blocks, const std::string& soil, double dynamic,
+                     double dt, double end_time, double joint_friction) {
+  std::ostringstream text;
+  text << R"({"gravity": [0, -9.81], "plane": "strain",
+    "control": {"time_step": )" << dt << R"(, "end_time": )" << end_time
+       << R"(, "dynamic_coefficient": )" << dynamic << R"(},
+    "materials": {"rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25},
+                  "weight": {"model": "elastic", "density": 20000, "young": 1e9, "poisson": 0.25},
+                  "soil": )" << soil << R"(},
+    "joint_materials": {"default": {"friction_angle": )" << joint_friction
+       << R"(, "cohesion": 0, "tensile_strength": 0}},
+    "blocks": [{"vertices": [[-1, -1], [3, -1], [3, 0], [-1, 0]], "material": "rock", "fixed": true}, )"
+       << blocks << "]}";
+  World w = make_world(parse_scene_text(text.str(), "impact.json"));
+  ImpactRun out;
+  double plastic_before = 0.0;
+  out.least_plastic_step = std::numeric_limits<double>::infinity();
+  const RunStats stats = run(w, [&](const World& now, const RunStats&) {
+    out.least_plastic_step =
+        std::min(out.least_plastic_step, now.energy.plastic_dissipation - plastic_before);
+    plastic_before = now.energy.plastic_dissipation;
+    return true;
+  });
+  out.diverged = stats.diverged;
+  out.message = stats.message;
+  out.gain = w.energy.remainder_max;
+  out.loss = w.energy.remainder_min;
+  out.scale = w.energy.scale;
+  out.plastic = w.energy.plastic_dissipation;
+  out.kinetic_end = scene_energy(w).kinetic;
+  return out;
+}
+
+// c = 2 kPa, phi 30, psi 0, tension cut-off 0: yields on impact, never in tension.
+constexpr const char* kWeakSoil =
+    R"({"model": "mohr_coulomb", "density": 2000, "young": 5e7, "poisson": 0.3, "cohesion": 2000,
+        "friction_angle": 30, "dilation_angle": 0, "tensile_strength": 0})";
+// scenes/plastic_column.json's soil: c = 20 kPa hardening to 60 kPa at eps_p 0.01,
+// associated (phi = psi = 30): under the 98.1 kPa weight it yields and hardens until
+// 2 c sqrt(N) carries it.
+constexpr const char* kHardeningSoil =
+    R"({"model": "mohr_coulomb", "density": 20, "young": 5e7, "poisson": 0.3, "cohesion": 2e4,
+        "friction_angle": 30, "dilation_angle": 30, "hardening": [[0, 2e4], [0.01, 6e4]]})";
+
+}  // namespace
+
+TEST_CASE("energy account: plastic blocks in impacts come to rest with plastic dissipation "
+          "that never falls and an account that closes",
+          "[energy][plastic]") {
+  // Under the default finite_rotation_polar (docs/large-strain.md); each case yields (its
+  // plastic dissipation ends above zero). Bounds, against the run's energy scale, are about
+  // three times what was measured (2026-11-27): the gains are the Hencky strain's
+  // second-order term of the steps with the largest strain increments (the impacts), the
+  // loss is the wall's, a contact solved open over the step it opens in
+  // (docs/energy-balance.md, "Losses"). A step's plastic dissipation falls below zero by
+  // round-off only (measured at most 2e-12 J against thousands booked; bound 1e-9 of the
+  // scale).
+  struct Case {
+    const char* name;
+    std::string blocks;
+    const char* soil;
+    double dynamic, dt, end_time, joint_friction;
+    double gain_bound, loss_bound;  // shares of the scale
+  };
+  const Case cases[] = {
+      // Dropped 0.1 m: gain 1.87 J/m of 39 240 (4.8e-5), loss 0.15 J/m (3.9e-6).
+      {"dropped 0.1 m", R"({"vertices": [[0, 0.1], [1, 0.1], [1, 1.1], [0, 1.1]], "material": "soil"})",
+       kWeakSoil, 1.0, 0.002, 1.0, 30.0, 1.5e-4, 1.5e-5},
+      // Thrown at 3 m/s against a fixed wall 0.5 m away, standing on the floor: gain 0.70 J/m
+      // (1.8e-5), loss 96.9 J/m (2.5e-3) as it rebounds.
+      {"thrown against a wall",
+       R"({"vertices": [[2, 0], [3, 0], [3, 2], [2, 2]], "material": "rock", "fixed": true},
+          {"vertices": [[0.5, 0], [1.5, 0], [1.5, 1], [0.5, 1]], "material": "soil", "velocity": [3, 0, 0]})",
+       kWeakSoil, 1.0, 0.002, 1.5, 30.0, 6e-5, 7.5e-3},
+      // Crushed by a 98.1 kN/m block set on it with gravity at once, frictionless joints,
+      // dynamic: gain 0.12 J/m of 196 592 (6.1e-7); static: 0.0125 J/m (6.4e-8).
+      {"crushed, dynamic",
+       R"({"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "soil"},
+          {"vertices": [[0, 1], [1, 1], [1, 1.5], [0, 1.5]], "material": "weight"})",
+       kHardeningSoil, 1.0, 0.002, 3.0, 0.0, 2e-6, 1e-9},
+      {"crushed, static",
+       R"({"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "soil"},
+          {"vertices": [[0, 1], [1, 1], [1, 1.5], [0, 1.5]], "material": "weight"})",
+       kHardeningSoil, 0.0, 0.01, 3.0, 0.0, 2e-7, 1e-9},
+  };
+  for (const Case& c : cases) {
+    const ImpactRun r = run_impact(c.blocks, c.soil, c.dynamic, c.dt, c.end_time, c.joint_friction);
+    INFO(c.name << ": " << r.message << "; gain " << r.gain << ", loss " << r.loss << " of scale "
+                << r.scale << "; plastic " << r.plastic << " (least step "
+                << r.least_plastic_step << "); kinetic at the end " << r.kinetic_end);
+    REQUIRE_FALSE(r.diverged);
+    CHECK(r.plastic > 1.0);  // it yielded (J/m; 5.7 to 1570 measured)
+    CHECK(r.least_plastic_step >= -1e-9 * r.scale);
+    CHECK(r.gain <= c.gain_bound * r.scale);
+    CHECK(r.loss >= -c.loss_bound * r.scale);
+    // At rest: what still moves at the end is below 1e-6 of the scale, a criterion, not an
+    // error bound (measured at most 4e-10).
+    CHECK(r.kinetic_end <= 1e-6 * r.scale);
   }
 }
