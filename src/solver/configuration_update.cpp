@@ -65,9 +65,13 @@ void move_by_increments(World& world, const Eigen::VectorXd& d, Displacement dis
 // r0 x the increment; the mid angle leaves r0^2 x the increment and is symmetric in time.
 double mid_step_frame_angle(const Block& b, const Vec6& db) { return b.rotation - 0.5 * db[kR0]; }
 
-// The step's strain increment in the block frame (paper Eq. 17, sign corrected).
-Vec3 local_increment(const Block& b, const Vec6& db) {
-  return strain_in_turned_frame(db.segment<3>(kEx), mid_step_frame_angle(b, db));
+// The step's strain increment in the block frame (paper Eq. 17, sign corrected), for a
+// block whose rotation the update has advanced: at the mid-step angle, or under `paper` at
+// the end-of-step angle the paper prints.
+Vec3 local_increment(RotationUpdate treatment, const Block& b, const Vec6& db) {
+  const double angle =
+      treatment == RotationUpdate::Paper ? b.rotation : mid_step_frame_angle(b, db);
+  return strain_in_turned_frame(db.segment<3>(kEx), angle);
 }
 
 bool places_by_polar(RotationUpdate treatment, const Block& b) {
@@ -104,7 +108,7 @@ void rebuild_in_frame(World& world, const Eigen::VectorXd& d, const StepContext*
       maps[i] = p.map;
     } else {
       b.rotation += db[kR0];
-      b.last_local_increment = local_increment(b, db);
+      b.last_local_increment = local_increment(treatment, b, db);
       b.local_strain += b.last_local_increment;
       b.strain = strain_from_turned_frame(b.local_strain, b.rotation);
       maps[i] = frame_map(b.rotation, b.local_strain);
@@ -156,6 +160,7 @@ void move_blocks(World& world, const Eigen::VectorXd& d, const StepContext* ctx)
       });
       return;
     case RotationUpdate::LocalFrame:  // Eq. 19, consistent: x = xc + R(r)(I + E^)(X - Xc)
+    case RotationUpdate::Paper:       // the same, the increment turned by the end angle
       rebuild_in_frame(world, d, ctx, frame_map);
       return;
     case RotationUpdate::LocalFrameAsPrinted:  // Eq. 19 as printed: x = xc + (R + E)(X - Xc)
@@ -200,6 +205,9 @@ Vec3 block_frame_increment(const Block& b, const Vec6& db) {
 
 Vec3 block_frame_increment(RotationUpdate treatment, const Block& b, const Vec6& db,
                            const Mat2* column) {
+  if (treatment == RotationUpdate::Paper) {
+    return strain_in_turned_frame(db.segment<3>(kEx), b.rotation + db[kR0]);
+  }
   if (places_by_polar(treatment, b)) {
     const Mat2 a = column != nullptr ? *column : secant_rotation_column(db[kR0]);
     return polar_step(b, db, a).local_strain - b.local_strain;
@@ -225,11 +233,12 @@ Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const
     case RotationUpdate::LocalFrame:
     case RotationUpdate::LocalFrameAsPrinted:
     case RotationUpdate::FiniteRotation:
-    case RotationUpdate::FiniteRotationPolar: {  // (its rigid blocks)
+    case RotationUpdate::FiniteRotationPolar:  // (its rigid blocks)
+    case RotationUpdate::Paper: {
       // rebuild_in_frame's rule: the step's r0 and strain increment (turned by the
-      // mid-step angle) added, then x = xc + A (X - Xc).
+      // mid-step angle, or the end angle under `paper`) added, then x = xc + A (X - Xc).
       const double rotation = b.rotation + db[kR0];
-      const Vec3 local_strain = b.local_strain + block_frame_increment(b, db);
+      const Vec3 local_strain = b.local_strain + block_frame_increment(treatment, b, db);
       const Mat2 a = treatment == RotationUpdate::LocalFrameAsPrinted
                          ? frame_map_as_printed(rotation, local_strain)
                          : frame_map(rotation, local_strain);

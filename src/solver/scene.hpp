@@ -34,6 +34,11 @@ enum class RotationUpdate {
   // applied, F' = (R(r0) + dE) F, and its rotation and block-frame (Biot) strain taken from
   // the polar decomposition F' = R(r) U (docs/polar-placement-prototype.md). A prototype.
   FiniteRotationPolar,
+  // The paper's method as printed (Sections 3-4): local_frame with each step's strain
+  // increment turned into the block frame by the end-of-step angle r + r0 (Eq. 17, its sign
+  // corrected) instead of the mid-step angle, and Shi's inertia unless control.inertia
+  // asks for another (the paper keeps Shi's mass matrix). For reproducing its tables.
+  Paper,
 };
 
 using RotationUpdateName = EnumName<RotationUpdate>;
@@ -48,6 +53,7 @@ inline constexpr RotationUpdateName kRotationUpdateNames[] = {
     {RotationUpdate::LocalFrameAsPrinted, "local_frame_as_printed"},
     {RotationUpdate::FiniteRotation, "finite_rotation"},
     {RotationUpdate::FiniteRotationPolar, "finite_rotation_polar"},
+    {RotationUpdate::Paper, "paper"},
 };
 
 inline std::string_view rotation_update_name(RotationUpdate u) {
@@ -58,7 +64,8 @@ inline std::string_view rotation_update_name(RotationUpdate u) {
 // (paper Section 3) rather than adding strain increments in the global frame (Eq. 13).
 inline bool keeps_block_frame(RotationUpdate u) {
   return u == RotationUpdate::LocalFrame || u == RotationUpdate::LocalFrameAsPrinted ||
-         u == RotationUpdate::FiniteRotation || u == RotationUpdate::FiniteRotationPolar;
+         u == RotationUpdate::FiniteRotation || u == RotationUpdate::FiniteRotationPolar ||
+         u == RotationUpdate::Paper;
 }
 
 // Treatments whose T carries the secant rotation column at the step's own r0, iterated with

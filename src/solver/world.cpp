@@ -31,10 +31,13 @@ World make_world(const Scene& scene) {
   world.plane = scene.plane;
   world.control = scene.control;
   world.penalty = resolve_penalty(scene);
-  world.pseudo_rigid = scene.control.inertia.value_or(
-                           keeps_block_frame(scene.control.rotation_update) ? Inertia::PseudoRigid
-                                                                            : Inertia::Shi) ==
-                       Inertia::PseudoRigid;
+  // "auto": the pseudo-rigid inertia where a block frame is kept, except for the paper's
+  // method as printed, which keeps Shi's.
+  const bool frame_inertia = keeps_block_frame(scene.control.rotation_update) &&
+                             scene.control.rotation_update != RotationUpdate::Paper;
+  world.pseudo_rigid =
+      scene.control.inertia.value_or(frame_inertia ? Inertia::PseudoRigid : Inertia::Shi) ==
+      Inertia::PseudoRigid;
 
   for (const Material& mat : scene.materials) {
     WorldMaterial m{mat.parameters, Mat3::Zero()};

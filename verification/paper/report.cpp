@@ -66,7 +66,7 @@ std::string full_report(const Options& opt, const AllResults& r) {
         "swinging_diagonals.csv, swinging_strains.csv, swinging_energy.csv, "
         "swinging_summary.csv; speed_spin.csv, speed_pendulum.csv, speed_incline.csv, "
         "speed_plastic.csv; rotation_spin.csv, rotation_swing.csv, rotation_swing_summary.csv, "
-        "rotation_table3.csv, rotation_gain.csv, rotation_pendulum.csv; PNGs: falling_scene.png, "
+        "rotation_table3.csv, rotation_gain.csv, rotation_damping.csv, rotation_pendulum.csv; PNGs: falling_scene.png, "
         "falling_area_error.png, swinging_energy.png, speed_error.png, speed_incline.png, "
         "speed_plastic.png, rotation_stress.png.\n\n";
   md << availability(opt, r);

@@ -43,14 +43,17 @@ struct SwingStress {
   std::vector<std::pair<int, double>> table_steps;
 };
 
-// The energy gain of the paper's swinging octagon, max over [0, T] of (E - E0 - E_pin) /
-// (m g l), and its largest swing, for one treatment at one dt and pin stiffness.
+// The energy gain of the paper's swinging octagon, max over [0, T] of (E - E0) / (m g l)
+// with E the block's kinetic, potential and strain energy (the pin spring's left out), and
+// its largest swing, for one treatment at one dt, pin stiffness and dynamic coefficient.
 struct GainPoint {
   std::string treatment;
   double dt = 0.0, penalty = 0.0;
+  double dynamic = 1.0;    // control.dynamic_coefficient
   RunResult result;
   double gain = 0.0;       // share of m g l
   double max_swing = 0.0;  // rad
+  Vec3 strain_end = Vec3::Zero();  // the block's global strain at the end (Table 3's)
 };
 
 // The paper's octagon as a rigid pendulum: CVODE's period and swing against each
@@ -66,6 +69,10 @@ struct RotationStudy {
   std::vector<SpinStress> spin;
   std::vector<SwingStress> swing;
   std::vector<GainPoint> gain_dt, gain_penalty;
+  // The paper's method as printed (`paper`: Shi's inertia, the end-of-step angle) beside
+  // local_frame and the default, over the paper's 5000 steps at dt 0.02 s, against the
+  // dynamic coefficient the paper does not state.
+  std::vector<GainPoint> gain_damping;
   double gain_time = 0.0;             // T of the gain study (s)
   double reference_period = 0.0;      // CVODE (s)
   double reference_first_swing = 0.0; // rad (pi: released at rest, horizontal)
@@ -74,7 +81,7 @@ struct RotationStudy {
 
 RotationStudy run_rotation_study(const Options& opt);
 // rotation_spin.csv, rotation_swing.csv (every step), rotation_swing_summary.csv,
-// rotation_table3.csv, rotation_gain.csv, rotation_pendulum.csv.
+// rotation_table3.csv, rotation_gain.csv, rotation_damping.csv, rotation_pendulum.csv.
 void write_rotation_csv(const Options& opt, const RotationStudy& s);
 std::string rotation_report(const Options& opt, const RotationStudy& s);
 

@@ -32,6 +32,10 @@ inline const std::vector<Treatment>& all_treatments() {
       {"local_frame", RotationUpdate::LocalFrame, "Proposed"},
       {"local_frame_as_printed", RotationUpdate::LocalFrameAsPrinted, ""},
       {"finite_rotation", RotationUpdate::FiniteRotation, ""},
+      // The paper's method as printed (Shi's inertia, the end-of-step angle) and this code's
+      // default (docs/large-strain.md).
+      {"paper", RotationUpdate::Paper, ""},
+      {"finite_rotation_polar", RotationUpdate::FiniteRotationPolar, ""},
   };
   return kAll;
 }
