@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "kinematics/polygon.hpp"
 
@@ -45,6 +46,24 @@ bool nearest_edge(const PolygonFeatures& ef, int e, const Vec2& p, double depth)
   return true;
 }
 
+// A vertex with a covered edge on either side is not a corner of its fixed assembly.
+bool at_covered_edge(const PolygonFeatures& f, int v) {
+  const int n = static_cast<int>(f.size());
+  return f[static_cast<std::size_t>(v)].covered || f[static_cast<std::size_t>(wrap(v - 1, n))].covered;
+}
+
+// Whether edge `e` lies on the antiparallel face `f` over its whole length.
+bool covered_by(const EdgeFrame& e, const EdgeFrame& f) {
+  if (e.tangent.dot(f.tangent) > -(1.0 - kWedgeTolerance)) return false;
+  const double tol = kCoveredShare * e.length;
+  if (std::abs((f.start - e.start).dot(e.normal)) > tol ||
+      std::abs((f.end - e.start).dot(e.normal)) > tol) {
+    return false;
+  }
+  const double s0 = (f.start - e.start).dot(e.tangent), s1 = (f.end - e.start).dot(e.tangent);
+  return std::min(s0, s1) <= tol && std::max(s0, s1) >= e.length - tol;
+}
+
 bool in_vertex_pair(const std::vector<VertexPair>& pairs, int va, int vb) {
   return std::any_of(pairs.begin(), pairs.end(),
                      [&](const VertexPair& p) { return p.va == va && p.vb == vb; });
@@ -59,8 +78,9 @@ void vertex_to_edge(const Polygon& vp, const PolygonFeatures& vf, int vblock, co
   const int nv = static_cast<int>(vp.size());
   const int ne = static_cast<int>(ep.size());
   for (int v = 0; v < nv; ++v) {
-    if (!vf[static_cast<std::size_t>(v)].convex) continue;
+    if (!vf[static_cast<std::size_t>(v)].convex || at_covered_edge(vf, v)) continue;
     for (int e = 0; e < ne; ++e) {
+      if (ef[static_cast<std::size_t>(e)].covered) continue;
       const int e_end = wrap(e + 1, ne);
       const bool paired_start = v_is_a ? in_vertex_pair(pairs, v, e) : in_vertex_pair(pairs, e, v);
       const bool paired_end = v_is_a ? in_vertex_pair(pairs, v, e_end) : in_vertex_pair(pairs, e_end, v);
@@ -107,7 +127,7 @@ void vertex_to_edge(const Polygon& vp, const PolygonFeatures& vf, int vblock, co
 // angles of the two wedges, df05 in ntdda). Ties (within round-off) go to the first in a
 // fixed order, so that the choice does not flicker in face-to-face stacks. If no edge passes
 // the wedge test, the squarest one is taken.
-ContactCandidate resolve_convex_pair(const Polygon& a, const PolygonFeatures& fa, int ia,
+std::optional<ContactCandidate> resolve_convex_pair(const Polygon& a, const PolygonFeatures& fa, int ia,
                                      const Polygon& b, const PolygonFeatures& fb, int ib,
                                      const VertexPair& pair) {
   const int na = static_cast<int>(a.size());
@@ -130,17 +150,27 @@ ContactCandidate resolve_convex_pair(const Polygon& a, const PolygonFeatures& fa
       option(a, fa, ia, pair.va, fb, ib, wrap(pair.vb - 1, nb)),
       option(a, fa, ia, pair.va, fb, ib, pair.vb)};
   constexpr double kTie = 1e-12;  // m: gaps equal up to the round-off of O(1) coordinates
+  // Covered edges, and vertices at them entering the other block, are no options
+  // (mark_covered_edges).
+  const auto allowed = [&](const Option& o) {
+    const bool v_is_a = o.contact.vertex_block == ia;
+    const PolygonFeatures& vf = v_is_a ? fa : fb;
+    const PolygonFeatures& ef = v_is_a ? fb : fa;
+    return !ef[static_cast<std::size_t>(o.contact.edge)].covered &&
+           !at_covered_edge(vf, o.contact.vertex);
+  };
   const Option* best = nullptr;
   for (const Option& o : options) {
-    if (o.score < -kWedgeTolerance) continue;
+    if (o.score < -kWedgeTolerance || !allowed(o)) continue;
     if (best == nullptr || o.gap > best->gap + kTie) best = &o;
   }
   if (best == nullptr) {
-    best = &options[0];
     for (const Option& o : options) {
-      if (o.score > best->score) best = &o;
+      if (!allowed(o)) continue;
+      if (best == nullptr || o.score > best->score) best = &o;
     }
   }
+  if (best == nullptr) return std::nullopt;
   return best->contact;
 }
 
@@ -168,7 +198,9 @@ ContactCandidate resolve_convex_pair(const Polygon& a, const PolygonFeatures& fa
 void reflex_pair_contacts(const PolygonFeatures& vf, int vblock, int v, const PolygonFeatures& ef,
                           int eblock, int r, std::vector<ContactCandidate>& out) {
   const int ne = static_cast<int>(ef.size());
+  if (at_covered_edge(vf, v)) return;
   for (const int e : {wrap(r - 1, ne), r}) {  // the edge ending at r, then the one leaving it
+    if (ef[static_cast<std::size_t>(e)].covered) continue;
     const Vec2& normal = ef[static_cast<std::size_t>(e)].edge.normal;
     if (wedge_score(vf, v, normal) < -kCandidateWedgeTolerance) continue;
     out.push_back({vblock, v, eblock, e, true});
@@ -188,7 +220,7 @@ void vertex_pair_contacts(const Polygon& a, const PolygonFeatures& fa, int ia, c
   const bool a_convex = fa[static_cast<std::size_t>(pair.va)].convex;
   const bool b_convex = fb[static_cast<std::size_t>(pair.vb)].convex;
   if (a_convex && b_convex) {
-    out.push_back(resolve_convex_pair(a, fa, ia, b, fb, ib, pair));
+    if (const auto c = resolve_convex_pair(a, fa, ia, b, fb, ib, pair)) out.push_back(*c);
   } else if (b_convex) {
     reflex_pair_contacts(fb, ib, pair.vb, fa, ia, pair.va, out);
   } else if (a_convex) {
@@ -246,6 +278,15 @@ void polygon_features(const Polygon& poly, PolygonFeatures& out) {
     k.to_next = (poly[wrap(i + 1, n)] - poly[i]).normalized();
     k.half_shortest_edge = half_shortest_edge_at(poly, i);
     k.convex = is_convex_vertex(poly, i);
+  }
+}
+
+void mark_covered_edges(PolygonFeatures& fa, PolygonFeatures& fb) {
+  for (VertexFeatures& ka : fa) {
+    for (VertexFeatures& kb : fb) {
+      if (covered_by(ka.edge, kb.edge)) ka.covered = true;
+      if (covered_by(kb.edge, ka.edge)) kb.covered = true;
+    }
   }
 }
 

@@ -98,6 +98,10 @@ void detect_contacts(const World& world, std::vector<Contact>& contacts, Detecti
   // every pair is between fixed blocks needs none, but they cost little.
   cache.features.resize(n);
   for (std::size_t i = 0; i < n; ++i) polygon_features(world.blocks[i].vertices, cache.features[i]);
+  // Fixed blocks side by side: the faces they share are not surfaces (mark_covered_edges).
+  for (const auto& [i, j] : cache.close) {
+    if (both_fixed(world, i, j)) mark_covered_edges(cache.features[i], cache.features[j]);
+  }
 
   cache.candidates.clear();
   for (const auto& [i, j] : cache.close) {

@@ -889,3 +889,57 @@ TEST_CASE("face shares: a vertex carries half of the overlap of its face with th
   const Polygon wedge{{0, 0}, {1, 1}, {-1, 1}};
   CHECK(face_shares(wedge, 0, {5, 0}, {-5, 0}).count == 0);
 }
+
+TEST_CASE("a corner sliding across the joint of two fixed blocks meets the next top, not "
+          "its covered side", "[contact][covered]") {
+  // Two fixed unit squares side by side, their shared faces at x = 1; a block slides along
+  // their top with its bottom face 1e-7 m below it (the penalty's penetration) and its
+  // leading corner 1e-4 m before the joint. The right square's left face is covered by the
+  // left square's right face (mark_covered_edges), so the corner's contact with the right
+  // square is on its top edge (edge 2); unmarked, the least-penetration rule puts it on the
+  // left face (edge 3), a step 1e-7 m high that stops the block.
+  const Polygon left{{0.0, -1.0}, {1.0, -1.0}, {1.0, 0.0}, {0.0, 0.0}};
+  const Polygon right{{1.0, -1.0}, {2.0, -1.0}, {2.0, 0.0}, {1.0, 0.0}};
+  const double x1 = 1.0 - 1e-4, y0 = -1e-7;
+  const Polygon slider{{x1 - 0.5, y0}, {x1, y0}, {x1, 0.5}, {x1 - 0.5, 0.5}};
+  PolygonFeatures fl, fr, fs;
+  polygon_features(left, fl);
+  polygon_features(right, fr);
+  polygon_features(slider, fs);
+  const auto contacts_with_right = [&](const PolygonFeatures& f_right) {
+    std::vector<ContactCandidate> out;
+    find_contacts(right, f_right, 1, slider, fs, 2, 0.01, out);
+    std::vector<int> edges;
+    for (const ContactCandidate& c : out) {
+      if (c.vertex_block == 2 && c.vertex == 1 && c.edge_block == 1) edges.push_back(c.edge);
+    }
+    return edges;
+  };
+  CHECK(contacts_with_right(fr) == std::vector<int>{3});  // the catch, unmarked
+  mark_covered_edges(fl, fr);
+  CHECK(fr[3].covered);   // the right square's left face
+  CHECK(fl[1].covered);   // the left square's right face
+  CHECK_FALSE(fr[2].covered);
+  CHECK_FALSE(fl[2].covered);
+  CHECK(contacts_with_right(fr) == std::vector<int>{2});
+  // The right square's corner at the joint no longer enters the slider's faces either.
+  std::vector<ContactCandidate> out;
+  find_contacts(right, fr, 1, slider, fs, 2, 0.01, out);
+  for (const ContactCandidate& c : out) CHECK_FALSE(c.vertex_block == 1);
+}
+
+TEST_CASE("a face covered only in part, or offset, stays a surface", "[contact][covered]") {
+  // A taller right neighbour covers the left square's side whole; a shorter one covers it
+  // only in part (the rest is a real face a block can meet); one 1e-3 m away does not touch.
+  const Polygon left{{0.0, -1.0}, {1.0, -1.0}, {1.0, 0.0}, {0.0, 0.0}};
+  const auto covered_side = [&](const Polygon& right) {
+    PolygonFeatures fl, fr;
+    polygon_features(left, fl);
+    polygon_features(right, fr);
+    mark_covered_edges(fl, fr);
+    return fl[1].covered;
+  };
+  CHECK(covered_side({{1.0, -1.0}, {2.0, -1.0}, {2.0, 0.5}, {1.0, 0.5}}));
+  CHECK_FALSE(covered_side({{1.0, -1.0}, {2.0, -1.0}, {2.0, -0.5}, {1.0, -0.5}}));
+  CHECK_FALSE(covered_side({{1.001, -1.0}, {2.0, -1.0}, {2.0, 0.0}, {1.001, 0.0}}));
+}
