@@ -59,8 +59,8 @@ def stack(dt, penalty_factor):
     s["blocks"].append({"vertices": rect(-0.5, -0.5, 1.5, 0.0), "material": "rock", "fixed": True})
     for k in range(5):
         s["blocks"].append({"vertices": rect(0.0, 0.5 * k, 1.0, 0.5 * (k + 1)), "material": "rock"})
-    return s, {"quantity": "mean syy of the bottom block (Pa)", "block": 1,
-               "exact": -DENSITY * G * (4 * 0.5 + 0.25)}
+    return s, {"quantity": "mean Cauchy syy of the bottom block (Pa; per unit width at the start)",
+               "block": 1, "exact": -DENSITY * G * (4 * 0.5 + 0.25), "initial_area": 0.5}
 
 
 def main():
