@@ -46,16 +46,31 @@ bool nearest_edge(const PolygonFeatures& ef, int e, const Vec2& p, double depth)
   return true;
 }
 
-// A vertex with a covered edge on either side is not a corner of its fixed assembly.
-bool at_covered_edge(const PolygonFeatures& f, int v) {
-  const int n = static_cast<int>(f.size());
-  return f[static_cast<std::size_t>(v)].covered || f[static_cast<std::size_t>(wrap(v - 1, n))].covered;
+// Edge e of a block is covered by a block other than `other` (mark_covered_edges): no
+// vertex of `other` enters it.
+bool covered_against(const PolygonFeatures& f, int e, int other) {
+  const int by = f[static_cast<std::size_t>(e)].covered_by;
+  return by >= 0 && by != other;
 }
 
-// Whether edge `e` lies on the antiparallel face `f` over its whole length.
-bool covered_by(const EdgeFrame& e, const EdgeFrame& f) {
+// Vertex v sits at an edge covered by a block other than `other` that runs parallel to
+// `target` (an edge of `other`): v is no corner to push on that face (mark_covered_edges).
+bool blocked_at_covered_edge(const PolygonFeatures& f, int v, int other, const EdgeFrame& target) {
+  const int n = static_cast<int>(f.size());
+  for (const int k : {v, wrap(v - 1, n)}) {
+    if (!covered_against(f, k, other)) continue;
+    if (std::abs(f[static_cast<std::size_t>(k)].edge.tangent.dot(target.tangent)) >= 1.0 - kWedgeTolerance) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether edge `e` lies on the antiparallel face `f` over its whole length, within
+// `tolerance` (or kCoveredShare of its length).
+bool covered_by(const EdgeFrame& e, const EdgeFrame& f, double tolerance) {
   if (e.tangent.dot(f.tangent) > -(1.0 - kWedgeTolerance)) return false;
-  const double tol = kCoveredShare * e.length;
+  const double tol = std::max(kCoveredShare * e.length, tolerance);
   if (std::abs((f.start - e.start).dot(e.normal)) > tol ||
       std::abs((f.end - e.start).dot(e.normal)) > tol) {
     return false;
@@ -78,9 +93,10 @@ void vertex_to_edge(const Polygon& vp, const PolygonFeatures& vf, int vblock, co
   const int nv = static_cast<int>(vp.size());
   const int ne = static_cast<int>(ep.size());
   for (int v = 0; v < nv; ++v) {
-    if (!vf[static_cast<std::size_t>(v)].convex || at_covered_edge(vf, v)) continue;
+    if (!vf[static_cast<std::size_t>(v)].convex) continue;
     for (int e = 0; e < ne; ++e) {
-      if (ef[static_cast<std::size_t>(e)].covered) continue;
+      if (covered_against(ef, e, vblock)) continue;
+      if (blocked_at_covered_edge(vf, v, eblock, ef[static_cast<std::size_t>(e)].edge)) continue;
       const int e_end = wrap(e + 1, ne);
       const bool paired_start = v_is_a ? in_vertex_pair(pairs, v, e) : in_vertex_pair(pairs, e, v);
       const bool paired_end = v_is_a ? in_vertex_pair(pairs, v, e_end) : in_vertex_pair(pairs, e_end, v);
@@ -153,11 +169,12 @@ std::optional<ContactCandidate> resolve_convex_pair(const Polygon& a, const Poly
   // Covered edges, and vertices at them entering the other block, are no options
   // (mark_covered_edges).
   const auto allowed = [&](const Option& o) {
-    const bool v_is_a = o.contact.vertex_block == ia;
-    const PolygonFeatures& vf = v_is_a ? fa : fb;
-    const PolygonFeatures& ef = v_is_a ? fb : fa;
-    return !ef[static_cast<std::size_t>(o.contact.edge)].covered &&
-           !at_covered_edge(vf, o.contact.vertex);
+    const ContactCandidate& c = o.contact;
+    const PolygonFeatures& vf = c.vertex_block == ia ? fa : fb;
+    const PolygonFeatures& ef = c.vertex_block == ia ? fb : fa;
+    return !covered_against(ef, c.edge, c.vertex_block) &&
+           !blocked_at_covered_edge(vf, c.vertex, c.edge_block,
+                                    ef[static_cast<std::size_t>(c.edge)].edge);
   };
   const Option* best = nullptr;
   for (const Option& o : options) {
@@ -198,9 +215,9 @@ std::optional<ContactCandidate> resolve_convex_pair(const Polygon& a, const Poly
 void reflex_pair_contacts(const PolygonFeatures& vf, int vblock, int v, const PolygonFeatures& ef,
                           int eblock, int r, std::vector<ContactCandidate>& out) {
   const int ne = static_cast<int>(ef.size());
-  if (at_covered_edge(vf, v)) return;
   for (const int e : {wrap(r - 1, ne), r}) {  // the edge ending at r, then the one leaving it
-    if (ef[static_cast<std::size_t>(e)].covered) continue;
+    if (covered_against(ef, e, vblock)) continue;
+    if (blocked_at_covered_edge(vf, v, eblock, ef[static_cast<std::size_t>(e)].edge)) continue;
     const Vec2& normal = ef[static_cast<std::size_t>(e)].edge.normal;
     if (wedge_score(vf, v, normal) < -kCandidateWedgeTolerance) continue;
     out.push_back({vblock, v, eblock, e, true});
@@ -278,14 +295,16 @@ void polygon_features(const Polygon& poly, PolygonFeatures& out) {
     k.to_next = (poly[wrap(i + 1, n)] - poly[i]).normalized();
     k.half_shortest_edge = half_shortest_edge_at(poly, i);
     k.convex = is_convex_vertex(poly, i);
+    k.covered_by = -1;
   }
 }
 
-void mark_covered_edges(PolygonFeatures& fa, PolygonFeatures& fb) {
+void mark_covered_edges(PolygonFeatures& fa, int ia, PolygonFeatures& fb, int ib,
+                        double tolerance) {
   for (VertexFeatures& ka : fa) {
     for (VertexFeatures& kb : fb) {
-      if (covered_by(ka.edge, kb.edge)) ka.covered = true;
-      if (covered_by(kb.edge, ka.edge)) kb.covered = true;
+      if (covered_by(ka.edge, kb.edge, tolerance)) ka.covered_by = ib;
+      if (covered_by(kb.edge, ka.edge, tolerance)) kb.covered_by = ia;
     }
   }
 }

@@ -107,25 +107,30 @@ struct VertexFeatures {
   Vec2 to_next = Vec2::Zero();      // unit, from the vertex to the one after
   double half_shortest_edge = 0.0;  // half the shorter of its two edges (m)
   bool convex = false;              // is_convex_vertex(poly, k)
-  // Its edge (from k to k + 1) lies on a face of another fixed block that covers it whole
-  // (mark_covered_edges): inside a fixed assembly, not a surface. No vertex enters it, and
-  // the vertices at its ends do not enter other blocks' edges (at such a vertex the
-  // assembly's boundary runs straight on or turns inward: it is not a corner).
-  bool covered = false;
+  // The block whose face covers this edge (from k to k + 1) whole, touching it
+  // (mark_covered_edges); -1 if none. To any third block the two blocks' shared faces are
+  // inside their assembly, not a surface: no vertex of a third block enters this edge, and
+  // the vertices at its ends do not push on a third block's face parallel to it (there the
+  // assembly's boundary runs straight on or turns inward: they are not corners of it).
+  int covered_by = -1;
 };
 using PolygonFeatures = std::vector<VertexFeatures>;
 
 // Fills `out` for `poly`, reusing its storage.
 void polygon_features(const Polygon& poly, PolygonFeatures& out);
 
-// Two fixed blocks side by side (a row of blocks drawn as an incline, a stepped base): an
-// edge of either that the other's face covers whole (antiparallel within kWedgeTolerance,
-// on its line and over its whole length within kCoveredShare of its length) is marked
-// covered in its features. A block sliding along the row's top would otherwise meet each
-// joint as a step as high as its own penetration: its leading corner, a hair below the top,
-// entered the next block's side face and was stopped (a block on a row of eight fixed
-// blocks kept 59 % of the closed-form slide at dt 0.01 s).
-void mark_covered_edges(PolygonFeatures& fa, PolygonFeatures& fb);
+// Two blocks side by side (a row of blocks drawn as an incline, the blocks under a bedding
+// plane): an edge of either that the other's face covers whole (antiparallel within
+// kWedgeTolerance; on its line within `tolerance`, or kCoveredShare of its length if that
+// is more; over its whole length within the same) is marked as covered by the other (ia or
+// ib) in its features. A block sliding along the row's top would otherwise meet each joint
+// as a step as high as its own penetration: its leading corner, a hair below the top,
+// entered the next block's side face (or that block's corner pushed on its front face) and
+// was stopped (a block on a row of eight fixed blocks kept 59 % of the closed-form slide at
+// dt 0.01 s; on a row of eight bonded free blocks it stopped at the first joint).
+// `tolerance`: how far apart two faces in contact may lie (their allowed penetration).
+void mark_covered_edges(PolygonFeatures& fa, int ia, PolygonFeatures& fb, int ib,
+                        double tolerance);
 inline constexpr double kCoveredShare = 1e-6;
 
 // find_contacts with each polygon's features made beforehand (fa of a, fb of b).

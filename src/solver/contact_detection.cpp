@@ -98,9 +98,12 @@ void detect_contacts(const World& world, std::vector<Contact>& contacts, Detecti
   // every pair is between fixed blocks needs none, but they cost little.
   cache.features.resize(n);
   for (std::size_t i = 0; i < n; ++i) polygon_features(world.blocks[i].vertices, cache.features[i]);
-  // Fixed blocks side by side: the faces they share are not surfaces (mark_covered_edges).
+  // Blocks side by side: to a third block the faces they share are not surfaces
+  // (mark_covered_edges). Two fixed blocks' faces must coincide; a free block's may lie as
+  // far apart as the pair's allowed penetration (faces in contact).
   for (const auto& [i, j] : cache.close) {
-    if (both_fixed(world, i, j)) mark_covered_edges(cache.features[i], cache.features[j]);
+    const double tolerance = both_fixed(world, i, j) ? 0.0 : contact_allowance(world, i, j);
+    mark_covered_edges(cache.features[i], i, cache.features[j], j, tolerance);
   }
 
   cache.candidates.clear();

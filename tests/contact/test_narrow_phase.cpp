@@ -916,16 +916,22 @@ TEST_CASE("a corner sliding across the joint of two fixed blocks meets the next 
     return edges;
   };
   CHECK(contacts_with_right(fr) == std::vector<int>{3});  // the catch, unmarked
-  mark_covered_edges(fl, fr);
-  CHECK(fr[3].covered);   // the right square's left face
-  CHECK(fl[1].covered);   // the left square's right face
-  CHECK_FALSE(fr[2].covered);
-  CHECK_FALSE(fl[2].covered);
+  mark_covered_edges(fl, 0, fr, 1, 0.0);
+  CHECK(fr[3].covered_by == 0);   // the right square's left face
+  CHECK(fl[1].covered_by == 1);   // the left square's right face
+  CHECK(fr[2].covered_by == -1);
+  CHECK(fl[2].covered_by == -1);
   CHECK(contacts_with_right(fr) == std::vector<int>{2});
-  // The right square's corner at the joint no longer enters the slider's faces either.
+  // The right square's corner at the joint pushes on no face of the slider parallel to its
+  // covered side: not on the slider's front (edge 1); on its base, if at all (bearing).
   std::vector<ContactCandidate> out;
   find_contacts(right, fr, 1, slider, fs, 2, 0.01, out);
-  for (const ContactCandidate& c : out) CHECK_FALSE(c.vertex_block == 1);
+  for (const ContactCandidate& c : out) CHECK_FALSE((c.vertex_block == 1 && c.edge == 1));
+  // The two squares' own contact across the covered faces is not affected: each face is
+  // covered by the other, which it still meets.
+  std::vector<ContactCandidate> between;
+  find_contacts(left, fl, 0, right, fr, 1, 0.01, between);
+  CHECK(between.size() >= 2);
 }
 
 TEST_CASE("a face covered only in part, or offset, stays a surface", "[contact][covered]") {
@@ -936,8 +942,8 @@ TEST_CASE("a face covered only in part, or offset, stays a surface", "[contact][
     PolygonFeatures fl, fr;
     polygon_features(left, fl);
     polygon_features(right, fr);
-    mark_covered_edges(fl, fr);
-    return fl[1].covered;
+    mark_covered_edges(fl, 0, fr, 1, 0.0);
+    return fl[1].covered_by == 1;
   };
   CHECK(covered_side({{1.0, -1.0}, {2.0, -1.0}, {2.0, 0.5}, {1.0, 0.5}}));
   CHECK_FALSE(covered_side({{1.0, -1.0}, {2.0, -1.0}, {2.0, -0.5}, {1.0, -0.5}}));
