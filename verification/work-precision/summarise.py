@@ -16,15 +16,15 @@ import os
 import sys
 
 # Largest relative error each case may show (README.md, "Results"): the slide measured
-# 2.4e-7 (the penalty's share of the friction force, dt-independent), the stack 2.1e-12
-# (round-off).
-BOUNDS = {"slide": 1e-6, "stack": 1e-10}
+# 2.4e-7 and the slide over free blocks 2.1e-6 (the springs' compliance: both at the
+# softest penalty, dt-independent), the stack 2.1e-12 (round-off).
+BOUNDS = {"slide": 1e-6, "slide_free": 5e-6, "stack": 1e-10}
 
 
 def quantity(summary, entry):
     """The measured value and the closed form it is held against."""
     block = summary["blocks"][entry["block"]]
-    if entry["case"] == "slide":
+    if entry["case"] in ("slide", "slide_free"):
         return block["centroid"][0] - 0.30, entry["exact"]  # the centroid starts at x = 0.30 m
     # The Cauchy stress: the reported stress over J = area / initial area (the default
     # treatment reports the Kirchhoff stress J s; docs/large-strain.md, 1 for the others
@@ -47,7 +47,7 @@ def main():
              "Error against the closed form and the solver's wall time (`summary.json` "
              "`wall_time_s`, one run each, one core), by time step and penalty (a factor of "
              "E = 1 GPa). README.md has the cases and what the figures say.", ""]
-    for case in ("slide", "stack"):
+    for case in ("slide", "slide_free", "stack"):
         rows = [m for m in manifest if m["case"] == case]
         if not rows:
             continue
