@@ -127,8 +127,8 @@ void polygon_features(const Polygon& poly, PolygonFeatures& out);
 // as a step as high as its own penetration: its leading corner, a hair below the top,
 // entered the next block's side face (or that block's corner pushed on its front face) and
 // was stopped (a block on a row of eight fixed blocks kept 59 % of the closed-form slide at
-// dt 0.01 s; on a row of eight bonded free blocks it stopped at the first joint).
-// `tolerance`: how far apart two faces in contact may lie (their allowed penetration).
+// dt 0.01 s). `tolerance`: how far apart two faces may lie (0 for fixed blocks; the detection
+// marks fixed pairs only: docs/contacts.md, "Covered faces").
 void mark_covered_edges(PolygonFeatures& fa, int ia, PolygonFeatures& fb, int ib,
                         double tolerance);
 inline constexpr double kCoveredShare = 1e-6;
