@@ -29,10 +29,11 @@ enum class RotationUpdate {
   SinVariable,          // Cheng and Zhang: T' with sin r0 as unknown (Eqs. 9-12)
   LocalFrame,           // Jiang and Zheng Sections 3-4, x = xc + R(r)(I + E^)(X - Xc)
   LocalFrameAsPrinted,  // the same with Eq. 19 as printed (global strain on X - Xc)
-  FiniteRotation,       // local frame plus the secant rotation column in T (the default)
-  // finite_rotation's step, but each deformable block placed by the map the step's T
-  // applied, F' = (R(r0) + dE) F, and its rotation and block-frame (Biot) strain taken from
-  // the polar decomposition F' = R(r) U (docs/polar-placement-prototype.md). A prototype.
+  FiniteRotation,       // local frame plus the secant rotation column in T
+  // The default: finite_rotation's step, but each deformable block placed by the map the
+  // step's T applied, F' = (I + r0 a + dE) F, its rotation and block-frame Hencky strain
+  // ln U taken from the polar decomposition F' = R(r) U, and its stress Kirchhoff's over its
+  // initial area (docs/large-strain.md).
   FiniteRotationPolar,
   // The paper's method as printed (Sections 3-4): local_frame with each step's strain
   // increment turned into the block frame by the end-of-step angle r + r0 (Eq. 17, its sign
