@@ -48,17 +48,18 @@ bool nearest_edge(const PolygonFeatures& ef, int e, const Vec2& p, double depth)
 
 // Edge e of a block is covered by a block other than `other` (mark_covered_edges): no
 // vertex of `other` enters it.
-bool covered_against(const PolygonFeatures& f, int e, int other) {
-  const int by = f[static_cast<std::size_t>(e)].covered_by;
-  return by >= 0 && by != other;
+bool covered_against(const PolygonFeatures& f, int e, int other, bool firm_only = false) {
+  const VertexFeatures& k = f[static_cast<std::size_t>(e)];
+  return k.covered_by >= 0 && k.covered_by != other && (!firm_only || k.covered_firmly);
 }
 
 // Vertex v sits at an edge covered by a block other than `other` that runs parallel to
 // `target` (an edge of `other`): v is no corner to push on that face (mark_covered_edges).
-bool blocked_at_covered_edge(const PolygonFeatures& f, int v, int other, const EdgeFrame& target) {
+bool blocked_at_covered_edge(const PolygonFeatures& f, int v, int other, const EdgeFrame& target,
+                             bool firm_only = false) {
   const int n = static_cast<int>(f.size());
   for (const int k : {v, wrap(v - 1, n)}) {
-    if (!covered_against(f, k, other)) continue;
+    if (!covered_against(f, k, other, firm_only)) continue;
     if (std::abs(f[static_cast<std::size_t>(k)].edge.tangent.dot(target.tangent)) >= 1.0 - kWedgeTolerance) {
       return true;
     }
@@ -95,8 +96,8 @@ void vertex_to_edge(const Polygon& vp, const PolygonFeatures& vf, int vblock, co
   for (int v = 0; v < nv; ++v) {
     if (!vf[static_cast<std::size_t>(v)].convex) continue;
     for (int e = 0; e < ne; ++e) {
-      if (covered_against(ef, e, vblock)) continue;
-      if (blocked_at_covered_edge(vf, v, eblock, ef[static_cast<std::size_t>(e)].edge)) continue;
+      if (covered_against(ef, e, vblock, true)) continue;
+      if (blocked_at_covered_edge(vf, v, eblock, ef[static_cast<std::size_t>(e)].edge, true)) continue;
       const int e_end = wrap(e + 1, ne);
       const bool paired_start = v_is_a ? in_vertex_pair(pairs, v, e) : in_vertex_pair(pairs, e, v);
       const bool paired_end = v_is_a ? in_vertex_pair(pairs, v, e_end) : in_vertex_pair(pairs, e_end, v);
@@ -168,27 +169,33 @@ std::optional<ContactCandidate> resolve_convex_pair(const Polygon& a, const Poly
   constexpr double kTie = 1e-12;  // m: gaps equal up to the round-off of O(1) coordinates
   // Covered edges, and vertices at them entering the other block, are no options
   // (mark_covered_edges).
-  const auto allowed = [&](const Option& o) {
+  // A firm cover (two fixed blocks) rules options out; a cover between free blocks only
+  // steers the choice: when it would leave no option, the pair keeps the contact it had
+  // without it (the two may part, and then that contact is a constraint: the limit
+  // analysis of a cut slope lost a 25-block mechanism's worth of them at "+" junctions).
+  const auto allowed = [&](const Option& o, bool firm_only) {
     const ContactCandidate& c = o.contact;
     const PolygonFeatures& vf = c.vertex_block == ia ? fa : fb;
     const PolygonFeatures& ef = c.vertex_block == ia ? fb : fa;
-    return !covered_against(ef, c.edge, c.vertex_block) &&
+    return !covered_against(ef, c.edge, c.vertex_block, firm_only) &&
            !blocked_at_covered_edge(vf, c.vertex, c.edge_block,
-                                    ef[static_cast<std::size_t>(c.edge)].edge);
+                                    ef[static_cast<std::size_t>(c.edge)].edge, firm_only);
   };
-  const Option* best = nullptr;
-  for (const Option& o : options) {
-    if (o.score < -kWedgeTolerance || !allowed(o)) continue;
-    if (best == nullptr || o.gap > best->gap + kTie) best = &o;
-  }
-  if (best == nullptr) {
+  for (const bool firm_only : {false, true}) {
+    const Option* best = nullptr;
     for (const Option& o : options) {
-      if (!allowed(o)) continue;
-      if (best == nullptr || o.score > best->score) best = &o;
+      if (o.score < -kWedgeTolerance || !allowed(o, firm_only)) continue;
+      if (best == nullptr || o.gap > best->gap + kTie) best = &o;
     }
+    if (best == nullptr) {
+      for (const Option& o : options) {
+        if (!allowed(o, firm_only)) continue;
+        if (best == nullptr || o.score > best->score) best = &o;
+      }
+    }
+    if (best != nullptr) return best->contact;
   }
-  if (best == nullptr) return std::nullopt;
-  return best->contact;
+  return std::nullopt;
 }
 
 // A convex vertex `v` of `vp` meeting a reflex vertex `r` of `ep`: two vertex-to-edge
@@ -216,8 +223,8 @@ void reflex_pair_contacts(const PolygonFeatures& vf, int vblock, int v, const Po
                           int eblock, int r, std::vector<ContactCandidate>& out) {
   const int ne = static_cast<int>(ef.size());
   for (const int e : {wrap(r - 1, ne), r}) {  // the edge ending at r, then the one leaving it
-    if (covered_against(ef, e, vblock)) continue;
-    if (blocked_at_covered_edge(vf, v, eblock, ef[static_cast<std::size_t>(e)].edge)) continue;
+    if (covered_against(ef, e, vblock, true)) continue;
+    if (blocked_at_covered_edge(vf, v, eblock, ef[static_cast<std::size_t>(e)].edge, true)) continue;
     const Vec2& normal = ef[static_cast<std::size_t>(e)].edge.normal;
     if (wedge_score(vf, v, normal) < -kCandidateWedgeTolerance) continue;
     out.push_back({vblock, v, eblock, e, true});
@@ -296,15 +303,22 @@ void polygon_features(const Polygon& poly, PolygonFeatures& out) {
     k.half_shortest_edge = half_shortest_edge_at(poly, i);
     k.convex = is_convex_vertex(poly, i);
     k.covered_by = -1;
+    k.covered_firmly = false;
   }
 }
 
 void mark_covered_edges(PolygonFeatures& fa, int ia, PolygonFeatures& fb, int ib,
-                        double tolerance) {
+                        double tolerance, bool firm) {
   for (VertexFeatures& ka : fa) {
     for (VertexFeatures& kb : fb) {
-      if (covered_by(ka.edge, kb.edge, tolerance)) ka.covered_by = ib;
-      if (covered_by(kb.edge, ka.edge, tolerance)) kb.covered_by = ia;
+      if (covered_by(ka.edge, kb.edge, tolerance)) {
+        ka.covered_by = ib;
+        ka.covered_firmly = firm;
+      }
+      if (covered_by(kb.edge, ka.edge, tolerance)) {
+        kb.covered_by = ia;
+        kb.covered_firmly = firm;
+      }
     }
   }
 }

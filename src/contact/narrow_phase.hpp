@@ -113,6 +113,9 @@ struct VertexFeatures {
   // the vertices at its ends do not push on a third block's face parallel to it (there the
   // assembly's boundary runs straight on or turns inward: they are not corners of it).
   int covered_by = -1;
+  // The cover is firm (both blocks fixed: they never part): then the rules above hold for
+  // every contact; a cover between free blocks only steers the vertex-pair rule's choice.
+  bool covered_firmly = false;
 };
 using PolygonFeatures = std::vector<VertexFeatures>;
 
@@ -127,10 +130,12 @@ void polygon_features(const Polygon& poly, PolygonFeatures& out);
 // as a step as high as its own penetration: its leading corner, a hair below the top,
 // entered the next block's side face (or that block's corner pushed on its front face) and
 // was stopped (a block on a row of eight fixed blocks kept 59 % of the closed-form slide at
-// dt 0.01 s). `tolerance`: how far apart two faces may lie (0 for fixed blocks; the detection
-// marks fixed pairs only: docs/contacts.md, "Covered faces").
+// dt 0.01 s; on a row of eight bonded free blocks it stopped at the first joint).
+// `tolerance`: how far apart two faces may lie (0 for fixed blocks, the allowed penetration
+// for free ones); `firm`: the pair never parts (both fixed). docs/contacts.md, "Covered
+// faces".
 void mark_covered_edges(PolygonFeatures& fa, int ia, PolygonFeatures& fb, int ib,
-                        double tolerance);
+                        double tolerance, bool firm = true);
 inline constexpr double kCoveredShare = 1e-6;
 
 // find_contacts with each polygon's features made beforehand (fa of a, fb of b).

@@ -98,14 +98,14 @@ void detect_contacts(const World& world, std::vector<Contact>& contacts, Detecti
   // every pair is between fixed blocks needs none, but they cost little.
   cache.features.resize(n);
   for (std::size_t i = 0; i < n; ++i) polygon_features(world.blocks[i].vertices, cache.features[i]);
-  // Fixed blocks side by side: to a moving block the faces they share are not surfaces
-  // (mark_covered_edges). Only fixed pairs: marking free blocks that touch face to face too
-  // cured a block sliding over a row of bonded free blocks, but took the cut slope of
-  // bench/cut_then_fos.sh from a limit-analysis factor of 1.1785 (one block) to 1.0300 (25
-  // blocks) and its strength-reduction factor from 1.090 to 0.966, not yet understood
-  // (docs/contacts.md, "Covered faces").
+  // Blocks side by side: to a third block the faces they share are not surfaces
+  // (mark_covered_edges). Firmly for two fixed blocks, whose faces must coincide; between
+  // free blocks in contact (within their allowed penetration) the cover only steers the
+  // vertex-pair rule, since the two may part (docs/contacts.md, "Covered faces").
   for (const auto& [i, j] : cache.close) {
-    if (both_fixed(world, i, j)) mark_covered_edges(cache.features[i], i, cache.features[j], j, 0.0);
+    const bool firm = both_fixed(world, i, j);
+    mark_covered_edges(cache.features[i], i, cache.features[j], j,
+                       firm ? 0.0 : contact_allowance(world, i, j), firm);
   }
 
   cache.candidates.clear();

@@ -949,3 +949,30 @@ TEST_CASE("a face covered only in part, or offset, stays a surface", "[contact][
   CHECK_FALSE(covered_side({{1.0, -1.0}, {2.0, -1.0}, {2.0, -0.5}, {1.0, -0.5}}));
   CHECK_FALSE(covered_side({{1.001, -1.0}, {2.0, -1.0}, {2.0, 0.0}, {1.001, 0.0}}));
 }
+
+TEST_CASE("a cover between free blocks steers the vertex-pair rule but leaves diagonal "
+          "neighbours their contact", "[contact][covered]") {
+  // Four unit squares around the node (1, 0): A bottom left, B bottom right, C top left, D
+  // top right, each touching its two neighbours face to face. C and B meet only at the
+  // node. Covered firmly (all fixed: they never part), C's corner has no option left
+  // against B; covered softly (free blocks, which may part), the pair keeps its contact:
+  // once A and B part, C's corner meets B's top.
+  const Polygon a{{0.0, -1.0}, {1.0, -1.0}, {1.0, 0.0}, {0.0, 0.0}};
+  const Polygon b{{1.0, -1.0}, {2.0, -1.0}, {2.0, 0.0}, {1.0, 0.0}};
+  const Polygon c{{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
+  const Polygon d{{1.0, 0.0}, {2.0, 0.0}, {2.0, 1.0}, {1.0, 1.0}};
+  const auto c_b_contacts = [&](bool firm) {
+    std::vector<PolygonFeatures> f(4);
+    const std::vector<const Polygon*> p{&a, &b, &c, &d};
+    for (int i = 0; i < 4; ++i) polygon_features(*p[static_cast<std::size_t>(i)], f[static_cast<std::size_t>(i)]);
+    for (const auto& [i, j] : std::vector<std::pair<int, int>>{{0, 1}, {2, 3}, {0, 2}, {1, 3}}) {
+      mark_covered_edges(f[static_cast<std::size_t>(i)], i, f[static_cast<std::size_t>(j)], j,
+                         firm ? 0.0 : 1e-4, firm);
+    }
+    std::vector<ContactCandidate> out;
+    find_contacts(b, f[1], 1, c, f[2], 2, 0.01, out);
+    return out.size();
+  };
+  CHECK(c_b_contacts(true) == 0);
+  CHECK(c_b_contacts(false) >= 1);
+}

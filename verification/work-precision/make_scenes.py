@@ -91,8 +91,7 @@ def main():
     sweeps = {
         "slide": ([0.01, 0.005] if args.smoke else [0.02, 0.01, 0.005, 0.0025, 0.00125],
                   [50.0] if args.smoke else [5.0, 50.0, 500.0]),
-        # Not in the smoke run's check: the catch at free blocks' joints is open (README.md).
-        "slide_free": ([] if args.smoke else [0.02, 0.01, 0.005, 0.0025, 0.00125],
+        "slide_free": ([0.01, 0.005] if args.smoke else [0.02, 0.01, 0.005, 0.0025, 0.00125],
                        [50.0] if args.smoke else [5.0, 50.0, 500.0]),
         "stack": ([0.04, 0.02] if args.smoke else [0.04, 0.02, 0.01, 0.005],
                   [50.0] if args.smoke else [5.0, 50.0, 500.0]),

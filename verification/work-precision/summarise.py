@@ -16,9 +16,8 @@ import os
 import sys
 
 # Largest relative error each case may show (README.md, "Results"): the slide measured
-# 2.4e-7 (the springs' compliance at the softest penalty, dt-independent), the stack
-# 2.1e-12 (round-off). The slide over free blocks would measure 2.1e-6 with covered faces
-# for free pairs; without them it is caught (0.78, an open defect: README.md).
+# 2.4e-7 and the slide over free blocks 2.1e-6 (the springs' compliance at the softest
+# penalty, dt-independent), the stack 2.1e-12 (round-off).
 BOUNDS = {"slide": 1e-6, "slide_free": 5e-6, "stack": 1e-10}
 
 
