@@ -167,12 +167,12 @@ std::optional<ContactCandidate> resolve_convex_pair(const Polygon& a, const Poly
       option(a, fa, ia, pair.va, fb, ib, wrap(pair.vb - 1, nb)),
       option(a, fa, ia, pair.va, fb, ib, pair.vb)};
   constexpr double kTie = 1e-12;  // m: gaps equal up to the round-off of O(1) coordinates
-  // Covered edges, and vertices at them entering the other block, are no options
-  // (mark_covered_edges).
-  // A firm cover (two fixed blocks) rules options out; a cover between free blocks only
-  // steers the choice: when it would leave no option, the pair keeps the contact it had
-  // without it (the two may part, and then that contact is a constraint: the limit
-  // analysis of a cut slope lost a 25-block mechanism's worth of them at "+" junctions).
+  // Covered edges, and vertices at them pushing on a face parallel to theirs
+  // (mark_covered_edges): a firm cover (two fixed blocks) rules options out; a cover
+  // between free blocks only steers the choice: when it would leave no option, the pair
+  // keeps the contact it had without it (the two may part, and then that contact is a
+  // constraint: the limit analysis of a cut slope lost a 25-block mechanism's worth of them
+  // at "+" junctions).
   const auto allowed = [&](const Option& o, bool firm_only) {
     const ContactCandidate& c = o.contact;
     const PolygonFeatures& vf = c.vertex_block == ia ? fa : fb;

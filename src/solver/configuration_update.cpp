@@ -178,10 +178,24 @@ void move_blocks(World& world, const Eigen::VectorXd& d, const StepContext* ctx)
 
 }  // namespace
 
+namespace {
+
+// The map F' of polar_step alone (vertex_after places points by it; the decomposition and
+// its logarithm are the state's, not needed there).
+Mat2 polar_map(const Block& b, const Vec6& db, const Mat2& column) {
+  return (Mat2::Identity() + db[kR0] * column + strain_tensor(db.segment<3>(kEx))) *
+         hencky_frame_map(b.rotation, b.local_strain);
+}
+
+// The rotation column given, or without one the secant column at r0 (the exact rotation).
+Mat2 column_or_secant(const Mat2* column, double r0) {
+  return column != nullptr ? *column : secant_rotation_column(r0);
+}
+
+}  // namespace
+
 PolarStep polar_step(const Block& b, const Vec6& db, const Mat2& column) {
-  const Mat2 f = hencky_frame_map(b.rotation, b.local_strain);
-  const Mat2 after =
-      (Mat2::Identity() + db[kR0] * column + strain_tensor(db.segment<3>(kEx))) * f;
+  const Mat2 after = polar_map(b, db, column);
   const PolarDecomposition p = polar_decomposition(after, b.rotation + db[kR0]);
   return {p.angle, hencky_from_stretch(p.strain), after};
 }
@@ -195,7 +209,7 @@ Vec3 stretch_strain(RotationUpdate treatment, const Block& b) {
 }
 
 Mat2 solved_rotation_column(const StepContext* ctx, int index, double r0) {
-  if (ctx == nullptr) return secant_rotation_column(r0);
+  if (ctx == nullptr) return column_or_secant(nullptr, r0);
   return rotation_column(step_t(*ctx, index));
 }
 
@@ -209,8 +223,7 @@ Vec3 block_frame_increment(RotationUpdate treatment, const Block& b, const Vec6&
     return strain_in_turned_frame(db.segment<3>(kEx), b.rotation + db[kR0]);
   }
   if (places_by_polar(treatment, b)) {
-    const Mat2 a = column != nullptr ? *column : secant_rotation_column(db[kR0]);
-    return polar_step(b, db, a).local_strain - b.local_strain;
+    return polar_step(b, db, column_or_secant(column, db[kR0])).local_strain - b.local_strain;
   }
   return block_frame_increment(b, db);
 }
@@ -219,9 +232,9 @@ Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const
                   const Mat2* column) {
   if (b.fixed) return b.vertices[k];
   if (places_by_polar(treatment, b)) {
-    const Mat2 a = column != nullptr ? *column : secant_rotation_column(db[kR0]);
     return b.initial_centroid + b.translation + db.head<2>() +
-           polar_step(b, db, a).map * (b.initial_vertices[k] - b.initial_centroid);
+           polar_map(b, db, column_or_secant(column, db[kR0])) *
+               (b.initial_vertices[k] - b.initial_centroid);
   }
   const Vec2 offset = b.vertices[k] - b.moments.centroid;
   switch (treatment) {

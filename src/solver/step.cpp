@@ -184,7 +184,7 @@ void follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx
     const Block& b = world.blocks[i];
     if (b.fixed || b.rigid) continue;
     const Vec6 db = d.segment<6>(b.first_dof);
-    const Mat2 column = rotation_column(step_t(ctx, static_cast<int>(i)));
+    const Mat2 column = solved_rotation_column(&ctx, static_cast<int>(i), db[kR0]);
     ctx.spins[i] = Spin{db[kR0] / ctx.dt,
                         block_frame_increment(world.control.rotation_update, b, db, &column) / ctx.dt};
   }
@@ -682,8 +682,8 @@ double overshoot(const World& world, const StepContext& ctx, const Contact& c,
     return b.fixed ? Vec6(Vec6::Zero()) : Vec6(d.segment<6>(b.first_dof));
   };
   // The rotation columns each block was solved with (finite_rotation_polar places by them).
-  const Mat2 column_v = rotation_column(step_t(ctx, c.key.vertex_block));
-  const Mat2 column_e = rotation_column(step_t(ctx, c.key.edge_block));
+  const Mat2 column_v = solved_rotation_column(&ctx, c.key.vertex_block, increments(bv)[kR0]);
+  const Mat2 column_e = solved_rotation_column(&ctx, c.key.edge_block, increments(be)[kR0]);
   const std::size_t n = be.vertices.size();
   const std::size_t k = static_cast<std::size_t>(c.key.edge);
   const Vec2 v = vertex_after(treatment, bv, static_cast<std::size_t>(c.key.vertex),
