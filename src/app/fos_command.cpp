@@ -182,10 +182,11 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   info.bonds_broken = consolidation.stats.bonds_broken;
   info.broken_bonds = consolidation.stats.broken_bonds;
   info.factor = settings.consolidation_factor;
+  info.settling = consolidation.settling;
   // The settings as given, for the searches of --spread (each resolves its own from its
   // consolidation, as a run at that setting would).
   FosSettings given = settings;
-  settings = resolve_fos_settings(world, settings);
+  settings = resolve_fos_settings(world, settings, consolidation.settling.relaxation_steps);
   const auto stop_message = [&](const std::string& when) {
     return "interrupted (signal " + std::to_string(interrupt_signal()) + ") " + when;
   };
@@ -198,7 +199,8 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     std::cerr << "dda: " << none.message << "; report in " << out_dir << "\n";
     return interrupted_exit_code();
   }
-  std::cerr << "dda: the consolidation broke " << info.bonds_broken << " bonds\n";
+  std::cerr << "dda: the consolidation broke " << info.bonds_broken << " bonds"
+            << settling_phrase(info.settling) << "\n";
   if (info.bonds_broken > 0) {
     info.bond_check = check_consolidation_bonds(scene, settings.consolidation_factor,
                                                 consolidation.stats.broken_bonds, interrupted);

@@ -178,6 +178,21 @@ json failing_mechanism_json(const LimitAnalysisInfo& l, const std::vector<std::s
 
 }  // namespace
 
+std::string settling_phrase(const Settling& s) {
+  if (s.steps == 0) return "";
+  std::string out = "; then " + std::to_string(s.steps) + " static steps";
+  if (s.at_rest) {
+    out += " to rest";
+  } else {
+    out += ", stopped (" + s.stopped + ") with the largest unbalanced force at " +
+           general(s.unbalanced_end) + " of a block's weight";
+  }
+  if (s.relaxation_steps > 0.0) {
+    out += " (the relaxation lost 1/e of its force in " + general(s.relaxation_steps) + " steps)";
+  }
+  return out;
+}
+
 std::string bond_check_line(const BondCheck& c) {
   if (!c.computed) return "the broken bonds were not checked against an elastic solution: " + c.reason;
   return "of the " + std::to_string(c.broken) + " bonds the consolidation broke, " +
@@ -320,6 +335,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         {"failure_displacement", s.failure_displacement},
         {"trial_time", s.trial_time},
         {"detect_acceleration", s.detect_acceleration},
+        {"relaxations_per_trial", s.relaxations_per_trial},
         {"dynamic_coefficient", s.dynamic_coefficient},
         {"reduce_materials", s.reduce_materials},
         {"jobs", s.jobs},
@@ -336,7 +352,15 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         {"bonds_broken", consolidation.bonds_broken},
         {"broken_bonds", broken_bonds_json(consolidation.broken_bonds)},
         {"factor", consolidation.factor},
-        {"bond_check", bond_check_json(consolidation.bond_check)}}},
+        {"bond_check", bond_check_json(consolidation.bond_check)},
+        {"settling",
+         {{"steps", consolidation.settling.steps},
+          {"at_rest", consolidation.settling.at_rest},
+          {"stopped", consolidation.settling.stopped},
+          {"unbalanced_start", consolidation.settling.unbalanced_start},
+          {"unbalanced_end", consolidation.settling.unbalanced_end},
+          {"relaxation_steps", consolidation.settling.relaxation_steps},
+          {"wall_time_s", consolidation.settling.stats.wall_time_s}}}}},
       {"trials", trials},
       {"discarded_trials",
        {{"count", result.discarded_trials}, {"wall_time_s", result.discarded_wall_time_s}}},
@@ -388,7 +412,8 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   md << "\n\nEach trial starts at rest from the scene consolidated at F = "
      << general(consolidation.factor) << " ("
      << consolidation.steps << " steps, " << general(consolidation.time) << " s simulated, "
-     << consolidation.bonds_broken << " bonds broken) and runs "
+     << consolidation.bonds_broken << " bonds broken"
+     << settling_phrase(consolidation.settling) << ") and runs "
      << general(s.trial_time) << " s with dynamic coefficient " << general(s.dynamic_coefficient)
      << ". It fails when a watched point ("
      << (scene.monitors.empty() ? "the centroid of a free block" : "a monitor")

@@ -28,6 +28,9 @@ struct ConsolidationInfo {
   double factor = 1.0;  // the joints' strengths were divided by this
   // The broken bonds against an elastic solution (not computed when none broke).
   BondCheck bond_check;
+  // The static steps that brought it to rest after the scene's own run, and the pace of
+  // that relaxation (studies/settle_to_rest.hpp).
+  Settling settling;
 };
 
 // The second factor beside the search: the rigid-block limit analysis of the consolidated
@@ -55,6 +58,10 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
 // The consolidation's broken bonds against the elastic solution, one line (no newline):
 // "of the 118 bonds the consolidation broke, 95 are overstressed ...".
 std::string bond_check_line(const BondCheck& check);
+
+// The settling after the consolidation, a phrase (no newline) for the report and the
+// command line: "; then 212 static steps to rest (an e-fold of the relaxation in 44 steps)".
+std::string settling_phrase(const Settling& settling);
 
 // One line on the limit analysis, as dda fos prints it.
 std::string limit_analysis_line(const LimitAnalysisInfo& limit);

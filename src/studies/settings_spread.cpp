@@ -76,7 +76,7 @@ SpreadFactor factor_at_setting(const Scene& scene, const SpreadSetting& setting,
     return f;
   }
   const World& world = consolidated.world;
-  const FosSettings resolved = resolve_fos_settings(world, settings);
+  const FosSettings resolved = resolve_fos_settings(world, settings, consolidated.settling.relaxation_steps);
   const FosResult r = search_on_threads(
       resolved,
       [&](double factor, const StopQuery& q) { return run_trial(world, resolved, factor, q); },

@@ -96,7 +96,8 @@ Scene with_seismic_coefficient(Scene scene, double kh) {
   return scene;
 }
 
-Consolidation consolidate(const Scene& scene, double factor, const StepObserver& observe) {
+Consolidation consolidate(const Scene& scene, double factor, const StepObserver& observe,
+                          bool settle) {
   assert(factor > 0.0);
   auto reduce = [factor](JointMaterial& j) {
     j.friction_angle = reduced_angle_deg(j.friction_angle, factor);
@@ -108,8 +109,20 @@ Consolidation consolidate(const Scene& scene, double factor, const StepObserver&
   for (StageSpec& stage : stronger.stages) {
     for (StageJoint& j : stage.joint_materials) reduce(j.material);
   }
-  Consolidation out{make_world(stronger), {}};
+  Consolidation out{make_world(stronger), {}, {}};
   out.stats = run(out.world, observe);
+  // Settled with the consolidation's own (reduced) joint laws, before the scene's return.
+  if (settle && !out.stats.diverged && !out.stats.interrupted) {
+    out.settling = settle_to_rest(out.world, SettlingSettings{},
+                                  [&] { return observe(out.world, out.stats); });
+    // A settling stopped by the caller, or diverged, ends the consolidation so.
+    if (out.settling.stats.diverged) {
+      out.stats.diverged = true;
+      out.stats.message = out.settling.stats.message;
+    } else if (out.settling.stopped == "interrupted") {
+      out.stats.interrupted = true;
+    }
+  }
   // The trials reduce the scene's own strengths (scene_joint_laws), not the consolidation's.
   std::vector<JointLaw> laws;
   for (const JointMaterial& j : scene.joint_materials) laws.push_back(joint_law_of(j));
@@ -136,7 +149,8 @@ double median_free_block_area(const World& world) {
   return areas[areas.size() / 2];
 }
 
-FosSettings resolve_fos_settings(const World& consolidated, FosSettings s) {
+FosSettings resolve_fos_settings(const World& consolidated, FosSettings s,
+                                 double relaxation_steps) {
   if (s.failure_displacement <= 0.0) {
     s.failure_displacement = 0.05 * std::sqrt(median_free_block_area(consolidated));
     // Joint water acts on the contacts found within the search distance: a trial judged
@@ -148,6 +162,11 @@ FosSettings resolve_fos_settings(const World& consolidated, FosSettings s) {
   if (s.trial_time <= 0.0) {
     const double g = std::max(consolidated.gravity.norm(), 1e-12);
     s.trial_time = std::sqrt(2.0 * s.failure_displacement / (s.detect_acceleration * g));
+    // A static trial relaxes at the pace the consolidation settled at, in steps: at least
+    // relaxations_per_trial e-folds of it (docs/factor-of-safety.md, section 1).
+    const double dt = *std::min_element(consolidated.control.time_steps.begin(),
+                                        consolidated.control.time_steps.end());
+    s.trial_time = std::max(s.trial_time, s.relaxations_per_trial * relaxation_steps * dt);
   }
   return s;
 }

@@ -13,6 +13,7 @@
 #include "materials/material.hpp"
 #include "solver/run.hpp"
 #include "solver/world.hpp"
+#include "studies/settle_to_rest.hpp"
 
 namespace dda {
 
@@ -43,6 +44,13 @@ struct FosSettings {
   // displacement and a = detect_acceleration: a point accelerating at a g from rest moves d
   // in that time.
   double trial_time = 0.0;
+  // The automatic trial time is at least this many of the model's relaxation e-folds
+  // (Settling::relaxation_steps, measured as the consolidation settles) times the trial's
+  // time step: a static trial moves towards equilibrium at the pace the consolidation
+  // settled at, in steps, whatever dt is. 20: the vertical cut of verification/vertical-cut
+  // relaxes by e in 44 steps at dt 0.01 s; every stable trial near its factor came to rest
+  // within 9 s (20 e-folds) and some were still moving at the end of 2.26 s (5 e-folds).
+  double relaxations_per_trial = 20.0;
   // The smallest acceleration, as a share of |gravity|, that the auto trial time resolves
   // (range (0, 1)). 0.002: on a 30-degree plane, a block whose reduced strength falls short
   // of its driving force by 0.4 % accelerates at 0.002 g (docs/factor-of-safety.md).
@@ -116,12 +124,17 @@ struct TrialResult {
 // strength, and every stage's replacement of it, divided by settings.consolidation_factor;
 // afterwards the world carries the scene's own joint laws again, for the trials. `observe`
 // as for run().
+// It then settles (settle_to_rest): static steps until every free block is in balance, so
+// that a trial sees what its reduced strengths do and not what is left of the scene's own
+// run, and the pace of that relaxation is measured for the trial time. `settle` false: the
+// world as the scene's run left it.
 struct Consolidation {
   World world;
   RunStats stats;
+  Settling settling;
 };
 Consolidation consolidate(const Scene& scene, double consolidation_factor,
-                          const StepObserver& observe);
+                          const StepObserver& observe, bool settle = true);
 
 // The scene's joint laws as given (a staged consolidation may have replaced them for its
 // stages; the trials start from the scene's).
@@ -132,8 +145,10 @@ std::vector<JointLaw> scene_joint_laws(const World& consolidated);
 double median_free_block_area(const World& world);
 
 // Fills the automatic settings (failure_displacement, trial_time) from the consolidated
-// world. The world must have at least one free block.
-FosSettings resolve_fos_settings(const World& consolidated, FosSettings settings);
+// world and the relaxation's pace its settling measured (steps per e-fold, 0: none
+// measured; Settling::relaxation_steps). The world must have at least one free block.
+FosSettings resolve_fos_settings(const World& consolidated, FosSettings settings,
+                                 double relaxation_steps = 0.0);
 
 // Asked after every step of a trial: true stops it (dda fos: SIGINT or SIGTERM).
 using StopQuery = std::function<bool()>;

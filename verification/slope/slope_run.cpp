@@ -121,7 +121,7 @@ CaseResult run_case(const SlopeCase& c, const RunOptions& options,
   settings.tolerance = options.tolerance;
   settings.dynamic_coefficient = options.dynamic_coefficient;
   settings.seismic_coefficient = c.seismic_coefficient;
-  settings = resolve_fos_settings(world, settings);
+  settings = resolve_fos_settings(world, settings, consolidated.settling.relaxation_steps);
   r.failure_displacement = settings.failure_displacement;
   r.trial_time = settings.trial_time;
   // The second factor: rigid-block limit analysis of the same consolidated blocks.
