@@ -198,7 +198,8 @@ int main(int argc, char** argv) {
                       "A trial fails when a watched point moves more (m); default: 0.05 x "
                       "sqrt(median free-block area)")->check(CLI::PositiveNumber);
   fos_app->add_option("--trial-time", fos.trial_time,
-                      "Simulated time of a trial (s); default: resolves 0.002 g")
+                      "Simulated time of a trial (s); default: resolves 0.002 g, and at least 20 e-folds "
+                      "of the relaxation the consolidation settled at")
       ->check(CLI::PositiveNumber);
   fos_app->add_option("--dynamic-coefficient", fos.dynamic_coefficient,
                       "Velocity carried between the trial's steps (0: static trials, 1: dynamic)")->capture_default_str()
