@@ -172,7 +172,12 @@ std::optional<ContactCandidate> resolve_convex_pair(const Polygon& a, const Poly
   // between free blocks only steers the choice: when it would leave no option, the pair
   // keeps the contact it had without it (the two may part, and then that contact is a
   // constraint: the limit analysis of a cut slope lost a 25-block mechanism's worth of them
-  // at "+" junctions).
+  // at "+" junctions). It steers only among options that pass the wedge test: where none
+  // does, the squarest of all is taken as without covers. Taking the squarest uncovered one
+  // instead put a surface triangle's corner on its neighbour's surface edge, end to end
+  // (wedge score -0.71), at every surface node of a crossed triangle mesh: a support that
+  // held the columns of verification/vertical-cut against shearing past each other
+  // (3 cells a height: F 1.3724 against 1.3496).
   const auto allowed = [&](const Option& o, bool firm_only) {
     const ContactCandidate& c = o.contact;
     const PolygonFeatures& vf = c.vertex_block == ia ? fa : fb;
@@ -187,7 +192,7 @@ std::optional<ContactCandidate> resolve_convex_pair(const Polygon& a, const Poly
       if (o.score < -kWedgeTolerance || !allowed(o, firm_only)) continue;
       if (best == nullptr || o.gap > best->gap + kTie) best = &o;
     }
-    if (best == nullptr) {
+    if (best == nullptr && firm_only) {
       for (const Option& o : options) {
         if (!allowed(o, firm_only)) continue;
         if (best == nullptr || o.score > best->score) best = &o;
