@@ -47,9 +47,11 @@ struct FosSettings {
   // The automatic trial time is at least this many of the model's relaxation e-folds
   // (Settling::relaxation_steps, measured as the consolidation settles) times the trial's
   // time step: a static trial moves towards equilibrium at the pace the consolidation
-  // settled at, in steps, whatever dt is. 20: the vertical cut of verification/vertical-cut
-  // relaxes by e in 44 steps at dt 0.01 s; every stable trial near its factor came to rest
-  // within 9 s (20 e-folds) and some were still moving at the end of 2.26 s (5 e-folds).
+  // settled at, in steps, whatever dt is. 20: the 3-cell vertical cut of
+  // verification/vertical-cut relaxes by e in 44 steps at dt 0.01 s, and its stable trials
+  // near the factor needed 9 s (20 e-folds) to come to rest; the 5-cell mesh (68 steps)
+  // called some failing after 2.26 s (3 e-folds). A floor, not a convergence test: near the
+  // factor a plastic model relaxes ever more slowly (docs/factor-of-safety.md, section 6).
   double relaxations_per_trial = 20.0;
   // The smallest acceleration, as a share of |gravity|, that the auto trial time resolves
   // (range (0, 1)). 0.002: on a 30-degree plane, a block whose reduced strength falls short

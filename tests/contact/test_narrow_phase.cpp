@@ -976,3 +976,46 @@ TEST_CASE("a cover between free blocks steers the vertex-pair rule but leaves di
   CHECK(c_b_contacts(true) == 0);
   CHECK(c_b_contacts(false) >= 1);
 }
+
+TEST_CASE("a cover between free blocks steers only among contacts that pass the wedge test",
+          "[contact][covered]") {
+  // The surface node (0, 0) of a crossed triangle mesh, its cells below y = 0: the left
+  // cell's north and east triangles (LN, LE) and the right cell's west and north ones (RW,
+  // RN), each sharing a face with the next. LN and RN meet at the node only, with LE and RW
+  // between them, which cover every face of theirs at the node but the surface's. Each of
+  // the pair's four options fails the wedge test (the two are not face to face). The
+  // uncovered ones are the surface edges, end to end with the vertex's own: a support that
+  // held the columns of a mesh against shearing past each other (verification/vertical-cut);
+  // the pair must take what it takes without covers.
+  const Polygon ln{{-0.5, -0.5}, {0.0, 0.0}, {-1.0, 0.0}};
+  const Polygon le{{-0.5, -0.5}, {0.0, -1.0}, {0.0, 0.0}};
+  const Polygon rw{{0.5, -0.5}, {0.0, 0.0}, {0.0, -1.0}};
+  const Polygon rn{{0.5, -0.5}, {1.0, 0.0}, {0.0, 0.0}};
+  const std::vector<const Polygon*> p{&ln, &le, &rw, &rn};
+  const auto ln_rn = [&](bool cover) {
+    std::vector<PolygonFeatures> f(4);
+    for (int i = 0; i < 4; ++i) polygon_features(*p[static_cast<std::size_t>(i)], f[static_cast<std::size_t>(i)]);
+    if (cover) {
+      for (const auto& [i, j] : std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {2, 3}}) {
+        mark_covered_edges(f[static_cast<std::size_t>(i)], i, f[static_cast<std::size_t>(j)], j, 1e-4, false);
+      }
+    }
+    std::vector<ContactCandidate> out;
+    find_contacts(ln, f[0], 0, rn, f[3], 3, 0.01, out);
+    return out;
+  };
+  const std::vector<ContactCandidate> plain = ln_rn(false);
+  const std::vector<ContactCandidate> covered = ln_rn(true);
+  REQUIRE(plain.size() == covered.size());
+  for (std::size_t k = 0; k < plain.size(); ++k) {
+    CHECK(covered[k].vertex_block == plain[k].vertex_block);
+    CHECK(covered[k].vertex == plain[k].vertex);
+    CHECK(covered[k].edge == plain[k].edge);
+  }
+  // And none of them on a surface edge (LN's edge 1 from (0,0) to (-1,0), RN's edge 1
+  // from (1,0) to (0,0)).
+  for (const ContactCandidate& c : covered) {
+    CHECK_FALSE((c.edge_block == 0 && c.edge == 1));
+    CHECK_FALSE((c.edge_block == 3 && c.edge == 1));
+  }
+}
