@@ -209,7 +209,7 @@ Vec3 stretch_strain(RotationUpdate treatment, const Block& b) {
 }
 
 Mat2 solved_rotation_column(const StepContext* ctx, int index, double r0) {
-  if (ctx == nullptr) return column_or_secant(nullptr, r0);
+  if (ctx == nullptr) return secant_rotation_column(r0);
   return rotation_column(step_t(*ctx, index));
 }
 

@@ -96,8 +96,7 @@ Scene with_seismic_coefficient(Scene scene, double kh) {
   return scene;
 }
 
-Consolidation consolidate(const Scene& scene, double factor, const StepObserver& observe,
-                          bool settle) {
+Consolidation consolidate(const Scene& scene, double factor, const StepObserver& observe) {
   assert(factor > 0.0);
   auto reduce = [factor](JointMaterial& j) {
     j.friction_angle = reduced_angle_deg(j.friction_angle, factor);
@@ -112,7 +111,7 @@ Consolidation consolidate(const Scene& scene, double factor, const StepObserver&
   Consolidation out{make_world(stronger), {}, {}};
   out.stats = run(out.world, observe);
   // Settled with the consolidation's own (reduced) joint laws, before the scene's return.
-  if (settle && !out.stats.diverged && !out.stats.interrupted) {
+  if (!out.stats.diverged && !out.stats.interrupted) {
     out.settling = settle_to_rest(out.world, SettlingSettings{},
                                   [&] { return observe(out.world, out.stats); });
     // A settling stopped by the caller, or diverged, ends the consolidation so.

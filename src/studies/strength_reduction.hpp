@@ -128,15 +128,14 @@ struct TrialResult {
 // as for run().
 // It then settles (settle_to_rest): static steps until every free block is in balance, so
 // that a trial sees what its reduced strengths do and not what is left of the scene's own
-// run, and the pace of that relaxation is measured for the trial time. `settle` false: the
-// world as the scene's run left it.
+// run, and the pace of that relaxation is measured for the trial time.
 struct Consolidation {
   World world;
   RunStats stats;
   Settling settling;
 };
 Consolidation consolidate(const Scene& scene, double consolidation_factor,
-                          const StepObserver& observe, bool settle = true);
+                          const StepObserver& observe);
 
 // The scene's joint laws as given (a staged consolidation may have replaced them for its
 // stages; the trials start from the scene's).
