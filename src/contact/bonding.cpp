@@ -11,6 +11,8 @@ int bond_closed_contacts(std::vector<Contact>& contacts, const std::vector<Joint
     assert(c.joint >= 0 && static_cast<std::size_t>(c.joint) < laws.size());
     const JointLaw& law = laws[static_cast<std::size_t>(c.joint)];
     if (law.cohesion <= 0.0 && law.tensile_strength <= 0.0) continue;
+    // A contact of no length (two blocks meeting at a node only) has no strength to bond.
+    if (c.length <= 0.0) continue;
     if (c.state.mode == ContactMode::Slide) {
       const double edge_length = (c.edge_end - c.edge_start).norm();
       c.state.t_lock = c.t + c.iterate.slip / edge_length;

@@ -2,6 +2,8 @@
 // with strength at a stage's start (docs/scene-format.md, "stages"), on its own. (The
 // stages that call it: tests/solver/test_stages.cpp.)
 #include <catch2/catch.hpp>
+
+#include <cmath>
 #include <vector>
 
 #include "contact/bonding.hpp"
@@ -20,6 +22,7 @@ Contact closed_contact(ContactMode mode, int joint) {
   c.tangent = Vec2(1.0, 0.0);
   c.normal = Vec2(0.0, 1.0);
   c.t = 0.25;
+  c.length = 2.0;  // half of a 4 m face: a contact with strength to bond
   c.state.t_lock = 0.2;
   c.iterate.slip = 0.1;
   c.state.slide_sign = mode == ContactMode::Slide ? 1 : 0;
@@ -65,4 +68,16 @@ TEST_CASE("bond_closed_contacts bonds closed contacts of joints with strength", 
   std::vector<Contact> broken = {closed_contact(ContactMode::Lock, 0)};
   CHECK(bond_closed_contacts(broken, laws) == 1);
   CHECK(broken[0].state.bonded);
+}
+
+TEST_CASE("a contact of no length is not bonded", "[contact][bonding]") {
+  // Two blocks meeting at a mesh node only carry a contact of no length (no face overlap):
+  // its strength, c and T times its length, is nothing, so a bond would break at the first
+  // load and be counted as broken (the crossed meshes of verification/vertical-cut "broke"
+  // 213 such bonds in their consolidation).
+  const std::vector<JointLaw> laws = {JointLaw{std::tan(0.5), 1e5, 1e5, JointLawKind::CoulombSlip}};
+  std::vector<Contact> contacts = {closed_contact(ContactMode::Lock, 0)};
+  contacts[0].length = 0.0;
+  CHECK(bond_closed_contacts(contacts, laws) == 0);
+  CHECK_FALSE(contacts[0].state.bonded);
 }

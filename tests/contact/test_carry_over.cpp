@@ -16,6 +16,7 @@ Contact contact(int vertex, double gap, int joint = 0) {
   c.joint = joint;
   c.gap = gap;
   c.t = 0.25 * vertex;
+  c.length = 0.5;  // a share of a face: a contact with strength to bond
   return c;
 }
 
