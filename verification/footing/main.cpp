@@ -29,7 +29,7 @@ using namespace dda::footing;
 namespace fmt = dda::verification;
 
 constexpr const char* kUsage =
-    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|uniform|both|all] [--phi DEG] [--penalty F] [--rotation R] [--jobs N]\n"
+    "usage: dda_verify_footing --out DIR [--smoke] [--cells H,...] [--steps N,...] [--mesh crossed|diagonal|uniform|both|all] [--phi DEG] [--penalty F] [--dt S] [--rotation R] [--jobs N]\n"
     "  --out DIR     write curves.csv, runs.csv, zone_*.csv and report.md into DIR\n"
     "  --smoke       the coarsest crossed mesh (h = 0.5 m) at 150 steps only\n"
     "  --cells LIST  cell sides h (m), default 0.5,0.25,0.125,0.0625\n"
@@ -38,6 +38,8 @@ constexpr const char* kUsage =
     "                uniform (one, all the same way), both (crossed and diagonal) or all\n"
     "  --phi DEG     the soil's friction angle (= dilation angle: associated), default 0 (Tresca)\n"
     "  --penalty F   contact and pin penalty F x E (default 50, Shi's auto)\n"
+    "  --dt S        the static steps' time step (s), default 0.01; it enters only their\n"
+    "                relaxation term 2 M / dt^2 (verification/work-precision/README.md)\n"
     "  --rotation R  control.rotation_update (default the scene's, finite_rotation_polar)\n"
     "  --jobs N      runs at once (default 1)\n";
 
@@ -61,6 +63,7 @@ int main(int argc, char** argv) {
   int jobs = 1;
   double friction = 0.0;
   double penalty = 50.0;
+  double time_step = FootingCase{}.time_step;
   std::string rotation;
   try {
     for (int i = 1; i < argc; ++i) {
@@ -84,6 +87,9 @@ int main(int argc, char** argv) {
         else throw std::invalid_argument("--mesh: " + m);
       } else if (arg == "--penalty" && i + 1 < argc) {
         penalty = std::stod(argv[++i]);
+      } else if (arg == "--dt" && i + 1 < argc) {
+        time_step = std::stod(argv[++i]);
+        if (!(time_step > 0.0)) throw std::invalid_argument("--dt must be positive");
       } else if (arg == "--phi" && i + 1 < argc) {
         friction = std::stod(argv[++i]);
       } else if (arg == "--rotation" && i + 1 < argc) {
@@ -108,7 +114,9 @@ int main(int argc, char** argv) {
   }
   std::vector<FootingCase> cases;
   if (smoke) {
-    cases.push_back(FootingCase{});
+    FootingCase c;
+    c.time_step = time_step;
+    cases.push_back(c);
   } else {
     const double finest = *std::min_element(cells_list.begin(), cells_list.end());
     for (Mesh m : meshes) {
@@ -122,6 +130,7 @@ int main(int argc, char** argv) {
           c.steps = static_cast<int>(n);
           c.friction_angle = friction;
           c.penalty_factor = penalty;
+          c.time_step = time_step;
           c.rotation_update = rotation;
           cases.push_back(c);
         }
