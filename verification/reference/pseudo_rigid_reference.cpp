@@ -7,6 +7,8 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -42,6 +44,29 @@ Mat2 stretch(const Vec3& e) {
   return u;
 }
 
+// U's principal stretches and axes (columns).
+struct Principal {
+  Vec2 stretch;
+  Mat2 axes;
+};
+
+Principal principal(const Vec3& e) {
+  const Eigen::SelfAdjointEigenSolver<Mat2> eig(stretch(e));
+  if (eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > 0.0)) {
+    throw std::invalid_argument("pseudo-rigid reference: the stretch U is not positive definite");
+  }
+  return {eig.eigenvalues(), eig.eigenvectors()};
+}
+
+Vec3 voigt(const Mat2& t) { return Vec3(t(0, 0), t(1, 1), 2.0 * t(0, 1)); }
+
+// (ln l1 - ln l2) / (l1 - l2), the off-diagonal factor of the logarithm's derivative, without
+// the cancellation of the difference of logarithms when l1 is near l2 (the limit 1/l).
+double log_divided_difference(double l1, double l2) {
+  const double d = l1 - l2;
+  return d == 0.0 ? 1.0 / l2 : std::log1p(d / l2) / d;
+}
+
 // dF/dq for q = (theta, e_x, e_y, g_xy), up to the common factor R(theta) on the left, which
 // leaves every tr(A J0 B^T) unchanged: JU and the three strain directions.
 std::array<Mat2, 4> shape_derivatives(const Vec3& e) {
@@ -53,7 +78,7 @@ std::array<Mat2, 4> shape_derivatives(const Vec3& e) {
 Vec6 potential_force(const PseudoRigidBody& b, const Vec6& q) {
   Vec6 f = Vec6::Zero();
   f.head<2>() = b.mass * b.gravity;
-  f.tail<3>() = -b.area * (b.elastic * q.tail<3>());
+  f.tail<3>() = pseudo_rigid_elastic_force(b, q.tail<3>());
   if (b.pinned) {
     const Mat2 r = rotation(q[2]);
     const Vec3 e = q.tail<3>();
@@ -138,6 +163,36 @@ void check(int flag, const char* call, const Data& d) {
 }
 
 }  // namespace
+
+Vec3 hencky_of_biot(const Vec3& biot) {
+  const Principal p = principal(biot);
+  const Vec2 logs(std::log(p.stretch[0]), std::log(p.stretch[1]));
+  return voigt(p.axes * logs.asDiagonal() * p.axes.transpose());
+}
+
+double pseudo_rigid_elastic_energy(const PseudoRigidBody& body, const Vec3& strain) {
+  const Vec3 h = body.law == ElasticLaw::Hencky ? hencky_of_biot(strain) : strain;
+  return 0.5 * body.area * h.dot(body.elastic * h);
+}
+
+Vec3 pseudo_rigid_elastic_force(const PseudoRigidBody& body, const Vec3& strain) {
+  if (body.law == ElasticLaw::Linear) return -body.area * (body.elastic * strain);
+  // The Kirchhoff stress in the body's axes from the Hencky strain, then the Biot stress
+  // T_B = L(tau^) in U's principal axes (header), then -A0 T_B : dU/de_k.
+  const Principal p = principal(strain);
+  const Vec3 t = body.elastic * hencky_of_biot(strain);
+  Mat2 tau;
+  tau << t[0], t[2], t[2], t[1];
+  Mat2 biot = p.axes.transpose() * tau * p.axes;
+  biot(0, 0) /= p.stretch[0];
+  biot(1, 1) /= p.stretch[1];
+  const double off = log_divided_difference(p.stretch[0], p.stretch[1]);
+  biot(0, 1) *= off;
+  biot(1, 0) *= off;
+  biot = p.axes * biot * p.axes.transpose();
+  // dU/de: 1 on the diagonal entries for e_x and e_y, 1/2 on both off-diagonal ones for g_xy.
+  return -body.area * Vec3(biot(0, 0), biot(1, 1), 0.5 * (biot(0, 1) + biot(1, 0)));
+}
 
 Mat6 pseudo_rigid_mass(const PseudoRigidBody& body, const Vec3& strain) {
   Mat6 m = Mat6::Zero();
