@@ -41,4 +41,23 @@ Vec6 rotating_inertia_force(const Mat2& j0, double theta, const Vec3& local_stra
   return h;
 }
 
+Vec6 spatial_rotating_inertia_force(const Mat2& j0, double theta, const Vec3& local_stretch,
+                                    const Spin& spin) {
+  const Mat2 quarter = quarter_turn();
+  const Mat2 u = Mat2::Identity() + strain_tensor(local_stretch);
+  const Mat2 rate = strain_tensor(spin.strain_rate);
+  const double w = spin.omega;
+  // In the block frame (J commutes with R): L^2 and the present second moment U J0 U.
+  const Mat2 l2 = -w * w * Mat2::Identity() + w * rate.trace() * quarter + rate * rate;
+  const Mat2 l2i = l2 * (u * j0 * u);
+  const Mat2 q = rotation_matrix(theta) * (0.5 * (l2i + l2i.transpose())) *
+                 rotation_matrix(theta).transpose();
+  Vec6 h = Vec6::Zero();
+  h[kR0] = (quarter.transpose() * l2i).trace();
+  h[kEx] = q(0, 0);
+  h[kEy] = q(1, 1);
+  h[kGxy] = q(0, 1);
+  return h;
+}
+
 }  // namespace dda

@@ -40,4 +40,21 @@ Mat2 material_inertia(double density, double sxx, double syy, double sxy);
 Vec6 rotating_inertia_force(const Mat2& j0, double theta, const Vec3& local_strain,
                             const Spin& spin);
 
+// The same for a block whose step moves its present shape, F' = (I + r0 a + dE) F
+// (finite_rotation_polar, docs/large-strain.md): its unknowns are rates of the spatial
+// velocity gradient L = omega J + D (D symmetric, global frame), so every point moves at
+// xc' + L y, y = x - xc, and accelerates at xc'' + (L' + L^2) y. Shi's mass matrix on the
+// present shape, int rho T^T T, acts on L'; the quadratic part
+//   L^2 = -omega^2 I + omega tr(D) J + D^2          (J D + D J = tr(D) J in two dimensions)
+// is what it leaves out. By virtual work over the present shape, with I_c = int rho y y^T =
+// R U J0 U R^T the present second moment, it is the generalised force
+//   on the strains (global frame):  sym(L^2 I_c)
+//   on the rotation:                tr(J^T L^2 I_c)
+// Here `local_stretch` is U - I in the block frame and spin.strain_rate is D turned into the
+// block frame (R^T D R). At small strain it is rotating_inertia_force but for terms of order
+// the strain (U J0 against U J0 U) and D^2: at strains of per cents those are per cents of
+// the centrifugal load (docs/rotating-inertia.md, "Large strain").
+Vec6 spatial_rotating_inertia_force(const Mat2& j0, double theta, const Vec3& local_stretch,
+                                    const Spin& spin);
+
 }  // namespace dda

@@ -24,9 +24,12 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
   // stress (initial_stress_force below): a steady spin then balances with no shear in the
   // block frame (at the mid-step angle, half a step's turn, r0/2, would show as shear).
   if (!ctx.spins.empty() && !b.rigid) {
-    f -= rotating_inertia_force(b.material_inertia, b.rotation,
-                                stretch_strain(world.control.rotation_update, b),
-                                ctx.spins[static_cast<std::size_t>(index)]);
+    const RotationUpdate treatment = world.control.rotation_update;
+    const Spin& spin = ctx.spins[static_cast<std::size_t>(index)];
+    f -= spatial_increments(treatment, b)
+             ? spatial_rotating_inertia_force(b.material_inertia, b.rotation,
+                                              stretch_strain(treatment, b), spin)
+             : rotating_inertia_force(b.material_inertia, b.rotation, b.local_strain, spin);
   }
   if (b.plastic && !ctx.material_terms.empty()) {
     // Newton: the stress at increment de is taken as s + D_t (de - de_k) (the material

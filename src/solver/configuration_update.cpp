@@ -200,6 +200,10 @@ PolarStep polar_step(const Block& b, const Vec6& db, const Mat2& column) {
   return {p.angle, hencky_from_stretch(p.strain), after};
 }
 
+bool spatial_increments(RotationUpdate treatment, const Block& b) {
+  return places_by_polar(treatment, b);
+}
+
 double stress_area(RotationUpdate treatment, const Block& b) {
   return places_by_polar(treatment, b) ? b.initial_area : b.moments.area;
 }
@@ -320,7 +324,15 @@ void update_velocities(World& world, const Eigen::VectorXd& d, const StepContext
     const Vec6 db = increments_of(b, d);
     const Vec6 v0 = ctx.dynamic_coefficient * b.velocity;
     b.velocity = 2.0 / ctx.dt * db - v0;
-    if (in_block_frame) {
+    if (places_by_polar(world.control.rotation_update, b)) {
+      // The step's strain unknowns are increments of the spatial velocity gradient's
+      // symmetric part D (they move the present shape), so Newmark's rates are D's, kept in
+      // the global frame. The Hencky strain's rate, advanced in the block frame as the
+      // branch below does, is D only to first order in H; the next step's inertia reads the
+      // difference as an acceleration, made again every step: a spinning block at 6 % strain
+      // lost angular momentum in proportion to the number of steps (docs/rotating-inertia.md).
+      b.local_strain_rate = strain_in_turned_frame(b.velocity.segment<3>(kEx), b.rotation);
+    } else if (in_block_frame) {
       // Paper Section 4, steps 6 and 7: the strain rates advance in the block frame with the
       // local increment; step 8: turned to the global frame for the next step's inertia term.
       b.local_strain_rate =

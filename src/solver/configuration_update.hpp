@@ -57,6 +57,12 @@ struct PolarStep {
 };
 PolarStep polar_step(const Block& b, const Vec6& db, const Mat2& column);
 
+// Whether block b's step moves its present shape, F' = (I + r0 a + dE) F: the deformable
+// blocks of finite_rotation_polar. Their velocities are then those of the spatial velocity
+// gradient (strain rates: its symmetric part D, global frame), and their inertia's quadratic
+// terms are spatial_rotating_inertia_force's.
+bool spatial_increments(RotationUpdate treatment, const Block& b);
+
 // The block-frame stretch U - I of block b (the Biot strain): its local_strain, which
 // finite_rotation_polar keeps as the Hencky strain ln U and the other treatments as U - I.
 Vec3 stretch_strain(RotationUpdate treatment, const Block& b);

@@ -185,8 +185,12 @@ void follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx
     if (b.fixed || b.rigid) continue;
     const Vec6 db = d.segment<6>(b.first_dof);
     const Mat2 column = solved_rotation_column(&ctx, static_cast<int>(i), db[kR0]);
-    ctx.spins[i] = Spin{db[kR0] / ctx.dt,
-                        block_frame_increment(world.control.rotation_update, b, db, &column) / ctx.dt};
+    // finite_rotation_polar: D's mean over the step, the increment turned by the mid-step
+    // angle (spatial_rotating_inertia_force reads D, not the Hencky strain's rate).
+    const Vec3 increment = spatial_increments(world.control.rotation_update, b)
+                               ? block_frame_increment(b, db)
+                               : block_frame_increment(world.control.rotation_update, b, db, &column);
+    ctx.spins[i] = Spin{db[kR0] / ctx.dt, increment / ctx.dt};
   }
 }
 

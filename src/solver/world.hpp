@@ -84,7 +84,7 @@ struct Block {
   Vec6 velocity = Vec6::Zero();
   // Strain rates in the block frame (paper Section 4, steps 6 to 9): advanced by the
   // local-frame treatments, which turn them into velocity's strain rates; the others derive
-  // them from velocity.
+  // them from velocity (finite_rotation_polar's deformable blocks: D, the spatial rate).
   Vec3 local_strain_rate = Vec3::Zero();
   // The last step's rotation increment r0 (rad): sin_variable builds T' from it (Cheng and
   // Zhang), finite_rotation starts its secant iteration from it.

@@ -38,11 +38,12 @@ Scene spinning_rectangle(double young, double dt, double duration) {
 Vec3 local_stress(const Block& b) { return stress_in_turned_frame(b.stress, b.rotation); }
 
 // The pseudo-rigid body's angular momentum about its centroid, omega tr(U J0 U) (the
-// strain-rate part vanishes once the strain has settled).
-double angular_momentum(const Block& b) {
+// strain-rate part vanishes once the strain has settled), U from the treatment's strain (the
+// default keeps ln U: U = I + H would be off by H^2 / 2, 1e-8 here).
+double angular_momentum(const World& w, const Block& b) {
+  const Vec3 e = stretch_strain(w.control.rotation_update, b);
   Mat2 u;
-  u << 1.0 + b.local_strain[0], 0.5 * b.local_strain[2], 0.5 * b.local_strain[2],
-      1.0 + b.local_strain[1];
+  u << 1.0 + e[0], 0.5 * e[2], 0.5 * e[2], 1.0 + e[1];
   return b.velocity[kR0] * (u * b.material_inertia * u).trace();
 }
 
@@ -53,9 +54,11 @@ TEST_CASE("pseudo-rigid inertia: a steadily spinning block carries rho omega^2 J
           "[rotation][inertia]") {
   // The closed form of a body spinning in the plane (verification: steady spin): in the
   // block's axes sigma = omega^2 J0 / A0, here rho omega^2 a^2 / 12 along the long side a
-  // and rho omega^2 b^2 / 12 along the short side b, no shear, whatever E (to first order in
-  // the strain: the exact balance A0 D e = omega^2 sym(U J0) differs by the strain itself,
-  // 1e-4 at E = 1e8 and 1e-6 at 1e10). The spin starts unstrained, so the strain first
+  // and rho omega^2 b^2 / 12 along the short side b, no shear, whatever E, to first order in
+  // the strain. Under the default the exact balance is A0 tau^ = omega^2 U J0 U (Kirchhoff
+  // stress, the present second moment: docs/rotating-inertia.md, "Large strain"), which
+  // differs from it by twice the strain, 2e-4 at E = 1e8 and 2e-6 at 1e10 (bound: three
+  // times); it is checked too. The spin starts unstrained, so the strain first
   // oscillates about its steady value; each dt puts the strain mode at Omega = w_s dt ~ 1,
   // where Shi's scheme damps it within some 50 steps, and 2 s leave it at round-off.
   struct Case {
@@ -74,8 +77,19 @@ TEST_CASE("pseudo-rigid inertia: a steadily spinning block carries rho omega^2 J
     const double strain = long_side / c.young;
     INFO("E " << c.young << ": local stress " << s.transpose() << " against " << long_side
               << ", " << short_side << "; omega " << omega);
-    CHECK(std::abs(s[0] - long_side) <= 2.0 * strain * long_side);
-    CHECK(std::abs(s[1] - short_side) <= 2.0 * strain * long_side);
+    CHECK(std::abs(s[0] - long_side) <= 3.0 * strain * long_side);
+    CHECK(std::abs(s[1] - short_side) <= 3.0 * strain * long_side);
+    const Vec3 e = stretch_strain(w.control.rotation_update, b);  // U - I
+    Mat2 u;
+    u << 1.0 + e[0], 0.5 * e[2], 0.5 * e[2], 1.0 + e[1];
+    const Mat2 exact = omega * omega * u * b.material_inertia * u / b.initial_area;
+    INFO("exact balance " << exact(0, 0) << ", " << exact(1, 1) << "; off by "
+                          << (s[0] - exact(0, 0)) / long_side << ", "
+                          << (s[1] - exact(1, 1)) / long_side);
+    // Measured 1e-13 of the stress at E 1e8 and 1.1e-10 at 1e10 (what the 2 s leave of the
+    // start's oscillation); bound 3e-10.
+    CHECK(std::abs(s[0] - exact(0, 0)) <= 3e-10 * long_side);
+    CHECK(std::abs(s[1] - exact(1, 1)) <= 3e-10 * long_side);
     // No shear: the centrifugal load is taken in the frame where the step holds the
     // block's stress (round-off of the rotations: 1e-9 of the stress).
     CHECK(std::abs(s[2]) <= 1e-9 * long_side);
@@ -100,16 +114,20 @@ TEST_CASE("pseudo-rigid inertia: a spinning block keeps its angular momentum and
   // As the centrifugal strain grows the block's polar moment tr(U J0 U) grows by 2e-4, and
   // the spin slows so that omega tr(U J0 U) stays: the rotation row's omega dI/dt term. Its
   // discrete form telescopes over the steps, so once the strain has settled (Omega ~ 1 at
-  // dt 0.005: within 1 s) what is left is the linearisation of U J0 U in the strain, of
-  // order strain^2 = 1e-8 (measured 9e-10). Shi's inertia (constant omega with a growing
-  // moment) is off by the full 2e-4.
+  // dt 0.005: within 1 s) what is left is of order strain^2 = 1e-8: measured -1.9e-8 under
+  // the default's spatial inertia (kinematics/rotating_inertia.hpp), +2.0e-8 before it
+  // (the Hencky strain's rates as velocities), bound 5e-8. (With U taken as I + H instead of
+  // exp(H) the earlier scheme measured 9e-10, the two O(H^2) errors cancelling.) At finer dt
+  // the strain oscillation is not yet damped at 1 s and the instantaneous omega carries it
+  // (1e-7 to 1.5e-6 at dt 0.0025 to 0.00025, either scheme). Shi's inertia (constant omega
+  // with a growing moment) is off by the full 2e-4.
   World w = make_world(spinning_rectangle(1e8, 0.005, 1.0));
-  const double l0 = angular_momentum(w.blocks[0]);
+  const double l0 = angular_momentum(w, w.blocks[0]);
   const double m0 = material_of(w, w.blocks[0]).density * w.blocks[0].moments.area;
   REQUIRE_FALSE(run(w, [](const World&, const RunStats&) { return true; }).diverged);
   const Block& b = w.blocks[0];
-  INFO("L / L0 - 1 = " << angular_momentum(b) / l0 - 1.0 << ", omega " << b.velocity[kR0]);
-  CHECK(std::abs(angular_momentum(b) / l0 - 1.0) < 1e-8);
+  INFO("L / L0 - 1 = " << angular_momentum(w, b) / l0 - 1.0 << ", omega " << b.velocity[kR0]);
+  CHECK(std::abs(angular_momentum(w, b) / l0 - 1.0) < 5e-8);
   CHECK(b.velocity[kR0] < kOmega * (1.0 - 1e-4));  // it did slow down
   // The mass is kept while the area grows with the strain.
   CHECK(density_now(w, b) * b.moments.area == Approx(m0).epsilon(1e-14));

@@ -266,9 +266,9 @@ TEST_CASE("energy guard: a run that creates energy stops with exit 3 and says so
 TEST_CASE("energy guard: energy lost without a cause is reported, and stops the run when asked",
           "[energy][cli]") {
   // Two 0.25 m squares meeting head on at 1 m/s each, no gravity, dt 0.0002 s (the hard case
-  // collision-dynamic-dt0.0002): the account loses 1.90 J/m, 1.13 % of the initial kinetic
-  // energy (168.75 J/m), at step 254, the step the contact opens, and no term books it
-  // (measured 2026-11-26). The tolerances below are chosen on either side of that loss with
+  // collision-dynamic-dt0.0002): the account loses 1.86 J/m, 1.10 % of the initial kinetic
+  // energy (168.75 J/m; 1.90 J/m before the spatial inertia), at step 254, the step the
+  // contact opens, and no term books it. The tolerances below are chosen on either side of that loss with
   // room for the loss to move by a factor of two: at the default 0.02 it is not reported as
   // beyond; at 0.005 it is, and with energy_losses "stop" the run stops with exit 3 there.
   dda::test::TempDir dir("energy_losses");
@@ -324,11 +324,13 @@ TEST_CASE("energy guard: energy lost without a cause is reported, and stops the 
   CHECK(summary["diverged"].get<bool>());
   CHECK(summary["settings"]["energy_losses"] == "stop");
   // It stops at the step whose loss first passed the tolerance: the step the contact opens,
-  // where the full run's loss is already beyond it (its deepest point, one step later
-  // under finite_rotation_polar, or the same step, is at most a step on).
+  // where the full run's loss is already beyond it. Its deepest point is a few steps on at
+  // most: the same step under finite_rotation, one later under finite_rotation_polar with
+  // the Hencky rates as velocities, two later (254 and 256; loss 1.86 J/m, 1.10 %) with
+  // the spatial inertia (kinematics/rotating_inertia.hpp).
   const int stop_step = summary["steps"].get<int>();
   CHECK(stop_step <= e["remainder_min_step"].get<int>());
-  CHECK(stop_step >= e["remainder_min_step"].get<int>() - 1);
+  CHECK(stop_step >= e["remainder_min_step"].get<int>() - 2);
 }
 
 TEST_CASE("energy account: a Mohr-Coulomb block that never yields books no plastic work",
@@ -464,11 +466,15 @@ TEST_CASE("energy account: plastic blocks in impacts come to rest with plastic d
     double gain_bound, loss_bound;  // shares of the scale
   };
   const Case cases[] = {
-      // Dropped 0.1 m: gain 1.87 J/m of 39 240 (4.8e-5), loss 0.15 J/m (3.9e-6).
+      // Dropped 0.1 m: gain 2.92 J/m of 39 240 (7.4e-5), loss 0.95 J/m (2.4e-5), since the
+      // default's inertia is spatial (kinematics/rotating_inertia.hpp; before: 1.87 and
+      // 0.15 J/m). The loss is the impact's and moves a lot with dt under either inertia
+      // (25 J/m at dt 0.001, 2.2 J/m at 0.0005): a bound for this dt, not a trend.
       {"dropped 0.1 m", R"({"vertices": [[0, 0.1], [1, 0.1], [1, 1.1], [0, 1.1]], "material": "soil"})",
-       kWeakSoil, 1.0, 0.002, 1.0, 30.0, 1.5e-4, 1.5e-5},
-      // Thrown at 3 m/s against a fixed wall 0.5 m away, standing on the floor: gain 0.70 J/m
-      // (1.8e-5), loss 96.9 J/m (2.5e-3) as it rebounds.
+       kWeakSoil, 1.0, 0.002, 1.0, 30.0, 1.5e-4, 7.5e-5},
+      // Thrown at 3 m/s against a fixed wall 0.5 m away, standing on the floor: gain 0.82 J/m
+      // (2.1e-5), loss 108 J/m (2.8e-3) as it rebounds (0.70 and 96.9 J/m before the spatial
+      // inertia).
       {"thrown against a wall",
        R"({"vertices": [[2, 0], [3, 0], [3, 2], [2, 2]], "material": "rock", "fixed": true},
           {"vertices": [[0.5, 0], [1.5, 0], [1.5, 1], [0.5, 1]], "material": "soil", "velocity": [3, 0, 0]})",
