@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -74,6 +75,17 @@ std::string trials_table(const std::vector<TrialResult>& trials) {
   return md.str();
 }
 
+// A trial's predicted displacement (m): null when not computed (dynamic or short trials) or
+// when its motion does not decay (`decaying` false).
+json predicted_json(const TrialResult& t) {
+  if (!t.predicted_displacement || !std::isfinite(*t.predicted_displacement)) return nullptr;
+  return *t.predicted_displacement;
+}
+json decaying_json(const TrialResult& t) {
+  if (!t.predicted_displacement) return nullptr;
+  return static_cast<bool>(std::isfinite(*t.predicted_displacement));
+}
+
 json trial_json(const TrialResult& t) {
   return {{"F", t.factor},
           {"stable", t.stable},
@@ -81,6 +93,8 @@ json trial_json(const TrialResult& t) {
           {"largest_displacement", t.largest_displacement},
           {"end_speed", t.end_speed},
           {"end_speed_limit", t.end_speed_limit},
+          {"predicted_displacement", predicted_json(t)},
+          {"decaying", decaying_json(t)},
           {"kinetic_peak", t.kinetic_peak},
           {"kinetic_end", t.kinetic_end},
           {"steps", t.steps},
@@ -189,6 +203,10 @@ std::string settling_phrase(const Settling& s) {
   }
   if (s.relaxation_steps > 0.0) {
     out += " (the relaxation lost 1/e of its force in " + general(s.relaxation_steps) + " steps)";
+  }
+  if (!s.kept) {
+    out += "; the trials start where the consolidation ended, before those steps (a slope that "
+           "does not settle at the consolidation's strength is not made to creep on)";
   }
   return out;
 }
@@ -336,6 +354,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
         {"trial_time", s.trial_time},
         {"detect_acceleration", s.detect_acceleration},
         {"relaxations_per_trial", s.relaxations_per_trial},
+        {"decay_horizon_steps", s.decay_horizon_steps},
         {"dynamic_coefficient", s.dynamic_coefficient},
         {"reduce_materials", s.reduce_materials},
         {"jobs", s.jobs},
@@ -360,6 +379,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
           {"unbalanced_start", consolidation.settling.unbalanced_start},
           {"unbalanced_end", consolidation.settling.unbalanced_end},
           {"relaxation_steps", consolidation.settling.relaxation_steps},
+          {"kept", consolidation.settling.kept},
           {"wall_time_s", consolidation.settling.stats.wall_time_s}}}}},
       {"trials", trials},
       {"discarded_trials",

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #include "solver/run.hpp"
+#include "studies/recent_motion.hpp"
 
 namespace dda {
 namespace {
@@ -22,14 +24,6 @@ constexpr int kCreepWindows = 3;
 // A pace measured over fewer steps than this is no pace: the first steps after a load carry
 // the fast modes too (they fall within a few steps), and a settling this short needs none.
 constexpr int kPaceSteps = 100;
-
-std::vector<Vec2> free_reference_points(const World& w) {
-  std::vector<Vec2> out;
-  for (const Block& b : w.blocks) {
-    if (!b.fixed) out.push_back(b.moments.centroid);
-  }
-  return out;
-}
 
 double window_mean(const std::vector<double>& r, std::size_t from, std::size_t count) {
   return std::accumulate(r.begin() + static_cast<long>(from),
@@ -76,12 +70,7 @@ Settling settle_to_rest(World& world, const SettlingSettings& s,
   // the start): a contact that chatters moves a block back and forth from step to step with
   // no net motion (measured: the vertical cut at a tenth of the auto penalty, 0.08 g a step
   // and no net displacement), as the trial's own at-rest test sees it (studies/trial_watch).
-  struct Mark {
-    std::vector<Vec2> points;
-    double time = 0.0;
-  };
-  std::vector<Mark> ring(kSettleRestSteps);
-  const Mark start{free_reference_points(world), world.time};
+  RecentMotion recent(kSettleRestSteps, MotionMark{free_block_centroids(world), world.time, 0});
   std::vector<double> ratios;
   int flat = 0;         // creep windows in a row that did not fall
   double last_window = 0.0;
@@ -92,17 +81,14 @@ Settling settle_to_rest(World& world, const SettlingSettings& s,
       return true;
     }
     const std::size_t n = ratios.size() + 1;  // steps so far
-    const Mark now{free_reference_points(w), w.time};
-    const Mark& from = n > static_cast<std::size_t>(kSettleRestSteps) ? ring[n % kSettleRestSteps] : start;
-    const std::size_t window = std::min<std::size_t>(n, kSettleRestSteps);
-    double largest = 0.0;
-    for (std::size_t i = 0; i < now.points.size(); ++i) {
-      largest = std::max(largest, (now.points[i] - from.points[i]).norm());
-    }
-    const double mean_dt = (now.time - from.time) / static_cast<double>(window);
-    const double r = unbalanced_ratio(largest / static_cast<double>(window), g, mean_dt);
+    MotionMark now{free_block_centroids(w), w.time, static_cast<long>(n)};
+    const MotionMark& from = recent.window_start(now.step);
+    const auto window = static_cast<double>(now.step - from.step);  // n, at most 20
+    const double largest = farthest_motion(from.points, now.points);
+    const double mean_dt = (now.time - from.time) / window;
+    const double r = unbalanced_ratio(largest / window, g, mean_dt);
     ratios.push_back(r);
-    ring[n % kSettleRestSteps] = now;
+    recent.record(std::move(now));
     if (n >= static_cast<std::size_t>(kSettleRestSteps) && r < s.rest_ratio) {
       out.at_rest = true;
       out.stopped = "at rest";

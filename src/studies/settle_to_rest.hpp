@@ -43,6 +43,9 @@ struct Settling {
   // way to rest (0: not measured, the consolidation was at rest or settled too fast to tell).
   double relaxation_steps = 0.0;
   std::string stopped;           // "at rest", "not settling" (creep), "step cap", "diverged: ..."
+  // Whether the world was left where the settling ended. consolidate() puts back the
+  // consolidation's own end when the settling was "not settling".
+  bool kept = true;
   RunStats stats;                // the added steps' statistics
 };
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,13 @@ struct FosSettings {
   // called some failing after 2.26 s (3 e-folds). A floor, not a convergence test: near the
   // factor a plastic model relaxes ever more slowly (docs/factor-of-safety.md, section 6).
   double relaxations_per_trial = 20.0;
+  // A damped trial still moving at T/2 or at T is judged by where its decay takes it
+  // (TrialWatch::predicted_displacement): failing beyond the failure displacement, or when it
+  // does not lose 1/e of its speed within this many steps. <= 0: auto, relaxations_per_trial
+  // e-folds of the consolidation's relaxation when the settling measured one, else the
+  // trial's own length in steps. In steps, not seconds: a static trial relaxes at a pace in
+  // steps whatever dt is, so the verdict neither follows dt nor the trial time.
+  double decay_horizon_steps = 0.0;
   // The smallest acceleration, as a share of |gravity|, that the auto trial time resolves
   // (range (0, 1)). 0.002: on a 30-degree plane, a block whose reduced strength falls short
   // of its driving force by 0.4 % accelerates at 0.002 g (docs/factor-of-safety.md).
@@ -93,8 +101,10 @@ struct TrialResult {
   double factor = 0.0;
   bool stable = false;
   // Why: "at rest" (stopped early: nothing sliding, every watched point still),
-  // "did not fail within the trial time", "still moving at the end" (end speed above
-  // end_speed_limit), "moving faster than the speed limit" (a damped trial, stopped early;
+  // "did not fail within the trial time", "coming to rest short of the failure
+  // displacement" (a damped trial whose end speed is above end_speed_limit but whose motion
+  // decays so that predicted_displacement is below d), "still moving at the end" (end speed
+  // above end_speed_limit, not so decaying), "moving faster than the speed limit" (a damped trial, stopped early;
   // studies/trial_watch.hpp),
   // "moved beyond the failure displacement", "diverged: ...".
   std::string verdict;
@@ -107,6 +117,10 @@ struct TrialResult {
   // damped one (dynamic coefficient k < 1) the steady speed of a mechanism accelerating at
   // detect_acceleration g, a g dt (1 + k) / (2 (1 - k)) over the window's mean step dt.
   double end_speed_limit = 0.0;
+  // m, where a damped trial's motion was heading at its end: the largest displacement plus
+  // the rest of its decay (TrialWatch::predicted_displacement; infinite when not decaying);
+  // nullopt in dynamic trials and trials shorter than a quarter of T.
+  std::optional<double> predicted_displacement;
   double kinetic_peak = 0.0;          // J/m, the largest kinetic energy during the trial
   double kinetic_end = 0.0;           // J/m, at its end
   int steps = 0;

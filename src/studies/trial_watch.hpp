@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "kinematics/types.hpp"
+#include "studies/recent_motion.hpp"
 
 namespace dda {
 
@@ -17,6 +18,12 @@ struct TrialWatchSettings {
   double detect_acceleration = 0.002; // share of |g| of the slowest mechanism resolved
   double dynamic_coefficient = 0.0;   // k: 0 static, 1 dynamic
   double gravity = 9.81;              // |g| (m/s^2)
+  // A damped trial's motion counts as decaying (predicted_displacement) only if it loses 1/e
+  // within this many steps of length reference_dt (s; steps cut shorter count as dt^2 /
+  // reference_dt^2 of one, the share they relax by); 0: within the trial time T, in steps of
+  // the last window's mean length.
+  double decay_horizon_steps = 0.0;
+  double reference_dt = 0.0;
 };
 
 // Why a trial stops before its time (Continue: it goes on).
@@ -24,7 +31,8 @@ enum class TrialStop {
   Continue,
   MovedTooFar,      // a watched point moved beyond the failure displacement
   AtRest,           // after T/4, every watched point still over the last 20 steps
-  MovingFast,       // k < 1, after T/2: fast over the last quarter and the last 20 steps, not dying
+  MovingFast,       // k < 1, after T/2: fast over the last quarter and the last 20 steps, and
+                    // its decay (predicted_displacement) carries it beyond d
 };
 
 // A speed over a window of steps: the fastest watched point's displacement over the window's
@@ -52,27 +60,33 @@ class TrialWatch {
   // mechanism accelerating at a = detect_acceleration g, over the window's mean step dt.
   double speed_limit(double window_time, long window_steps) const;
 
+  // Where a damped trial's motion is heading (k < 1; m): the farthest displacement so far plus
+  // what the fastest point still moves if its motion goes on decaying as it did over the last
+  // two eighths of the trial time, by the ratio rho of the last eighth's speed to the one
+  // before's (each as a multiple of its window's speed limit): a geometric series
+  // m rho / (1 - rho) after the last eighth's motion m. Infinite when the motion is not
+  // decaying: rho >= 1, or an e-fold longer than decay_horizon_steps (steps of reference_dt,
+  // counted by the relaxation clock of MotionMark). nullopt
+  // before a quarter of the trial time (no two eighths to compare) and in dynamic trials.
+  std::optional<double> predicted_displacement(const std::vector<Vec2>& now, double elapsed,
+                                               long steps) const;
+
   double largest_displacement() const { return largest_; }
   int watched_point() const { return watched_; }  // the point that moved most, -1 before any
 
  private:
-  struct Mark {
-    std::vector<Vec2> points;
-    double time = 0.0;
-    long step = 0;
-  };
+  using Mark = MotionMark;
   SpeedWindow since(const Mark& from, const std::vector<Vec2>& to, double time, long step) const;
-  // Over the last quarter's marks: the fastest point moved less over the last eighth of the
-  // trial time than kDyingShare of what it moved over the eighth before.
-  bool dying(const std::vector<Vec2>& now, double elapsed) const;
 
   TrialWatchSettings s_;
   Mark start_;
-  std::vector<Mark> ring_;     // the last kRestSteps steps
+  RecentMotion recent_;       // the last kRestSteps steps
   std::optional<Mark> late_;   // the first step at or after 3 T / 4
   std::deque<Mark> quarter_;   // the marks of the last T/4 (oldest first)
   double largest_ = 0.0;
   int watched_ = -1;
+  double clock_ = 0.0;         // the relaxation clock (MotionMark) at the last step observed
+  double last_elapsed_ = 0.0;
 };
 
 }  // namespace dda

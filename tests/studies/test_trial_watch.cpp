@@ -1,11 +1,12 @@
 // The trial verdict (studies/trial_watch.hpp) on made-up paths of one watched point: a steady
-// failure, a transient that dies away, a motion that slows but has not stopped by T/2, one
-// that dies just before T/2, a jump
+// failure, a transient that dies away, motions that slow but have not stopped by T/2 (coming
+// to rest short of d, or heading beyond it), one that dies just before T/2, a jump
 // beyond the failure displacement, a slow creep judged at the end, and a dynamic trial.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "studies/trial_watch.hpp"
 
@@ -79,15 +80,44 @@ TEST_CASE("a failure fast over the last quarter stops at half the trial time, a 
     CHECK(o.time == Approx(rest).margin(1.01 * kDt));
   }
   SECTION("slowing steadily from 20 times the limit, still fast at T/2: failing there") {
-    // v = 20 limit (1 - t / 4): never steady (the later eighth always the slower), but at
-    // T/2 the last quarter averages 20 (1 - 0.75 / 4) = 16.25 times the limit, the last 20
-    // steps 20 (1 - 0.9 / 4) = 15.5 times, and the last eighth moved 0.925 of the eighth
-    // before: not dying.
+    // v = 20 limit (1 - t / 4): at T/2 the last quarter averages 20 (1 - 0.75 / 4) = 16.25
+    // times the limit, the last 20 steps 20 (1 - 0.9 / 4) = 15.5 times, and the last eighth
+    // moved 0.925 of the one before: at that pace an e-fold takes 25 / -ln(0.925) = 320
+    // steps, longer than the trial's 200: not decaying, failing.
     const Outcome o = follow(static_settings(), [](double t) {
       return 20.0 * kLimit * (t - t * t / 8.0);
     });
     CHECK(o.stop == TrialStop::MovingFast);
     CHECK(o.time == Approx(1.0).margin(1.01 * kDt));
+  }
+  SECTION("a slow geometric decay is predicted to its end; one heading beyond d fails at T/2") {
+    // v = V exp(-t / tau): x(infinity) = V tau, and the series of the eighths is exact.
+    // tau = 1 s (T = 2 s, an e-fold in 100 of its 200 steps): each eighth moves exp(-0.25) =
+    // 0.78 of the one before, which a rule asking it to halve called failing at T/2 although
+    // it stops at 20 limit tau.
+    const double tau = 1.0;
+    const auto slow = [tau](double V) {
+      return [V, tau](double t) { return V * tau * (1.0 - std::exp(-t / tau)); };
+    };
+    const Outcome resting = follow(static_settings(), slow(20.0 * kLimit));
+    CHECK(resting.stop == TrialStop::Continue);  // still above the limit at T, not failing
+    CHECK(resting.end.speed > resting.end.limit);
+    TrialWatch watch(static_settings(), {Vec2::Zero()});
+    long step = 0;
+    const auto x = slow(20.0 * kLimit);
+    for (double t = kDt; t <= 2.0 + 1e-9; t += kDt) watch.observe({Vec2(x(t), 0.0)}, t, ++step);
+    const std::optional<double> heading = watch.predicted_displacement({Vec2(x(2.0), 0.0)}, 2.0, step);
+    REQUIRE(heading);
+    CHECK(*heading == Approx(20.0 * kLimit * tau).epsilon(1e-6));
+    // tau = 1.5 s (an e-fold in 150 steps: decaying), V tau = 0.08 m, beyond d = 0.05 m (at
+    // T/2 it has moved 0.039 m, at 260 times the limit): failing as soon as it may be judged,
+    // at T/2.
+    const double tau_long = 1.5;
+    const Outcome running = follow(static_settings(), [tau_long](double t) {
+      return 0.08 * (1.0 - std::exp(-t / tau_long));
+    });
+    CHECK(running.stop == TrialStop::MovingFast);
+    CHECK(running.time == Approx(1.0).margin(1.01 * kDt));
   }
   SECTION("fast until 3T/8, then dying within the last eighth before T/2: let come to rest") {
     // The 652-block slope at a tenth of the penalty, F = 0.995: steady for three eighths,
@@ -117,6 +147,13 @@ TEST_CASE("a failure fast over the last quarter stops at half the trial time, a 
     // Over the last quarter.
     CHECK(o.end.speed == Approx(2.0 * kLimit).epsilon(1e-9));
     CHECK(o.end.limit == Approx(kLimit).epsilon(1e-9));
+    // Not decaying: heading for infinity.
+    TrialWatch watch(static_settings(), {Vec2::Zero()});
+    long step = 0;
+    for (double t = kDt; t <= 2.0 + 1e-9; t += kDt) watch.observe({Vec2(2.0 * kLimit * t, 0.0)}, t, ++step);
+    const std::optional<double> heading = watch.predicted_displacement({Vec2(4.0 * kLimit, 0.0)}, 2.0, step);
+    REQUIRE(heading);
+    CHECK(std::isinf(*heading));
   }
 }
 
@@ -130,4 +167,41 @@ TEST_CASE("a dynamic trial is never stopped for speed, only at rest or beyond d"
   CHECK(o.stop == TrialStop::Continue);
   CHECK(o.end.speed == Approx(0.02).epsilon(1e-9));
   CHECK(o.end.limit == Approx(0.025));
+}
+
+TEST_CASE("the decay horizon is counted on the relaxation clock: shorter steps do not shorten "
+          "it",
+          "[fos][verdict]") {
+  // A horizon of 50 steps of 0.01 s: 50 x 1e-4 = 5e-3 s^2 on the clock (sum of dt^2). The
+  // motion x = V tau (1 - exp(-t / tau)), tau = 0.4 s, loses 1/e in 40 steps of 0.01 s
+  // (4e-3 s^2: decaying) or in 80 steps of 0.005 s (80 x 2.5e-5 = 2e-3 s^2: decaying too,
+  // where a count of plain steps, 80 > 50, would call it not decaying). At 0.02 s, 20
+  // steps of 4e-4 s^2 = 8e-3 s^2: beyond the horizon, and still at 8 times the speed limit
+  // at T/2, so failing there.
+  TrialWatchSettings s = static_settings();
+  s.decay_horizon_steps = 50.0;
+  s.reference_dt = 0.01;
+  const double tau = 0.4, V = 0.02;
+  const auto heading = [&](double dt) {
+    TrialWatch watch(s, {Vec2::Zero()});
+    const auto x = [&](double t) { return V * tau * (1.0 - std::exp(-t / tau)); };
+    long step = 0;
+    double t = 0.0;
+    const long steps = std::lround(s.trial_time / dt);
+    for (long k = 1; k <= steps; ++k) {
+      t = static_cast<double>(k) * dt;
+      // A stopped watch is not fed further: it is read at the step it stopped.
+      if (watch.observe({Vec2(x(t), 0.0)}, t, ++step) != TrialStop::Continue) break;
+    }
+    return watch.predicted_displacement({Vec2(x(t), 0.0)}, t, step);
+  };
+  for (const double dt : {0.01, 0.005}) {
+    const std::optional<double> h = heading(dt);
+    REQUIRE(h);
+    // Decaying: the series of the exponential's eighths is exact, V tau.
+    CHECK(*h == Approx(V * tau).epsilon(1e-6));
+  }
+  const std::optional<double> coarse = heading(0.02);
+  REQUIRE(coarse);
+  CHECK(std::isinf(*coarse));
 }
