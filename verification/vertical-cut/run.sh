@@ -10,7 +10,8 @@
 # --smoke: the mesh of 3 cells per height only (111 blocks, under a minute; CI).
 # Default: 3, 5 and 8 cells per height with the joints at the soil's strength, and 5 with
 # the joints bonded far above it, 5 with the soil as Drucker-Prager, and 3, 5 and 8 with
-# the soil's cohesion softening to c / 2 (about 30 minutes on 2 cores).
+# the soil's cohesion softening to c / 2 (over an hour on 2 cores: trials that creep run
+# to their automatic trial time; the 5-cell mesh alone took 20 minutes, shared).
 # It builds nothing: it runs $DDA_BUILD_DIR/dda (default build/release).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
