@@ -4,6 +4,20 @@
 #include "kinematics/point_maps.hpp"
 
 namespace dda {
+namespace {
+
+// A generalised force on the block-frame strains, sym(m), in the step's global strain slots
+// of h: it turns like a stress, Q : dE^ = (R Q R^T) : dE_global, and with dE_xy = dg/2 on
+// both off-diagonal entries the g slot takes Q_xy once.
+void set_strain_slots(Vec6& h, const Mat2& m, double theta) {
+  const Mat2 r = rotation_matrix(theta);
+  const Mat2 q = r * (0.5 * (m + m.transpose())) * r.transpose();
+  h[kEx] = q(0, 0);
+  h[kEy] = q(1, 1);
+  h[kGxy] = q(0, 1);
+}
+
+}  // namespace
 
 Mat2 material_inertia(double density, double sxx, double syy, double sxy) {
   Mat2 j;
@@ -24,20 +38,12 @@ Vec6 rotating_inertia_force(const Mat2& j0, double theta, const Vec3& local_stra
   // which for a symmetric 2 x 2 tensor is omega tr(E^') J: only a volumetric rate has it.
   const double volumetric_rate = rate.trace();
   const Mat2 g_h = -w * w * u + w * volumetric_rate * quarter;
-  const Mat2 gj = g_h * j0;
-  const Mat2 q_local = 0.5 * (gj + gj.transpose());
-  // A force conjugate to the strain turns like a stress: Q : dE^ = (R Q R^T) : dE_global.
-  const Mat2 r = rotation_matrix(theta);
-  const Mat2 q = r * q_local * r.transpose();
   Vec6 h = Vec6::Zero();
+  set_strain_slots(h, g_h * j0, theta);
   // The rotation equation's 2 omega tr(E^' J0 U) = omega dI_p/dt, less what the mass
   // matrix's rotation-strain coupling takes from the turning slots, omega tr(E^' (J0 -
   // J J0 J^T)): omega tr(E^') tr(J0) (J0 + J J0 J^T = tr(J0) I in two dimensions).
   h[kR0] = w * volumetric_rate * (u * j0 * u).trace();
-  // Q : dE with dE_xy = dg/2 on both off-diagonal entries: the g slot takes Q_xy once.
-  h[kEx] = q(0, 0);
-  h[kEy] = q(1, 1);
-  h[kGxy] = q(0, 1);
   return h;
 }
 
@@ -50,13 +56,9 @@ Vec6 spatial_rotating_inertia_force(const Mat2& j0, double theta, const Vec3& lo
   // In the block frame (J commutes with R): L^2 and the present second moment U J0 U.
   const Mat2 l2 = -w * w * Mat2::Identity() + w * rate.trace() * quarter + rate * rate;
   const Mat2 l2i = l2 * (u * j0 * u);
-  const Mat2 q = rotation_matrix(theta) * (0.5 * (l2i + l2i.transpose())) *
-                 rotation_matrix(theta).transpose();
   Vec6 h = Vec6::Zero();
+  set_strain_slots(h, l2i, theta);
   h[kR0] = (quarter.transpose() * l2i).trace();
-  h[kEx] = q(0, 0);
-  h[kEy] = q(1, 1);
-  h[kGxy] = q(0, 1);
   return h;
 }
 

@@ -244,10 +244,11 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
   r.simulated_time = w.time - consolidated.time;
   r.largest_displacement = watch.largest_displacement();
   r.watched_point = watch.watched_point();
-  const SpeedWindow end = watch.end_speed(watched_points(w), r.simulated_time, r.steps);
+  const std::vector<Vec2> end_points = watched_points(w);
+  const SpeedWindow end = watch.end_speed(end_points, r.simulated_time, r.steps);
   r.end_speed = end.speed;
   r.end_speed_limit = end.limit;
-  r.predicted_displacement = watch.predicted_displacement(watched_points(w), r.simulated_time, r.steps);
+  r.predicted_displacement = watch.predicted_displacement(end_points, r.simulated_time, r.steps);
   r.stable = false;
   if (r.interrupted) {
     r.verdict = "interrupted";

@@ -13,6 +13,7 @@
 #include "solver/configuration_update.hpp"
 #include "solver/run.hpp"
 #include "solver/world.hpp"
+#include "support/pseudo_rigid_body.hpp"
 #include "support/scene_builders.hpp"
 
 using namespace dda;
@@ -42,24 +43,6 @@ Scene soft_swing(double dt, double duration) {
   return s;
 }
 
-reference::PseudoRigidBody body_of(const World& w, reference::ElasticLaw law) {
-  const Block& b = w.blocks[0];
-  reference::PseudoRigidBody body;
-  body.mass = material_of(w, b).density * b.initial_area;
-  body.area = b.initial_area;
-  body.inertia = b.material_inertia;
-  body.elastic = elastic_of(w, b);
-  body.gravity = w.gravity;
-  body.law = law;
-  if (!w.pins.empty()) {
-    body.pinned = true;
-    body.pin_offset = w.pins[0].initial - b.initial_centroid;
-    body.anchor = w.pins[0].anchor;
-    body.pin_stiffness = w.penalty;
-  }
-  return body;
-}
-
 struct Comparison {
   double hencky = 0.0;  // largest |H - H_ref| (Hencky law), / the largest |H_ref|
   double linear = 0.0;  // the same against the linear law's body
@@ -79,7 +62,8 @@ std::vector<Vec3> reference_hencky(const World& w, reference::ElasticLaw law, do
   reference::PseudoRigidOptions opt;
   opt.strain_scale = 1e-2;
   std::vector<Vec3> h;
-  for (const auto& s : reference::pseudo_rigid_sample(body_of(w, law), start, times, opt)) {
+  const reference::PseudoRigidBody body = test::pseudo_rigid_body_of(w, law);
+  for (const auto& s : reference::pseudo_rigid_sample(body, start, times, opt)) {
     h.push_back(reference::hencky_of_biot(s.strain));
     if (angles) angles->push_back(s.angle);
   }
@@ -150,7 +134,7 @@ TEST_CASE("pseudo-rigid reference: the Hencky law's force is its energy's gradie
           "soft body keeps its energy and angular momentum",
           "[reference][inertia]") {
   const World w = make_world(soft_spin(0.001, 0.0));
-  reference::PseudoRigidBody body = body_of(w, reference::ElasticLaw::Hencky);
+  reference::PseudoRigidBody body = test::pseudo_rigid_body_of(w, reference::ElasticLaw::Hencky);
   // -dW/de by central differences at 6 % stretch with shear, h 1e-6: measured at most
   // 1.8e-10 of the force (truncation and round-off), bound 1e-9. A force that were not the
   // gradient (tau^ taken for the Biot stress, say) would be off by the order of the strain.

@@ -12,6 +12,7 @@
 #include "kinematics/frames.hpp"
 #include "materials/elastic.hpp"
 #include "pseudo_rigid_reference.hpp"
+#include "support/pseudo_rigid_body.hpp"
 #include "support/scene_builders.hpp"
 #include "solver/configuration_update.hpp"
 #include "solver/run.hpp"
@@ -178,24 +179,6 @@ Scene swinging_bar(double dt, double duration, double young, double penalty) {
   return s;
 }
 
-reference::PseudoRigidBody reference_body(const World& w) {
-  const Block& b = w.blocks[0];
-  reference::PseudoRigidBody body;
-  body.mass = material_of(w, b).density * b.initial_area;
-  body.area = b.initial_area;
-  body.inertia = b.material_inertia;
-  body.elastic = elastic_of(w, b);
-  body.gravity = w.gravity;
-  body.pinned = true;
-  body.pin_offset = w.pins[0].initial - b.initial_centroid;
-  body.anchor = w.pins[0].anchor;
-  body.pin_stiffness = w.penalty;
-  return body;
-}
-
-}  // namespace
-
-namespace {
 
 struct SwingErrors {
   double angle = 0.0;   // largest |theta - theta_ref| (rad)
@@ -215,7 +198,7 @@ SwingErrors swing_errors(double dt, std::optional<Inertia> inertia) {
   constexpr double kSample = 2e-4;
   std::vector<double> times;
   for (int k = 0; k <= 3300; ++k) times.push_back(k * kSample);
-  const auto ref = reference::pseudo_rigid_sample(reference_body(w), start, times);
+  const auto ref = reference::pseudo_rigid_sample(test::pseudo_rigid_body_of(w), start, times);
   SwingErrors e;
   double largest = 0.0;
   for (const auto& r : ref) largest = std::max(largest, r.strain.cwiseAbs().maxCoeff());
