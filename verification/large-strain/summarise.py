@@ -1,0 +1,236 @@
+#!/usr/bin/python3
+"""Summarises verification/large-strain/run.sh OUT_DIR: OUT_DIR/report.md and report.json,
+a row a run (scene, treatment, exit, steps, solves, the energy account's largest gain and
+largest loss of the remainder over the scene's energy scale, CPU time), and exits 1 if the
+default treatment (finite_rotation_polar) fails a check:
+
+  - a scene expected to run reaches its end (exit 0) with the remainder's largest gain and
+    largest loss within the tolerance of its kind (below) of the energy scale;
+  - the Mohr-Coulomb block without a tension cut-off stops (exit not 0) with a message
+    that names the block and the reason (the stress beyond the apex, which psi = 0 cannot
+    return), not only that the step was cut.
+
+finite_rotation's rows are reported, not checked: the study is there to show it fail.
+
+    summarise.py OUT_DIR
+"""
+import json
+import os
+import re
+import sys
+
+DEFAULT = "finite_rotation_polar"
+
+# |remainder| / scale allowed to the default, by kind of scene. Both are the largest share
+# measured on 2026-11-27 (README.md) with a margin of about 1.6, and both lie far below
+# control.energy_tolerance (0.02), the guard that stopped finite_rotation's runs.
+TOLERANCE = {
+    # Blocks set on the base and loaded by gravity at once, no impact: largest measured
+    # 1.84e-4 (soft6, the 6 m block straining 15 % at its foot). finite_rotation's stack,
+    # which runs to its end, gains 2.0e-3 and fails this; the default's stack 2.2e-6.
+    "settling": 3e-4,
+    # A block dropped onto the base: largest measured 1.92e-3 (drop1, the 1 m drop). About
+    # 1.2e-3 of it builds up over the impact's steps, as in the same block elastic
+    # (elastic_drop1: 1.12e-3 at dt 0.001 s, 2.0e-3 at 0.0005 s; the hard cases' impacts
+    # lose up to 1.1e-2, docs/energy-balance.md); 0.8e-3 is the plastic block's own, gained
+    # in flight after the rebound (README.md, "What the runs show"). The drops scatter by a
+    # factor 2 over dt (8.8e-4 to 1.92e-3); 3e-3 covers that, not more.
+    "impact": 3e-3,
+}
+
+# The one thing a message about a stalled step must not be reduced to.
+STEP_CUT = "time step cut below 1e-9"
+
+
+def load_json(path):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def error_message(out, file, summary):
+    """The run's reason for stopping: summary.json's message, or the log's error line (a
+    scene refused before it ran writes no summary)."""
+    if summary and summary.get("message"):
+        return summary["message"]
+    try:
+        with open(os.path.join(out, "runs", file + ".log")) as f:
+            lines = [l.strip() for l in f if "error" in l]
+        return lines[-1] if lines else ""
+    except OSError:
+        return ""
+
+
+def warnings(out, file):
+    try:
+        with open(os.path.join(out, "runs", file + ".log")) as f:
+            return [l.strip() for l in f if l.startswith("dda: warning")]
+    except OSError:
+        return []
+
+
+def check_stop(message, free_blocks):
+    """A clear stop: names one of the free blocks and the material's reason."""
+    names_block = any(re.search(rf"\bblock {i}\b", message) for i in free_blocks)
+    names_reason = "beyond the apex" in message
+    problems = []
+    if not names_block:
+        problems.append("does not name the block")
+    if not names_reason:
+        problems.append("does not give the reason (stress beyond the apex)")
+    return problems
+
+
+def fmt_share(x):
+    return "–" if x is None else f"{x:.2e}"
+
+
+def main():
+    if len(sys.argv) != 2:
+        print("usage: summarise.py OUT_DIR", file=sys.stderr)
+        return 2
+    out = sys.argv[1]
+    manifest = load_json(os.path.join(out, "manifest.json"))
+    if manifest is None:
+        print(f"summarise.py: {out}/manifest.json missing or unreadable (run make_scenes.py)",
+              file=sys.stderr)
+        return 2
+    status = {}
+    try:
+        with open(os.path.join(out, "status.tsv")) as f:
+            for line in f:
+                name, rc, user, sys_ = line.rstrip("\n").split("\t")
+                status[name] = {"exit": int(rc), "cpu_s": float(user) + float(sys_)}
+    except (OSError, ValueError) as e:
+        print(f"summarise.py: {out}/status.tsv: {e}", file=sys.stderr)
+        return 2
+
+    rows, failed = [], False
+    for m in manifest:
+        file = m["file"]
+        scene = load_json(os.path.join(out, "scenes", file + ".json"))
+        free = [i for i, b in enumerate(scene["blocks"]) if not b.get("fixed")]
+        s = load_json(os.path.join(out, "runs", file, "summary.json"))
+        st = status.get(file, {"exit": None, "cpu_s": None})
+        row = {**m, "exit": st["exit"], "cpu_s": st["cpu_s"], "summary": s is not None}
+        if s:
+            e = s["energy"]
+            row.update({"steps": s["steps"], "solves": s["iterations"],
+                        "cut_steps": s["cut_steps"], "end_time": s["end_time"],
+                        "scale": e["scale"], "gain": e["remainder_max"],
+                        "gain_share": e["remainder_max_share"],
+                        "gain_step": e["remainder_max_step"], "loss": e["remainder_min"],
+                        "loss_share": e["remainder_min_share"],
+                        "loss_step": e["remainder_min_step"]})
+        row["message"] = error_message(out, file, s) if st["exit"] else ""
+        row["warnings"] = warnings(out, file)
+        problems = []
+        if m["expect"] == "run":
+            tol = TOLERANCE[m["kind"]]
+            row["tolerance"] = tol
+            if st["exit"] != 0:
+                problems.append(f"exit {st['exit']}")
+            if not s:
+                problems.append("no summary.json")
+            elif s["diverged"] or s["interrupted"]:
+                # the message itself is listed under the table
+                problems.append(f"stopped at step {s['steps']}")
+            else:
+                if abs(row["gain_share"]) > tol:
+                    problems.append(f"gain {row['gain_share']:.2e} > {tol:g}")
+                if abs(row["loss_share"]) > tol:
+                    problems.append(f"loss {row['loss_share']:.2e} > {tol:g}")
+        else:
+            if st["exit"] in (0, None):
+                problems.append(f"exit {st['exit']}: ran to its end")
+            else:
+                problems += check_stop(row["message"], free)
+            row["message_leads_with_step_cut"] = STEP_CUT in row["message"].split(";")[0]
+        row["problems"] = problems
+        if m["default"]:
+            row["check"] = "FAIL: " + "; ".join(problems) if problems else "pass"
+            failed |= bool(problems)
+        else:
+            row["check"] = "reported (" + ("; ".join(problems) if problems else "would pass") + ")"
+        rows.append(row)
+
+    # Solves over the same steps: the default's runs cut at the step where finite_rotation
+    # stopped (full study only), or the whole runs where both reached their end.
+    same_steps = []
+    by = {(r["name"], r["treatment"]): r for r in rows}
+    for r in rows:
+        if r["treatment"] != "finite_rotation" or not r["summary"]:
+            continue
+        polar = by.get((r["name"], DEFAULT))
+        if not polar or not polar["summary"]:
+            continue
+        if r["exit"] == 0 and polar["exit"] == 0:
+            same_steps.append({"name": r["name"], "steps": r["steps"],
+                               "finite_rotation": r["solves"], DEFAULT: polar["solves"],
+                               "note": "both to their end"})
+            continue
+        if r["exit"] == 0 or polar["exit"] != 0:
+            continue
+        file = f"{r['name']}_{DEFAULT}_to{r['steps']}"
+        t = load_json(os.path.join(out, "runs", file, "summary.json"))
+        if t:
+            same_steps.append({"name": r["name"], "steps": t["steps"],
+                               "finite_rotation": r["solves"], DEFAULT: t["iterations"],
+                               "note": f"to finite_rotation's stop (default cut at step {t['steps']})"})
+    for c in same_steps:
+        c["ratio"] = c[DEFAULT] / c["finite_rotation"]
+
+    lines = ["# Blocks that strain a lot: the default treatment against finite_rotation", "",
+             "Energy shares are the energy account's remainder over the scene's energy scale "
+             "(summary.json `energy.remainder_max_share`, `remainder_min_share`; "
+             "docs/energy-balance.md). Tolerances for the default: "
+             + ", ".join(f"{k} {v:g}" for k, v in TOLERANCE.items())
+             + " (summarise.py says why). finite_rotation's rows are reported, not checked.", "",
+             "| scene | treatment | exit | steps | solves | largest gain / scale | largest loss / scale | CPU (s) | check |",
+             "|---|---|---:|---:|---:|---:|---:|---:|---|"]
+    for r in rows:
+        steps = r.get("steps", "–")
+        solves = r.get("solves", "–")
+        cpu = "–" if r["cpu_s"] is None else f"{r['cpu_s']:.2f}"
+        lines.append(f"| {r['name']} | {r['treatment']} | {r['exit']} | {steps} | {solves} | "
+                     f"{fmt_share(r.get('gain_share'))} | {fmt_share(r.get('loss_share'))} | "
+                     f"{cpu} | {r['check']} |")
+    if same_steps:
+        lines += ["", "Solves over the same steps (issue 27: no more than finite_rotation):", "",
+                  "| scene | steps | finite_rotation | finite_rotation_polar | ratio | |",
+                  "|---|---:|---:|---:|---:|---|"]
+        for c in same_steps:
+            lines.append(f"| {c['name']} | {c['steps']} | {c['finite_rotation']} | {c[DEFAULT]} | "
+                         f"{c['ratio']:.2f} | {c['note']} |")
+    stops = [r for r in rows if r["exit"] not in (0, None)]
+    if stops:
+        lines += ["", "Why runs stopped:", ""]
+        for r in stops:
+            lines.append(f"- {r['name']}, {r['treatment']} (exit {r['exit']}): {r['message']}")
+    lines += ["", "Warnings of the default's runs:", ""]
+    seen = False
+    for r in rows:
+        if r["default"]:
+            for w in r["warnings"]:
+                lines.append(f"- {r['name']}: {w}")
+                seen = True
+    if not seen:
+        lines.append("- none")
+    lines += ["", "Default treatment: " + ("FAIL" if failed else "every check passed")]
+
+    report = {"tolerance": TOLERANCE, "runs": rows, "same_steps": same_steps,
+              "default_passed": not failed}
+    for name, text in (("report.md", "\n".join(lines) + "\n"),
+                       ("report.json", json.dumps(report, indent=1) + "\n")):
+        path = os.path.join(out, name)
+        with open(path + ".part", "w") as f:
+            f.write(text)
+        os.replace(path + ".part", path)
+    print("\n".join(lines))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
