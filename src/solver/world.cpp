@@ -20,8 +20,12 @@ constexpr double kAutoPenaltyFactor = 50.0;
 
 double resolve_penalty(const Scene& scene) {
   if (scene.control.penalty) return *scene.control.penalty;
+  // Only the materials blocks use: a material the scene defines and no block takes must not
+  // stiffen every contact (a spare 1e11 Pa entry made a soft block's springs ten times stiffer).
   double largest = 0.0;
-  for (const Material& mat : scene.materials) largest = std::max(largest, mat.parameters.young);
+  for (const BlockSpec& b : scene.blocks) {
+    largest = std::max(largest, scene.materials[static_cast<std::size_t>(b.material)].parameters.young);
+  }
   return kAutoPenaltyFactor * largest;
 }
 

@@ -250,7 +250,8 @@ void set_reaches(World& world, double dt);
 // The joint law index for contacts between blocks i and j.
 int joint_of_pair(const World& world, int i, int j);
 
-// The scene's penalty (N/m): control.penalty, or "auto", 50 times the largest Young's modulus.
+// The scene's penalty (N/m): control.penalty, or "auto", 50 times the largest Young's modulus
+// of the materials the blocks use.
 double resolve_penalty(const Scene& scene);
 
 // Builds the world from a validated scene: geometry, elastic matrices, dof numbering,
