@@ -885,9 +885,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
         // Shorter steps did not cure a return map: say which block and why, not "the
         // contacts do not settle" (a Mohr-Coulomb block without a tension cut-off hit by
         // an impact that puts it in tension beyond its apex cut 209 steps before this).
-        return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
-                                               "the material of " + material_failure +
-                                               " at every step length tried")};
+        return {false, describe_failure(world, "the material of " + material_failure +
+                                                   ", at every step length down to 1e-9 of "
+                                                   "the scheduled one")};
       }
       return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
                                              "the contacts or the motion do not settle")};

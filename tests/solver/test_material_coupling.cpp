@@ -450,4 +450,6 @@ TEST_CASE("a Mohr-Coulomb block whose impact has no return stops with the materi
   CHECK(stats.message.find("the material of block 1: mohr_coulomb: the trial stress is beyond "
                            "the apex") != std::string::npos);
   CHECK(stats.message.find("do not settle") == std::string::npos);
+  // The reason leads; the step cuts that tried to cure it follow.
+  CHECK(stats.message.find(": the material of block 1") < stats.message.find("1e-9"));
 }

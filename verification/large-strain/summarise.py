@@ -80,6 +80,10 @@ def check_stop(message, free_blocks):
         problems.append("does not name the block")
     if not names_reason:
         problems.append("does not give the reason (stress beyond the apex)")
+    # The reason must come first: a message that opens with the step cut reads as a solver
+    # failure (issue 27 asks for the block and the reason, "not a step cut below 1e-9").
+    if STEP_CUT in message.split(";")[0]:
+        problems.append("leads with the step cut, not the reason")
     return problems
 
 
