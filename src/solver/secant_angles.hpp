@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contact/contact.hpp"
+#include "kinematics/rotating_inertia.hpp"
 #include "solver/world.hpp"
 
 namespace dda {
@@ -38,5 +39,18 @@ int follow_secant_angles(const World& world, const std::vector<Contact>& contact
 // Whether block b's secant angle `angle` is off the r0 it was solved with by more than the
 // free blocks' tolerance (kSecantDisplacementShare of w0).
 bool free_secant_off(const World& world, const Block& b, double r0, double angle);
+
+// Each block's tolerance of follow_secant_angles (m at its farthest vertex):
+// kSecantDisplacementShare of w0, or for a block in closed contact kSecantContactShare of its
+// contacts' smallest allowance if that is more.
+std::vector<double> secant_tolerances(const World& world, const std::vector<Contact>& contacts);
+
+// The displacement at block b's farthest vertex by which the strain rate's share of its
+// quadratic velocity terms (rotating_inertia.hpp: the acceleration L^2 y, L = omega J + D;
+// the share omega tr(D) J + D^2) changes over a step of dt when its spin goes from `was` to
+// `now`: dt^2 / 2 |share_now - share_was| reach. The step's
+// inertia is taken at the spin it was assembled with; an answer is consistent with its own
+// mean rates when this is within the block's secant tolerance.
+double spin_error(const Block& b, const Spin& was, const Spin& now, double dt);
 
 }  // namespace dda

@@ -179,19 +179,42 @@ void start_spins(const World& world, StepContext& ctx) {
 
 // finite_rotation: the spins at the step's mean rates, r0 / dt and the block-frame strain
 // increment / dt (the increment turned by the mid-step angle, as the update will take it).
-void follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx) {
+// Returns how many plastic blocks' spins moved by more than their `tolerance`
+// (secant_tolerances; spin_error): their inertia was not that of the answer, which must be
+// solved again. (A plastic block's Newton converged at its second solve, assembled with the
+// first iterate's spins, whose strain rate was 3.2 1/s against the answer's 4.4: the first
+// iterate is the material's elastic prediction, far from a flow at zero stiffness. With the
+// D^2 term so short, a Mohr-Coulomb block stretching at its tension cut-off in flight gained
+// 6.5 J/m a step.) Elastic blocks are not checked: their iterates differ by the contacts'
+// modes only, and checking them too cost box150 a tenth more solves (7220 against 6539) for
+// rattling rock blocks whose stiffness, not their inertia, sets their strain. Without
+// `tolerance`, 0.
+// Block i's spin at the mean rates of its increments db over the step.
+Spin mean_spin(const World& world, const StepContext& ctx, std::size_t i, const Vec6& db) {
+  const Block& b = world.blocks[i];
+  const Mat2 column = solved_rotation_column(&ctx, static_cast<int>(i), db[kR0]);
+  // finite_rotation_polar: D's mean over the step, the increment turned by the mid-step
+  // angle (spatial_rotating_inertia_force reads D, not the Hencky strain's rate).
+  const Vec3 increment = spatial_increments(world.control.rotation_update, b)
+                             ? block_frame_increment(b, db)
+                             : block_frame_increment(world.control.rotation_update, b, db, &column);
+  return Spin{db[kR0] / ctx.dt, increment / ctx.dt};
+}
+
+int follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx,
+                 const std::vector<double>* tolerance = nullptr) {
+  int moved = 0;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
     if (b.fixed || b.rigid) continue;
-    const Vec6 db = d.segment<6>(b.first_dof);
-    const Mat2 column = solved_rotation_column(&ctx, static_cast<int>(i), db[kR0]);
-    // finite_rotation_polar: D's mean over the step, the increment turned by the mid-step
-    // angle (spatial_rotating_inertia_force reads D, not the Hencky strain's rate).
-    const Vec3 increment = spatial_increments(world.control.rotation_update, b)
-                               ? block_frame_increment(b, db)
-                               : block_frame_increment(world.control.rotation_update, b, db, &column);
-    ctx.spins[i] = Spin{db[kR0] / ctx.dt, increment / ctx.dt};
+    const Spin now = mean_spin(world, ctx, i, d.segment<6>(b.first_dof));
+    if (tolerance != nullptr && b.plastic &&
+        spin_error(b, ctx.spins[i], now, ctx.dt) > (*tolerance)[i]) {
+      ++moved;
+    }
+    ctx.spins[i] = now;
   }
+  return moved;
 }
 
 // finite_rotation, once the contacts agree: when every block whose secant angle is off
@@ -238,6 +261,14 @@ bool settle_free_secants(const World& world, const std::vector<int>& off, bool s
       xb.head(n) = k.topLeftCorner(n, n).ldlt().solve(block_terms.rhs.segment(b.first_dof, n));
       x.segment<6>(b.first_dof) = xb;
       if (free_secant_off(world, b, xb[kR0], local[static_cast<std::size_t>(i)])) agrees = false;
+      // Its spins too, at the free blocks' tolerance (follow_spins holds plastic blocks to
+      // theirs by global solves; here it costs 6 x 6 solves only).
+      if (spinning && !b.rigid &&
+          spin_error(b, ctx.spins[static_cast<std::size_t>(i)],
+                     mean_spin(world, ctx, static_cast<std::size_t>(i), xb),
+                     ctx.dt) > kSecantDisplacementShare * world.w0) {
+        agrees = false;
+      }
       next[static_cast<std::size_t>(i)] = xb[kR0];
     }
     if (agrees) {
@@ -415,6 +446,10 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   LoopResult r;
   ContactUpdate contacts;
   int secants_moved = 0;
+  // Whether the block terms were assembled with spins followed from an iterate (not those
+  // carried into the step): only then must the answer's own spins agree with them
+  // (follow_spins). The first solve's, at the carried rates, is a consistent step too.
+  bool followed_spins_assembled = false;
   MaterialFollowUp materials;
   int augmented = 0;  // contacts whose multiplier grew after this solve
   do {
@@ -431,7 +466,12 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
     if (uses_secant_rotation(treatment)) {
       secants_moved = follow_secant_angles(world, world.contacts, r.d, angles);
       if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
-      if (spinning) follow_spins(world, r.d, ctx);
+      // A spin off the answer's mean rates counts as a secant angle off it: both are the
+      // step's own answer fed back into its equations.
+      if (spinning) {
+        const std::vector<double> tolerance = secant_tolerances(world, world.contacts);
+        secants_moved += follow_spins(world, r.d, ctx, followed_spins_assembled ? &tolerance : nullptr);
+      }
     }
     if (plastic) {
       materials = follow_materials(world, r.d, ctx.material_terms);
@@ -442,7 +482,10 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
         return r;
       }
     }
-    if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
+    if (secants_moved > 0 || materials.unconverged > 0) {
+      assemble(world, ctx, ws.block_terms);
+      followed_spins_assembled = spinning;
+    }
     augmented = 0;
     const bool settled = contacts.changed == 0 && contacts.held_in_tension == 0 &&
                          secants_moved == 0 && materials.unconverged == 0;
@@ -488,6 +531,8 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
   int holds = 0;         // times contacts were held open (hold_open_pulling)
   int fewest_mismatched = std::numeric_limits<int>::max();
   std::vector<int> off_secants;  // blocks whose secant angle is off (follow_secant_angles)
+  // Whether the block terms hold spins followed from an iterate (solve_open_close says why).
+  bool followed_spins_assembled = false;
   // The last solves' (mismatched, largest): a cycle of up to kCycleWindow solves is seen.
   std::array<std::pair<int, double>, kCycleWindow> recent{};
   for (;;) {
@@ -619,6 +664,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
           if (settle_free_secants(world, off_secants, spinning, solved_angles, ctx, ws.block_terms, d)) {
             angles = std::move(solved_angles);
             secants_moved = 0;
+            followed_spins_assembled = spinning;
             ++stats.local_secant_settles;
             newton.measure(world, world.contacts, ctx);
             check = newton.check(world, world.contacts, d, friction_follows);
@@ -629,7 +675,12 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
           set_rotation_columns(world, angles, ctx);
           newton.measure(world, world.contacts, ctx);
         }
-        if (spinning) follow_spins(world, d, ctx);
+        // A spin off the answer's mean rates counts as a secant angle off it.
+        if (spinning) {
+          const std::vector<double> tolerance = secant_tolerances(world, world.contacts);
+          secants_moved +=
+              follow_spins(world, d, ctx, followed_spins_assembled ? &tolerance : nullptr);
+        }
       }
       if (plastic) {
         materials = follow_materials(world, d, ctx.material_terms);
@@ -641,7 +692,10 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
           return r;
         }
       }
-      if (secants_moved > 0 || materials.unconverged > 0) assemble(world, ctx, ws.block_terms);
+      if (secants_moved > 0 || materials.unconverged > 0) {
+        assemble(world, ctx, ws.block_terms);
+        followed_spins_assembled = spinning;
+      }
     }
     clock.lap(times.contact_update);
     if (check.mismatched == 0 && secants_moved == 0 && points_moved == 0 &&
