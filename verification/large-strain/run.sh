@@ -2,14 +2,14 @@
 # Blocks that strain a lot under the default rotation treatment (issue 27;
 # verification/large-strain/README.md): make_scenes.py writes the scenes (soft elastic
 # blocks, a soft/stiff stack, Mohr-Coulomb blocks dropped, one without a tension cut-off,
-# two elastic controls), `dda run` runs each under finite_rotation_polar (the default) and
+# two elastic controls, Mohr-Coulomb blocks thrown at a wall and crushed, static runs), `dda run` runs each under finite_rotation_polar (the default) and
 # finite_rotation, and summarise.py writes OUT_DIR/report.md and report.json and exits 1
 # if the default fails a check (its runs reach their end with the energy remainder within
 # tolerance; the block without a tension cut-off stops with a message naming it and why).
 #
 #   verification/large-strain/run.sh OUT_DIR [--smoke]
 #
-# --smoke: the default treatment only (8 runs, about a second in the release build; CI).
+# --smoke: the default treatment only (13 runs, about 1.5 s in the release build; CI).
 # Default: both treatments, and where finite_rotation stopped early, the default again up
 # to the step where it stopped, so that their solves are counted over the same steps
 # (about 3 s). Runs are pinned to core 0 when taskset is there; CPU times are the runs'
