@@ -214,6 +214,9 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
       ++out.normal_mismatched;
       if (c.state.mode != ContactMode::Open) ++out.normal_mismatched_closed;
     }
+    if (c.state.mode == ContactMode::Open && t.gap < 0.0) {
+      out.open_inside_energy += 0.5 * kn_ * t.gap * t.gap;
+    }
   }
   return out;
 }

@@ -45,6 +45,9 @@ struct NewtonCheck {
   int normal_mismatched_closed = 0;
   int held_open = 0;  // contacts held open (hold_open_pulling), which the counts leave out
   double largest_mismatch = 0.0;  // the largest force difference, as a share of k x resolution
+  // The springs' energy k g^2 / 2 of contacts solved open whose vertex ends inside the edge's
+  // block (g < 0): energy no force did work for, should the attempt be accepted so.
+  double open_inside_energy = 0.0;
 };
 
 class ContactNewton {

@@ -472,13 +472,19 @@ TEST_CASE("energy account: plastic blocks in impacts come to rest with plastic d
       // (25 J/m at dt 0.001, 2.2 J/m at 0.0005): a bound for this dt, not a trend.
       {"dropped 0.1 m", R"({"vertices": [[0, 0.1], [1, 0.1], [1, 1.1], [0, 1.1]], "material": "soil"})",
        kWeakSoil, 1.0, 0.002, 1.0, 30.0, 1.5e-4, 7.5e-5},
-      // Thrown at 3 m/s against a fixed wall 0.5 m away, standing on the floor: gain 0.82 J/m
-      // (2.1e-5), loss 108 J/m (2.8e-3) as it rebounds (0.70 and 96.9 J/m before the spatial
-      // inertia).
+      // Thrown at 3 m/s against a fixed wall 0.5 m away, standing on the floor: gain 4.97
+      // J/m (1.27e-4), loss 2.07 J/m (5.3e-5). The gain builds up while the block slides
+      // on the floor before the impact, its base friction shearing it plastically (12 J/m
+      // of flow a step, 0.1 to 0.2 J/m of gain: the linear step's second-order term,
+      // docs/large-strain.md section 3; 3.18 J/m at dt 0.001, 0.41 at 0.0005). Until
+      // attempts ending with contacts solved open inside their edge's block were no longer
+      // accepted (step.cpp, kAcceptedInsideShare) twenty such attempts were accepted and
+      // then cut for overshoot, and the slide ran at smaller steps: gain 0.82 J/m, loss
+      // 108 J/m as it rebounded.
       {"thrown against a wall",
        R"({"vertices": [[2, 0], [3, 0], [3, 2], [2, 2]], "material": "rock", "fixed": true},
           {"vertices": [[0.5, 0], [1.5, 0], [1.5, 1], [0.5, 1]], "material": "soil", "velocity": [3, 0, 0]})",
-       kWeakSoil, 1.0, 0.002, 1.5, 30.0, 6e-5, 7.5e-3},
+       kWeakSoil, 1.0, 0.002, 1.5, 30.0, 3e-4, 7.5e-3},
       // Crushed by a 98.1 kN/m block set on it with gravity at once, frictionless joints,
       // dynamic: gain 0.12 J/m of 196 592 (6.1e-7); static: 0.0125 J/m (6.4e-8).
       {"crushed, dynamic",
