@@ -9,6 +9,7 @@
 #include "cutting/model.hpp"
 #include "io/block_picture.hpp"
 #include "io/cut_scene.hpp"
+#include "io/output_file.hpp"
 #include "io/text_file.hpp"
 #include "io/json_input.hpp"
 #include "io/model_reader.hpp"
@@ -17,6 +18,13 @@
 
 namespace dda {
 namespace {
+
+// Where the picture goes: SCENE.png beside SCENE.json.
+std::string picture_path(const std::string& scene_path) {
+  std::filesystem::path png(scene_path);
+  png.replace_extension(".png");
+  return png.string();
+}
 
 // The cut as a picture next to the scene (SCENE.png for SCENE.json): blocks coloured by
 // material (in order of first appearance), fixed blocks grey, a legend of both.
@@ -39,10 +47,9 @@ std::string write_cut_picture(const CutModel& cut, const std::string& scene_path
   if (std::find(cut.fixed.begin(), cut.fixed.end(), true) != cut.fixed.end()) {
     options.legend.push_back({"fixed", kFixedGrey});
   }
-  std::filesystem::path png(scene_path);
-  png.replace_extension(".png");
-  write_block_picture(png.string(), blocks, options);
-  return png.string();
+  const std::string png = picture_path(scene_path);
+  write_block_picture(png, blocks, options);
+  return png;
 }
 
 // "rock 1900, weak 87" from the count of each name.
@@ -97,6 +104,11 @@ int cut_command(const std::string& model_path, const std::string& out_path) {
                      "docs/model-format.md)");
   }
   const Model model = read_model_file(model_path);
+  // The outputs' places before the cut: a directory, a block device or a socket there is
+  // refused. A scene written into a character device or a FIFO (/dev/null, /dev/stdout)
+  // gets no picture: there is no file beside it to put one.
+  const bool scene_is_file = check_output_file(out_path) != OutputTarget::Stream;
+  if (scene_is_file) check_output_file(picture_path(out_path));
   const CutModel cut = cut_model(model.spec);
   const CutScene scene = cut_scene(model, cut);
   const std::string text = scene_text(scene.scene);
@@ -112,6 +124,11 @@ int cut_command(const std::string& model_path, const std::string& out_path) {
                      "is (" + e.what() + "); a larger min_block_area may help");
   }
   print_statistics(model, cut, scene, out_path);
+  if (!scene_is_file) {
+    std::cerr << "dda: cut: no picture of the blocks: the scene went into " << out_path
+              << ", which is not a regular file\n";
+    return 0;
+  }
   const std::string picture = write_cut_picture(cut, out_path);
   std::cerr << "dda: cut: picture of the blocks in " << picture << "\n";
   return 0;

@@ -12,6 +12,7 @@
 #include "app/progress.hpp"
 #include "io/block_picture.hpp"
 #include "io/fos_report.hpp"
+#include "io/output_file.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/energy.hpp"
 #include "solver/run.hpp"
@@ -155,6 +156,10 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   bool any_free = false;
   for (const BlockSpec& b : scene.blocks) any_free = any_free || !b.fixed;
   if (!any_free) throw InputError(scene_path + ": blocks: every block is fixed; nothing can fail");
+  // The output directory before any work: a search of hours whose report cannot be written
+  // fails now, not at its end.
+  prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
+                                     "last_stable.png", "first_failing.png"});
 
   // SIGINT or SIGTERM: the consolidation or the running trials stop at their next step, and
   // the report holds the trials judged so far (a second signal ends the program at once).

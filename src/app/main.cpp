@@ -6,6 +6,7 @@
 // (materials), with 3 for a path that could not be followed. A command line CLI11 cannot
 // parse is bad input too (2, the bad argument named); --help and --version exit 0.
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -163,6 +164,11 @@ int material_point_command(const std::string& spec_path, const std::string& out_
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) would end the program by SIGXFSZ at the write that passes
+  // it, without a word and with a file cut mid-row. Ignored, that write fails with EFBIG,
+  // which the output code reports as a file it cannot write (exit 1), keeping only whole
+  // files and whole rows (io/output_file.hpp).
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"dda: two-dimensional Discontinuous Deformation Analysis"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("dda ") + DDA_VERSION);

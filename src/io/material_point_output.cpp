@@ -23,11 +23,7 @@ MaterialPointCsv::MaterialPointCsv(std::filesystem::path path) : path_(std::move
     std::filesystem::create_directories(parent, ec);
     if (ec) fail("cannot create directory (" + ec.message() + ")", parent);
   }
-  out_.open(path_, std::ios::trunc);
-  if (!out_) fail("cannot open", path_);
-  out_ << kMaterialPointHeader << '\n';
-  out_.flush();
-  if (!out_) fail("cannot write", path_);
+  out_.emplace(path_, std::string(kMaterialPointHeader) + "\n");
 }
 
 void MaterialPointCsv::write(std::span<const MaterialPointRow> rows) {
@@ -36,16 +32,20 @@ void MaterialPointCsv::write(std::span<const MaterialPointRow> rows) {
 }
 
 void MaterialPointCsv::write_row(const MaterialPointRow& row) {
-  out_ << row.step;
-  for (int i = 0; i < 3; ++i) out_ << ',' << format_full_precision(row.strain[i]);
-  for (int i = 0; i < 4; ++i) out_ << ',' << format_full_precision(row.stress[i]);
-  out_ << ',' << format_full_precision(row.state.eps_p) << ',' << branch_name(row.branch) << '\n';
-  if (!out_) fail("cannot write", path_);
+  StreamedFile& out = *out_;
+  out.append(std::to_string(row.step));
+  const auto put = [&out](double x) {
+    out.append(',');
+    out.append(format_full_precision(x));
+  };
+  for (int i = 0; i < 3; ++i) put(row.strain[i]);
+  for (int i = 0; i < 4; ++i) put(row.stress[i]);
+  put(row.state.eps_p);
+  out.append(',');
+  out.append(branch_name(row.branch));
+  out.append('\n');
 }
 
-void MaterialPointCsv::flush() {
-  out_.flush();
-  if (!out_) fail("cannot write", path_);
-}
+void MaterialPointCsv::flush() { out_->commit(); }
 
 }  // namespace dda

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <span>
+
+#include "io/output_file.hpp"
 
 #include "materials/material_point.hpp"
 
@@ -21,13 +23,15 @@ class MaterialPointCsv {
   // Appends the rows and flushes. Throws std::runtime_error when the file cannot be written.
   void write(std::span<const MaterialPointRow> rows);
 
-  // Appends one row (buffered: flush() writes it out). Throws when the stream has failed.
+  // Appends one row (held until flush() writes the rows held, whole).
   void write_row(const MaterialPointRow& row);
+  // Writes the rows held. A write that fails (full disk, file-size limit) throws naming the
+  // file, which is then cut back to the rows of the flush before (StreamedFile).
   void flush();
 
  private:
   std::filesystem::path path_;
-  std::ofstream out_;
+  std::optional<StreamedFile> out_;
 };
 
 }  // namespace dda

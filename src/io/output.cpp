@@ -271,24 +271,40 @@ namespace {
 // A reused output directory: the files of the kinds a run writes (docs/output-format.md) are
 // removed first, so that an earlier, longer run's VTK frames or a monitors.csv this scene
 // would not write are not taken for this run's. Nothing else in the directory is touched.
+// Only regular files and symbolic links (whose targets stay) are removed: a name of the
+// run's that holds anything else (a directory, a device, a FIFO) stops the run before
+// anything is removed or written.
 void remove_earlier_run(const fs::path& dir) {
   std::error_code ec;
+  std::vector<fs::path> earlier;
+  const auto take = [&](const fs::path& path) {
+    const fs::file_status st = fs::symlink_status(path, ec);
+    if (ec || st.type() == fs::file_type::not_found) return;
+    if (st.type() != fs::file_type::regular && st.type() != fs::file_type::symlink) {
+      fail("a file of the run's is in the way and not a regular file; dda does not replace it:",
+           path);
+    }
+    earlier.push_back(path);
+  };
   for (const char* name : {"summary.json", "history.csv", "monitors.csv", "blocks.pvd",
                            "contacts.pvd"}) {
-    fs::remove(dir / name, ec);
-    if (ec) fail("cannot remove an earlier run's file (" + ec.message() + ")", dir / name);
+    take(dir / name);
   }
-  if (!fs::is_directory(dir / "vtk", ec)) return;
-  std::vector<fs::path> frames;
-  for (const fs::directory_entry& entry : fs::directory_iterator(dir / "vtk", ec)) {
-    const std::string name = entry.path().filename().string();
-    const bool frame = (name.rfind("step_", 0) == 0 || name.rfind("contacts_", 0) == 0) &&
-                       entry.path().extension() == ".vtp";
-    if (frame) frames.push_back(entry.path());
+  if (fs::exists(fs::symlink_status(dir / "vtk", ec)) && !fs::is_directory(dir / "vtk", ec)) {
+    fail("the run's frame directory is in the way and not a directory; dda does not replace it:",
+         dir / "vtk");
   }
-  for (const fs::path& frame : frames) {
-    fs::remove(frame, ec);
-    if (ec) fail("cannot remove an earlier run's file (" + ec.message() + ")", frame);
+  if (fs::is_directory(dir / "vtk", ec)) {
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir / "vtk", ec)) {
+      const std::string name = entry.path().filename().string();
+      const bool frame = (name.rfind("step_", 0) == 0 || name.rfind("contacts_", 0) == 0) &&
+                         entry.path().extension() == ".vtp";
+      if (frame) take(entry.path());
+    }
+  }
+  for (const fs::path& path : earlier) {
+    fs::remove(path, ec);
+    if (ec) fail("cannot remove an earlier run's file (" + ec.message() + ")", path);
   }
 }
 
@@ -297,22 +313,14 @@ void remove_earlier_run(const fs::path& dir) {
 OutputWriter::OutputWriter(std::filesystem::path dir, const Scene& scene)
     : dir_(std::move(dir)), scene_(scene) {
   std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec) fail("cannot create directory (" + ec.message() + ")", dir_);
+  remove_earlier_run(dir_);
   fs::create_directories(dir_ / "vtk", ec);
   if (ec) fail("cannot create directory (" + ec.message() + ")", dir_ / "vtk");
-  remove_earlier_run(dir_);
-  const fs::path history = dir_ / "history.csv";
-  history_.open(history, std::ios::trunc);
-  if (!history_) fail("cannot open", history);
-  history_ << kHistoryHeader << '\n';
-  history_.flush();
-  if (!history_) fail("cannot write", history);
+  history_.emplace(dir_ / "history.csv", std::string(kHistoryHeader) + "\n");
   if (!scene.monitors.empty()) {
-    const fs::path monitors = dir_ / "monitors.csv";
-    monitors_.open(monitors, std::ios::trunc);
-    if (!monitors_) fail("cannot open", monitors);
-    monitors_ << kMonitorsHeader << '\n';
-    monitors_.flush();
-    if (!monitors_) fail("cannot write", monitors);
+    monitors_.emplace(dir_ / "monitors.csv", std::string(kMonitorsHeader) + "\n");
   }
 }
 
@@ -330,13 +338,20 @@ void OutputWriter::record(const World& world) {
                              world.energy.load_work, world.energy.friction_dissipation,
                              world.energy.plastic_dissipation, world.energy.damping_dissipation,
                              world.energy.remainder, world.energy.multiplier_work};
-    history_ << world.step << ',' << num(world.time) << ',' << i;
-    for (double v : values) history_ << ',' << num(v);
-    history_ << '\n';
+    history_->append(std::to_string(world.step));
+    history_->append(',');
+    history_->append(num(world.time));
+    history_->append(',');
+    history_->append(std::to_string(i));
+    for (double v : values) {
+      history_->append(',');
+      history_->append(num(v));
+    }
+    history_->append('\n');
   }
-  // Flushed every time: a run that dies keeps every row written so far.
-  history_.flush();
-  if (!history_) fail("cannot write", dir_ / "history.csv");
+  // Written every time, the step's rows at once: a run that dies keeps every whole step
+  // written so far, and a write that fails leaves the file at the end of the last one.
+  history_->commit();
   if (!world.monitors.empty()) record_monitors(world);
 
   const std::string name = frame_name(world.step);
@@ -363,12 +378,18 @@ void OutputWriter::record_monitors(const World& world) {
     const Block& b = world.blocks[static_cast<std::size_t>(m.block)];
     const Vec2 u = m.current - m.initial;
     const Vec2 v = b.fixed ? Vec2::Zero() : Vec2(t.at(m.current - b.moments.centroid) * b.velocity);
-    monitors_ << world.step << ',' << num(world.time) << ',' << m.name;
-    for (double x : {m.current.x(), m.current.y(), u.x(), u.y(), v.x(), v.y()}) monitors_ << ',' << num(x);
-    monitors_ << '\n';
+    monitors_->append(std::to_string(world.step));
+    monitors_->append(',');
+    monitors_->append(num(world.time));
+    monitors_->append(',');
+    monitors_->append(m.name);
+    for (double x : {m.current.x(), m.current.y(), u.x(), u.y(), v.x(), v.y()}) {
+      monitors_->append(',');
+      monitors_->append(num(x));
+    }
+    monitors_->append('\n');
   }
-  monitors_.flush();
-  if (!monitors_) fail("cannot write", dir_ / "monitors.csv");
+  monitors_->commit();
 }
 
 namespace {

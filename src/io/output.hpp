@@ -3,10 +3,11 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "io/output_file.hpp"
 #include "solver/run.hpp"
 #include "solver/scene.hpp"
 #include "solver/world.hpp"
@@ -19,11 +20,15 @@ std::string format_full_precision(double x);
 
 class OutputWriter {
  public:
-  // Creates `dir` (and dir/vtk) if needed and opens history.csv. Throws std::runtime_error
-  // naming the path when it cannot write there.
+  // Creates `dir` (and dir/vtk) if needed, removes an earlier run's files and opens
+  // history.csv. Throws std::runtime_error naming the path when it cannot write there, or
+  // when one of the run's file names holds something other than a regular file (then
+  // before anything is removed or written).
   OutputWriter(std::filesystem::path dir, const Scene& scene);
 
   // Appends one history row per block for the world's current step and writes a VTK frame.
+  // A write that fails throws naming the file; history.csv and monitors.csv then end with
+  // the last whole step written before (io/output_file.hpp, StreamedFile).
   void record(const World& world);
 
   // Writes summary.json and the .pvd index. Called once at the end, also after divergence,
@@ -35,8 +40,8 @@ class OutputWriter {
   const Scene& scene_;
   void record_monitors(const World& world);
 
-  std::ofstream history_;
-  std::ofstream monitors_;  // open when the scene has monitors
+  std::optional<StreamedFile> history_;
+  std::optional<StreamedFile> monitors_;  // open when the scene has monitors
   std::vector<std::pair<double, std::string>> frames_;  // (time, relative file name)
   std::vector<std::pair<double, std::string>> contact_frames_;  // the same for contacts
 };

@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <fstream>
 #include <stdexcept>
+#include <string_view>
+
+#include "io/output_file.hpp"
 
 namespace dda {
 namespace {
@@ -164,10 +166,8 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
 
 void write_png(const std::string& path, const Image& image) {
   const std::vector<std::uint8_t> bytes = encode_png(image);
-  std::ofstream out(path, std::ios::binary);
-  if (out) out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw std::runtime_error("cannot write PNG file " + path);
+  // Through a temporary file and a rename: a full disk leaves no part of a picture.
+  write_file_whole(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace dda

@@ -28,8 +28,8 @@ std::uint32_t adler32(std::span<const std::uint8_t> data);
 // Throws std::invalid_argument when the image is empty or its pixel buffer has the wrong size.
 std::vector<std::uint8_t> encode_png(const Image& image);
 
-// Writes encode_png(image) to `path`. Throws std::runtime_error naming the path when the file
-// cannot be written.
+// Writes encode_png(image) to `path`, whole (io/output_file.hpp, write_file_whole). Throws
+// std::runtime_error naming the path when the file cannot be written.
 void write_png(const std::string& path, const Image& image);
 
 }  // namespace dda
