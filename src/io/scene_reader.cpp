@@ -532,8 +532,12 @@ BlockSpec read_block(const Field& f, const std::vector<Material>& materials) {
 }
 
 // Blocks may touch but not overlap at the start: an overlap is a contact penetrated far
-// beyond anything the contact springs allow. The broad phase keeps this near-linear in the
-// number of blocks. Reported at the later block of the first overlapping pair in list order.
+// beyond anything the contact springs allow. A sweep over the blocks' bounding boxes
+// (first_overlapping_pair) keeps this near-linear in the number of blocks and stops at the
+// first overlapping pair it meets, reported at the later block of that pair in list order.
+// (It used to list every pair of overlapping boxes first and then test them in list order:
+// 5000 identical blocks took 2.9 s and 147 MB, 10 000 12 s and 545 MB, 100 000 ran out of
+// memory, all to report blocks[1] and blocks[0].)
 //
 // Touching tolerance of a pair: 1e-9 of the larger block's bounding-box diagonal (scale-free;
 // far below any real overlap, far above rounding in the distances, ~1e-16 relative), plus
@@ -550,16 +554,14 @@ void check_no_overlap(const std::vector<Field>& fields, const std::vector<BlockS
     size.push_back((box.max - box.min).norm());
     reach.push_back(std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff()));
   }
-  std::vector<std::pair<int, int>> pairs = overlapping_pairs(boxes);
-  std::sort(pairs.begin(), pairs.end(), [](const auto& p, const auto& q) {
-    return std::pair(p.second, p.first) < std::pair(q.second, q.first);
-  });
-  for (const auto& [i, j] : pairs) {
+  const auto found = first_overlapping_pair(boxes, [&](int i, int j) {
     const double tol = 1e-9 * std::max(size[i], size[j]) + 1e-13 * std::max(reach[i], reach[j]);
-    if (polygons_overlap(blocks[i].vertices, blocks[j].vertices, tol)) {
-      fields[j].fail("overlaps blocks[" + std::to_string(i) +
-                     "] at the start (blocks may touch but not overlap)");
-    }
+    return polygons_overlap(blocks[i].vertices, blocks[j].vertices, tol);
+  });
+  if (found) {
+    const auto [i, j] = *found;
+    fields[j].fail("overlaps blocks[" + std::to_string(i) +
+                   "] at the start (blocks may touch but not overlap)");
   }
 }
 
