@@ -56,7 +56,7 @@ std::string write_cut_picture(const CutModel& cut, const std::string& scene_path
 std::string counts_text(const std::map<std::string, int>& counts) {
   std::string text;
   for (const auto& [name, count] : counts) {
-    text += (text.empty() ? "" : ", ") + name + " " + std::to_string(count);
+    text += (text.empty() ? "" : ", ") + input::shown_text(name) + " " + std::to_string(count);
   }
   return text;
 }

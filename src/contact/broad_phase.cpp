@@ -33,4 +33,39 @@ std::vector<std::pair<int, int>> overlapping_pairs(const std::vector<Box>& boxes
   return pairs;
 }
 
+std::optional<std::pair<int, int>> first_overlapping_pair(
+    const std::vector<Box>& boxes, const std::function<bool(int, int)>& overlap) {
+  const int n = static_cast<int>(boxes.size());
+  if (n < 2) return std::nullopt;
+  // The axis: the one along which the boxes' mean length is the smaller share of their span,
+  // so that fewer boxes start before another ends (a column of blocks is swept along y).
+  Vec2 lo = boxes[0].min, hi = boxes[0].max, length = Vec2::Zero();
+  for (const Box& b : boxes) {
+    lo = lo.cwiseMin(b.min);
+    hi = hi.cwiseMax(b.max);
+    length += b.max - b.min;
+  }
+  const Vec2 span = hi - lo;
+  // length / span compared without dividing (a span may be 0: all boxes at one place).
+  const int axis = length.x() * span.y() <= length.y() * span.x() ? 0 : 1;
+  const int other = 1 - axis;
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return boxes[a].min[axis] < boxes[b].min[axis] ||
+           (boxes[a].min[axis] == boxes[b].min[axis] && a < b);
+  });
+  for (int k = 0; k < n; ++k) {
+    const Box& a = boxes[order[k]];
+    for (int m = k + 1; m < n && boxes[order[m]].min[axis] <= a.max[axis]; ++m) {
+      const Box& b = boxes[order[m]];
+      if (b.min[other] <= a.max[other] && a.min[other] <= b.max[other]) {
+        const int i = std::min(order[k], order[m]), j = std::max(order[k], order[m]);
+        if (overlap(i, j)) return std::pair(i, j);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace dda

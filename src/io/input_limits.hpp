@@ -31,11 +31,24 @@ inline constexpr double kLargestAcceleration = 1e6;
 inline constexpr double kLargestForce = 1e18;
 // N/m^3: the water's unit weight, the densest matter at the largest gravity.
 inline constexpr double kLargestUnitWeight = kLargestDensity * kLargestAcceleration;
-// m: coordinates, at most 7 times the distance from the Earth to the Sun; and the smallest
-// polygon, 1 nm across. Between the two, squared lengths and the blocks' second moments
-// (size^4 x density) stay inside double precision's normal range.
-inline constexpr double kLargestCoordinate = 1e12;
+// m: coordinates (vertices, pins, loads, monitors, the phreatic line, a model's joints), at
+// most 2.5 times the Earth's circumference: map coordinates (UTM northings below 1e7 m) pass.
+// Larger coordinates were read and then failed at the first solve: a block reaching 1e10 m
+// ("not positive definite" at step 1: its 6x6 matrices mix terms in 1, size and size^2),
+// a phreatic line at 1e11 m (1e15 Pa on the joints, "not positive definite" at step 114) or
+// at 1e9 m (energy created, step 114). And the smallest polygon, 1 nm across: between the
+// two, squared lengths and the blocks' second moments (size^4 x density) stay inside double
+// precision's normal range.
+inline constexpr double kLargestCoordinate = 1e8;
 inline constexpr double kSmallestPolygon = 1e-9;
+// Poisson's ratio: at most 0.499 (the elastic matrix is singular at 0.5; lambda / mu =
+// 2 nu / (1 - 2 nu) is 499 there). Measured on the default scene's octagon landing on its
+// floor (energy gained at the impact, as a share of the scene's scale): 1.2e-5 to 1.7e-5
+// from nu = 0.25 to 0.4995, 3.8e-5 at 0.4999, then about tenfold for each further 9 nearer
+// 0.5: 2.8e-4 at 0.49999, 3.8e-3 at 0.499999, 2.7 % at 0.4999999 (the energy guard stops the
+// run), 2666 % at 0.4999999999; a plastic column cuts 52 of 300 steps at 0.4999999999 and
+// none up to 0.4999999. Undrained soil is modelled with 0.49 to 0.495.
+inline constexpr double kLargestPoisson = 0.499;
 // s: time steps, stage durations and the run's end time. The step loop itself gives up on
 // a step cut below 1e-9 of its schedule; below this the inertia term m/dt^2 would pass
 // 1e18 m and a run could not cover a second in 2^31 steps.

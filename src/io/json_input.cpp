@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <sstream>
+#include <utility>
 
 namespace dda::input {
 
@@ -258,8 +258,57 @@ json parse_strict_json(const std::string& text, const std::string& source) {
   return builder.take();
 }
 
+namespace {
+
+// Bytes of the first `count` UTF-8 characters of `text` (all of it if it has fewer), and the
+// number of characters in all. Continuation bytes (10xxxxxx) do not start a character.
+std::pair<std::size_t, std::size_t> utf8_prefix(std::string_view text, std::size_t count) {
+  std::size_t characters = 0, prefix = text.size();
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if ((static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) continue;
+    if (characters == count) prefix = std::min(prefix, i);
+    ++characters;
+  }
+  return {prefix, characters};
+}
+
+}  // namespace
+
+std::string shown_text(std::string_view text) {
+  const auto [prefix, characters] = utf8_prefix(text, kShownCharacters);
+  if (characters <= kShownCharacters) return std::string(text);
+  return std::string(text.substr(0, prefix)) + "... (" + std::to_string(characters) +
+         " characters)";
+}
+
+std::string quoted_text(std::string_view text) {
+  const auto [prefix, characters] = utf8_prefix(text, kShownCharacters);
+  // Strings from a parsed document are valid UTF-8; other text (a line of a CSV record) may
+  // not be, and is shown with its invalid bytes replaced rather than failing to print.
+  const auto quote = [](std::string_view t) {
+    return json(std::string(t)).dump(-1, ' ', false, json::error_handler_t::replace);
+  };
+  if (characters <= kShownCharacters) return quote(text);
+  std::string head = quote(text.substr(0, prefix));
+  head.insert(head.size() - 1, "...");
+  return head + " (" + std::to_string(characters) + " characters)";
+}
+
+std::string quoted_name_list(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size() && i < kShownNames; ++i) {
+    out += (i == 0 ? "" : ", ") + quoted_text(names[i]);
+  }
+  if (names.size() > kShownNames) {
+    out += " and " + std::to_string(names.size() - kShownNames) + " more";
+  }
+  return out;
+}
+
 std::string member_path(std::string_view parent, std::string_view key) {
-  if (!is_plain_identifier(key)) return std::string(parent) + "[" + json(key).dump() + "]";
+  if (!is_plain_identifier(key) || key.size() > kShownCharacters) {
+    return std::string(parent) + "[" + quoted_text(key) + "]";
+  }
   if (parent.empty()) return std::string(key);
   return std::string(parent) + "." + std::string(key);
 }
@@ -300,11 +349,9 @@ std::string Field::describe() const {
     case json::value_t::number_float:
       return "the number " + format_number(value_->get<double>());
     case json::value_t::string: {
-      // Long strings are cut: the message is about the type, not the text.
-      constexpr std::size_t kShown = 40;
-      const auto& s = value_->get_ref<const std::string&>();
-      const std::string shown = s.size() > kShown ? s.substr(0, kShown) + "..." : s;
-      return "a string (" + json(shown).dump() + ")";
+      // Long strings are cut (never inside a UTF-8 character, which json::dump refuses:
+      // a 2-byte character at byte 40 used to end the program with exit 1).
+      return "a string (" + quoted_text(value_->get_ref<const std::string&>()) + ")";
     }
     case json::value_t::array:
       return "a list of " + std::to_string(value_->size()) + " element(s)";
@@ -466,17 +513,54 @@ std::string quoted_list(std::initializer_list<std::string_view> names) {
 }
 
 std::string read_input_file(const std::string& path, std::string_view kind) {
+  namespace fs = std::filesystem;
   const std::string name = path.empty() ? "(empty file name)" : path;
+  // Looked at before opening: opening a pipe with no writer waits for ever, and reading a
+  // device such as /dev/zero never ends.
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
+  const fs::file_status status = fs::status(path, ec);
+  if (ec && status.type() != fs::file_type::not_found) {
+    throw InputError(name + ": cannot open file (" + ec.message() + ")");
+  }
+  if (status.type() == fs::file_type::not_found) {
+    throw InputError(name + ": cannot open file (" + std::strerror(ENOENT) + ")");
+  }
+  if (status.type() == fs::file_type::directory) {
     throw InputError(name + ": cannot open: it is a directory, not " + std::string(kind));
   }
+  if (status.type() != fs::file_type::regular) {
+    const char* what = status.type() == fs::file_type::character   ? "a character device"
+                       : status.type() == fs::file_type::block      ? "a block device"
+                       : status.type() == fs::file_type::fifo       ? "a pipe (FIFO)"
+                       : status.type() == fs::file_type::socket     ? "a socket"
+                                                                    : "not a regular file";
+    throw InputError(name + ": not read: it is " + std::string(what) + ", not a regular file; " +
+                     std::string(kind) + " must be a regular file (save the input to one first)");
+  }
+  const auto too_large = [&](const std::string& size) {
+    return InputError(name + ": not read: the file is " + size + ", larger than the " +
+                      std::to_string(kLargestInputBytes >> 20) + " MiB (" +
+                      std::to_string(kLargestInputBytes) +
+                      " bytes) this program reads (see docs/scene-format.md, \"Limits\")");
+  };
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (!ec && size > kLargestInputBytes) throw too_large(std::to_string(size) + " bytes");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(name + ": cannot open file (" + std::strerror(errno) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Stop as soon as the text passes the limit, so that a file that grew since it was
+  // measured is refused all the same rather than read whole.
+  std::string text;
+  text.reserve(ec ? 0 : static_cast<std::size_t>(size));
+  std::array<char, 1 << 16> buffer{};
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    text.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kLargestInputBytes) {
+      throw too_large("more than " + std::to_string(kLargestInputBytes) + " bytes");
+    }
+  }
   if (in.bad()) throw InputError(name + ": cannot read file (" + std::strerror(errno) + ")");
-  return text.str();
+  return text;
 }
 
 }  // namespace dda::input

@@ -98,7 +98,8 @@ PlaneMode read_plane(const Field& f) {
   const std::string name = f.string();
   if (name == "strain") return PlaneMode::Strain;
   if (name == "stress") return PlaneMode::Stress;
-  f.fail("unknown plane mode \"" + name + "\" (known: " + quoted_list({"strain", "stress"}) + ")");
+  f.fail("unknown plane mode " + quoted_text(name) + " (known: " +
+         quoted_list({"strain", "stress"}) + ")");
 }
 
 Material read_material(const std::string& name, const Field& f, PlaneMode plane) {
@@ -110,7 +111,7 @@ Material read_material(const std::string& name, const Field& f, PlaneMode plane)
   const Field model_field = f.member("model");
   const std::string model_text = model_field.string();
   const std::optional<MaterialModel> model = parse_model(model_text);
-  if (!model) model_field.fail(unknown_model(model_text).message);
+  if (!model) model_field.fail(unknown_model(shown_text(model_text)).message);
   check_keys_of_model(f, *model);
 
   Material m;
@@ -123,6 +124,14 @@ Material read_material(const std::string& name, const Field& f, PlaneMode plane)
   // The bounds keep the elastic matrix positive definite (bulk and shear moduli positive).
   p.poisson = number_in_range(f.member("poisson"), -1.0, true, 0.5, true,
                               "greater than -1 and less than 0.5");
+  if (p.poisson > kLargestPoisson) {
+    f.member("poisson").fail(
+        format_number(p.poisson) + " is beyond what this program computes with: at most " +
+        format_number(kLargestPoisson) +
+        " (nearer 0.5 the bulk modulus grows without bound, and impacts gain energy or steps "
+        "stall in contact cuts; 0.499 is already nearly incompressible, lambda / mu = 499; see "
+        "docs/scene-format.md, \"Limits\")");
+  }
   // Types here; ranges and the rules between parameters are validate_material's.
   auto read_strength = [&f](FrictionalStrength& s) {
     s.cohesion = within_limit(f.member("cohesion"), f.member("cohesion").number(), kLargestStress, "Pa");
@@ -142,7 +151,7 @@ Material read_material(const std::string& name, const Field& f, PlaneMode plane)
       if (auto g = f.optional_member("match")) {
         const std::string match_text = g->string();
         const std::optional<DruckerPragerMatch> match = parse_match(match_text);
-        if (!match) g->fail(unknown_match(match_text).message);
+        if (!match) g->fail(unknown_match(shown_text(match_text)).message);
         dp.match = *match;
       }
       p.model_parameters = std::move(dp);

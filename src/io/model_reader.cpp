@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "io/input_limits.hpp"
 #include "io/json_input.hpp"
 #include "io/polygon_input.hpp"
 #include "io/scene_reader.hpp"
@@ -74,9 +75,8 @@ std::string known_name(const Field& f, const std::vector<std::string>& names,
                        const std::string& kind) {
   const std::string name = f.string();
   if (std::find(names.begin(), names.end(), name) != names.end()) return name;
-  std::string known;
-  for (const std::string& n : names) known += (known.empty() ? "\"" : ", \"") + n + "\"";
-  f.fail("unknown " + kind + " \"" + name + "\" (" + kind + "s defined: " + known + ")");
+  f.fail("unknown " + kind + " " + input::quoted_text(name) + " (" + kind +
+         "s defined: " + input::quoted_name_list(names) + ")");
 }
 
 template <class Named>
@@ -125,7 +125,9 @@ JointSetModel read_joint_set(const Field& f, const std::vector<std::string>& joi
                                     std::to_string(kMaxTracesPerSet) + " are allowed per set");
     }
   }
-  if (auto g = f.optional_member("offset")) t.offset = g->number();
+  if (auto g = f.optional_member("offset")) {
+    t.offset = input::within_limit(*g, g->number(), input::kLargestCoordinate, "m");
+  }
   if (auto g = f.optional_member("dip_scatter")) t.dip_scatter = non_negative_number(*g);
   if (auto g = f.optional_member("spacing_scatter")) t.spacing_scatter = non_negative_number(*g);
   if (auto g = f.optional_member("joint_material")) {
@@ -138,9 +140,10 @@ SingleJointModel read_single_joint(const Field& f, const std::vector<std::string
                                    double diagonal) {
   f.expect_keys({"from", "to", "joint_material"});
   SingleJointModel joint;
-  joint.from = f.member("from").vec2("[x, y]");
+  const Field from = f.member("from");
+  joint.from = input::within_limit(from, from.vec2("[x, y]"), input::kLargestCoordinate, "m");
   const Field to = f.member("to");
-  joint.to = to.vec2("[x, y]");
+  joint.to = input::within_limit(to, to.vec2("[x, y]"), input::kLargestCoordinate, "m");
   // Zero length at the domain's scale (the polygons' own degeneracy tolerance).
   if ((joint.to - joint.from).norm() <= 1e-12 * diagonal) {
     to.fail("is the same point as \"from\"; a joint is a segment of positive length");

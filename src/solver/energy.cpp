@@ -302,7 +302,19 @@ void start_energy_account(World& world) {
   for (const PointLoad& load : world.loads) {
     if (!world.blocks[static_cast<std::size_t>(load.block)].fixed) reach += load.force.norm() * world.w0;
   }
-  world.energy.scale = std::max(e.kinetic + e.strain_energy + e.contact_energy, reach);
+  // A scene at rest (no gravity, no loads, nothing moving or strained) had a scale of 0,
+  // and its round-off (1.9e-23 J/m for a pinned bar) was "inf %" of it: the guard stopped
+  // it at step 1. The floor: the strain energy the free blocks would hold at a strain of
+  // 1e-6 (a microstrain, the resolution of a strain gauge), E A (1e-6)^2 / 2 each; far
+  // above round-off (1e-4 J/m for a 1 m^2 block at E = 1e9 Pa, against 1e-23), far below
+  // the scale of any scene that moves (m g w0 is 2.6e4 J/m for that block under gravity).
+  double rest = 0.0;
+  for (const Block& b : world.blocks) {
+    if (b.fixed) continue;
+    rest += 0.5 * material_of(world, b).young * b.moments.area * kRestScaleStrain *
+            kRestScaleStrain;
+  }
+  world.energy.scale = std::max({e.kinetic + e.strain_energy + e.contact_energy, reach, rest});
 }
 
 void record_spring_energies(std::vector<Contact>& contacts, double penalty) {

@@ -47,6 +47,10 @@ struct StepEnergy {
   std::vector<Suspect> suspects;
 };
 
+// The strain at which the free blocks' strain energy sets the floor of the energy scale
+// (start_energy_account; docs/energy-balance.md, "The energy scale and the guard").
+inline constexpr double kRestScaleStrain = 1e-6;
+
 // The energy guard: a message naming the step and the suspect contacts when the
 // unexplained gain passes `tolerance` x the scene's energy scale; empty otherwise.
 std::string energy_guard_message(const World& world, const StepEnergy& step, double tolerance);

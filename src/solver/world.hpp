@@ -144,7 +144,9 @@ struct EnergyLedger {
   int remainder_min_step = 0;         // the step where it was reached
   // The scene's own energy scale, against which the remainder is judged: the largest of
   // the energy it starts with (less potential), the work gravity and the point loads would
-  // do moving every free block by w0, the largest kinetic energy and |load work| so far.
+  // do moving every free block by w0, the largest kinetic energy and |load work| so far,
+  // and at least the free blocks' strain energy at a strain of kRestScaleStrain (a scene
+  // at rest).
   double scale = 0.0;
 };
 

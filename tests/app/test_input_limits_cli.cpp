@@ -129,20 +129,23 @@ TEST_CASE("coordinates whose double-precision spacing is coarser than the contac
           "refused, map coordinates are not",
           "[input][cli]") {
   dda::test::TempDir dir("dda-limits-");
-  // At 1e11 m doubles are 1.5e-5 m apart: a block there cannot fall by less, and that is
-  // more than 1/1000 of the allowed penetration (4e-4 x w0 = 2 mm). (At 1e15 m, the issue's
-  // case, 0.125 m apart, the coordinate bound of 1e12 m refuses it first.)
-  for (const double offset : {1e11, 1e15}) {
+  // At 1e7 m doubles are 1.9e-9 m apart: a block there cannot fall by less, and that is
+  // more than 1/1000 of the allowed penetration of a 0.1 mm block on a 1 mm floor (4e-4 x w0
+  // = 2e-7 m). (At 1e11 m and 1e15 m, the issue's cases, the coordinate bound of 1e8 m
+  // refuses them first.)
+  for (const double offset : {1e7, 1e11, 1e15}) {
     json far = base_scene();
     for (json& b : far["blocks"]) {
-      for (json& v : b["vertices"]) v[0] = v[0].get<double>() + offset;
+      for (json& v : b["vertices"]) {
+        v = {v[0].get<double>() * 1e-4 + offset, v[1].get<double>() * 1e-4};
+      }
     }
     const Run refused = run_scene(dir, "far", far);
     INFO(refused.result.output);
     CHECK(refused.result.exit_code == 2);
     CHECK(dda::test::contains(refused.result.output, "far.json: blocks[0].vertices[0]: "));
     CHECK(dda::test::contains(refused.result.output,
-                              offset == 1e11 ? "1.52587890625e-05 m apart" : "at most 1e+12 m"));
+                              offset == 1e7 ? "1.862645149230957e-09 m apart" : "at most 1e+08 m"));
   }
 
   // Map coordinates (1e6 m east, 5e6 m north: spaced 9.3e-10 m apart, 1/2e6 of the allowed
@@ -357,7 +360,7 @@ TEST_CASE("coordinates of 1e200 or blocks 1e-300 m across are refused with the t
   INFO(r1.result.output);
   CHECK(r1.result.exit_code == 2);
   CHECK(dda::test::contains(r1.result.output, "big.json: blocks[1].vertices[0]: element 1 1e+200 m "
-                                              "is beyond what this program computes with: at most 1e+12 m"));
+                                              "is beyond what this program computes with: at most 1e+08 m"));
   json tiny = base_scene();
   tiny["blocks"][1]["vertices"] = {{0, 0}, {1e-300, 0}, {1e-300, 1e-300}, {0, 1e-300}};
   const Run r2 = run_scene(dir, "tiny", tiny);

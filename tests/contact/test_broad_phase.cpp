@@ -78,3 +78,49 @@ TEST_CASE("overlapping_pairs of no boxes and of one box is empty", "[contact-geo
   CHECK(overlapping_pairs({}).empty());
   CHECK(overlapping_pairs({Box{Vec2(0, 0), Vec2(1, 1)}}).empty());
 }
+
+TEST_CASE("first_overlapping_pair finds the pair a test accepts, and stops there",
+          "[contact-geometry]") {
+  // 100 000 identical boxes: the first pair met is (0, 1), after one test (listing every
+  // pair first, as the scene reader did, is 5e9 pairs).
+  std::vector<Box> same(100000, Box{Vec2(0, 0), Vec2(1, 1)});
+  int tests = 0;
+  auto found = first_overlapping_pair(same, [&](int, int) { return ++tests > 0; });
+  REQUIRE(found);
+  CHECK(*found == std::pair(0, 1));
+  CHECK(tests == 1);
+
+  // A test that accepts nothing sees exactly the pairs overlapping_pairs lists (300 random
+  // boxes on a 1/4 m grid, many touching), each once, with i < j.
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> corner(0, 40), size(0, 8);
+  std::vector<Box> boxes;
+  for (int k = 0; k < 300; ++k) {
+    const Vec2 lo(0.25 * corner(rng), 0.25 * corner(rng));
+    boxes.push_back({lo, lo + Vec2(0.25 * size(rng), 0.25 * size(rng))});
+  }
+  std::vector<std::pair<int, int>> seen;
+  found = first_overlapping_pair(boxes, [&](int i, int j) {
+    seen.emplace_back(i, j);
+    return false;
+  });
+  CHECK_FALSE(found);
+  std::sort(seen.begin(), seen.end());
+  CHECK(seen == overlapping_pairs(boxes));
+
+  // A column of 2000 unit boxes stacked along y (each touching the next) is swept along y:
+  // each box meets only the one above it, 1999 tests, not the 2e6 pairs side by side in x.
+  std::vector<Box> column;
+  for (int k = 0; k < 2000; ++k) column.push_back({Vec2(0, k), Vec2(1, k + 1)});
+  tests = 0;
+  found = first_overlapping_pair(column, [&](int i, int j) {
+    ++tests;
+    return i == 1000 && j == 1001;
+  });
+  REQUIRE(found);
+  CHECK(*found == std::pair(1000, 1001));
+  CHECK(tests == 1001);
+  // Fewer than two boxes: no pair.
+  CHECK_FALSE(first_overlapping_pair({}, [](int, int) { return true; }));
+  CHECK_FALSE(first_overlapping_pair({Box{Vec2(0, 0), Vec2(1, 1)}}, [](int, int) { return true; }));
+}

@@ -230,6 +230,39 @@ TEST_CASE("energy account: plastic dissipation of a hardening Mohr-Coulomb soil 
              WithinRel(stress_area(w.control.rotation_update, soil) * density, 1e-12));
 }
 
+TEST_CASE("energy account: a scene at rest has a floor under its energy scale, and runs",
+          "[energy]") {
+  // A 2 m x 0.5 m bar pinned near one end, with no gravity, no load and no velocity: its
+  // energy scale was 0, and the round-off of its first step (1.9e-23 J/m) "inf %" of it, so
+  // the guard stopped it at step 1. The floor is the strain energy of the free blocks at a
+  // strain of 1e-6: E A (1e-6)^2 / 2 = 1e9 x 1 x 1e-12 / 2 = 5e-4 J/m.
+  Scene s = test::base_scene(20, 0.005);
+  s.gravity = Vec2::Zero();
+  s.blocks.push_back(test::block(test::rectangle(0.0, 0.0, 2.0, 0.5)));
+  BlockSpec fixed = test::block(test::rectangle(-5.0, -5.0, 1.0, 1.0));
+  fixed.fixed = true;  // adds nothing to the floor
+  s.blocks.push_back(fixed);
+  PinSpec pin;
+  pin.point = Vec2(0.1, 0.25);
+  pin.block = 0;
+  s.pins.push_back(pin);
+  World w = make_world(s);
+  CHECK_THAT(w.energy.scale, WithinRel(0.5 * 1e9 * 1.0 * kRestScaleStrain * kRestScaleStrain, 1e-12));
+  const RunStats stats = run_quietly(w);
+  INFO(stats.message);
+  CHECK_FALSE(stats.diverged);
+  CHECK(stats.steps == 20);
+  // The remainder stays round-off, far below the floor (2 % of it would stop the run).
+  CHECK(std::abs(w.energy.remainder) < 1e-12 * w.energy.scale);
+  CHECK(energy_guard_message(w, StepEnergy{}, w.control.energy_tolerance).empty());
+
+  // A scene that moves keeps its own scale: the floor is far below m g w0.
+  Scene falling = s;
+  falling.gravity = Vec2(0.0, -9.81);
+  const World f = make_world(falling);
+  CHECK(f.energy.scale > 1e6 * 0.5 * 1e9 * kRestScaleStrain * kRestScaleStrain);
+}
+
 TEST_CASE("energy guard: a run that creates energy stops with exit 3 and says so", "[energy][cli]") {
   // scenes/pendulum.json under post_adjustment (Ke; Koo and Chern): the rigid rotation of the
   // update does not match Shi's linear T inside the step and the pinned bar gains about 2 %
