@@ -13,25 +13,16 @@
 #include <vector>
 
 #include "support/cli_helpers.hpp"
+#include "support/cli_scenes.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
 
-// A 1 m square resting on a fixed 10 m x 1 m floor.
-json base_scene() {
-  return json::parse(R"json({
-    "control": {"time_step": 0.01, "steps": 3},
-    "materials": {"rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}},
-    "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
-    "gravity": [0, -9.81],
-    "blocks": [
-      {"vertices": [[-5, -1], [5, -1], [5, 0], [-5, 0]], "material": "rock", "fixed": true},
-      {"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock"}
-    ]
-  })json");
-}
+using dda::test::base_scene;
+using dda::test::run_scene;
+using Run = dda::test::SceneRun;
 
 std::string exe() { return dda::test::shell_quote(DDA_EXE); }
 
@@ -40,18 +31,6 @@ dda::test::CommandResult run_on(const std::string& command, const fs::path& inpu
   return dda::test::run_command(exe() + " " + command + " " +
                                 dda::test::shell_quote(input.string()) + " --out " +
                                 dda::test::shell_quote(out.string()));
-}
-
-struct Run {
-  dda::test::CommandResult result;
-  fs::path out;
-};
-
-Run run_scene(const dda::test::TempDir& dir, const std::string& name, const json& scene) {
-  const fs::path file = dir.path / (name + ".json");
-  dda::test::write_file(file, scene.dump());
-  const fs::path out = dir.path / ("out-" + name);
-  return {run_on("run", file, out), out};
 }
 
 // Lines of output that start with "dda: error:" (one message per refusal).

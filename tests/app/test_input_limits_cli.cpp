@@ -12,40 +12,16 @@
 #include <vector>
 
 #include "support/cli_helpers.hpp"
+#include "support/cli_scenes.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
 
-// A 1 m square resting on a fixed 10 m x 1 m floor: the scene each case edits.
-json base_scene() {
-  return json::parse(R"json({
-    "control": {"time_step": 0.01, "steps": 3},
-    "materials": {"rock": {"model": "elastic", "density": 2700, "young": 1e9, "poisson": 0.25}},
-    "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
-    "gravity": [0, -9.81],
-    "blocks": [
-      {"vertices": [[-5, -1], [5, -1], [5, 0], [-5, 0]], "material": "rock", "fixed": true},
-      {"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]], "material": "rock"}
-    ]
-  })json");
-}
-
-struct Run {
-  dda::test::CommandResult result;
-  fs::path out;
-};
-
-Run run_scene(const dda::test::TempDir& dir, const std::string& name, const json& scene) {
-  const fs::path file = dir.path / (name + ".json");
-  dda::test::write_file(file, scene.dump());
-  const fs::path out = dir.path / ("out-" + name);
-  return {dda::test::run_command(dda::test::shell_quote(DDA_EXE) + " run " +
-                                 dda::test::shell_quote(file.string()) + " --out " +
-                                 dda::test::shell_quote(out.string())),
-          out};
-}
+using dda::test::base_scene;
+using dda::test::run_scene;
+using Run = dda::test::SceneRun;
 
 // history.csv as numbers: rows of the given block.
 std::vector<std::vector<double>> history_rows(const fs::path& out, int block) {
