@@ -222,6 +222,15 @@ int follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx,
   return moved;
 }
 
+// follow_spins after a solve, in both contact loops: its check (at secant_tolerances, built
+// only then) when `check`, i.e. when the scene has plastic blocks and the block terms hold
+// spins followed from an iterate; otherwise the spins follow unchecked.
+int follow_answer_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx, bool check) {
+  if (!check) return follow_spins(world, d, ctx);
+  const std::vector<double> tolerance = secant_tolerances(world, world.contacts);
+  return follow_spins(world, d, ctx, &tolerance);
+}
+
 // finite_rotation, once the contacts agree: when every block whose secant angle is off
 // (`off`, from follow_secant_angles) touches nothing (its contacts all open, which add no
 // terms), its rows of the step's system are its own block terms alone, so its increments are
@@ -474,8 +483,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
       // A spin off the answer's mean rates counts as a secant angle off it: both are the
       // step's own answer fed back into its equations.
       if (spinning) {
-        const std::vector<double> tolerance = secant_tolerances(world, world.contacts);
-        secants_moved += follow_spins(world, r.d, ctx, followed_spins_assembled ? &tolerance : nullptr);
+        secants_moved += follow_answer_spins(world, r.d, ctx, plastic && followed_spins_assembled);
       }
     }
     if (plastic) {
@@ -690,9 +698,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
         }
         // A spin off the answer's mean rates counts as a secant angle off it.
         if (spinning) {
-          const std::vector<double> tolerance = secant_tolerances(world, world.contacts);
-          secants_moved +=
-              follow_spins(world, d, ctx, followed_spins_assembled ? &tolerance : nullptr);
+          secants_moved += follow_answer_spins(world, d, ctx, plastic && followed_spins_assembled);
         }
       }
       if (plastic) {
