@@ -1,5 +1,7 @@
 #include "app/cut_command.hpp"
 
+#include "app/interrupt.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -96,6 +98,13 @@ void print_statistics(const Model& model, const CutModel& cut, const CutScene& s
   }
 }
 
+// SIGINT or SIGTERM during a cut: it cannot stop inside CGAL's arrangement, so it stops at
+// the next stage: before the scene is written (nothing is), or after it (no picture).
+int stopped(const std::string& what) {
+  std::cerr << "dda: cut interrupted (signal " << interrupt_signal() << "); " << what << "\n";
+  return interrupted_exit_code();
+}
+
 }  // namespace
 
 int cut_command(const std::string& model_path, const std::string& out_path) {
@@ -112,6 +121,7 @@ int cut_command(const std::string& model_path, const std::string& out_path) {
   const CutModel cut = cut_model(model.spec);
   const CutScene scene = cut_scene(model, cut);
   const std::string text = scene_text(scene.scene);
+  if (interrupt_signal() != 0) return stopped("nothing written");
   write_text_file(out_path, text);
   // The scene is read back as `dda run` reads it. A cut whose blocks a scene cannot hold
   // (e.g. a block too thin to have an area at the reader's tolerance) is the model's doing:
@@ -129,6 +139,7 @@ int cut_command(const std::string& model_path, const std::string& out_path) {
               << ", which is not a regular file\n";
     return 0;
   }
+  if (interrupt_signal() != 0) return stopped("the scene is in " + out_path + ", no picture drawn");
   const std::string picture = write_cut_picture(cut, out_path);
   std::cerr << "dda: cut: picture of the blocks in " << picture << "\n";
   return 0;

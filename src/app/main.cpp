@@ -79,7 +79,6 @@ int run_command(const std::string& scene_path, const std::string& out_dir) {
   dda::OutputWriter writer(out_dir, scene);
   dda::ProgressBar progress(dda::run_length(scene), dda::run_unit(scene));
   const int every = scene.control.output_every;
-  dda::watch_for_interrupts();
   const auto observe = [&](const dda::World& w, const dda::RunStats&) {
     if (w.step % every == 0 || dda::is_finished(w)) writer.record(w);
     progress.update(dda::run_position(scene, w));
@@ -131,7 +130,6 @@ int material_point_command(const std::string& spec_path, const std::string& out_
   double total = 0.0;
   for (const dda::PathSegment& segment : spec.path) total += segment.steps;
   dda::ProgressBar progress(total, "increments");
-  dda::watch_for_interrupts();
   // Rows are written as they come (none kept); flushed every so many so that a run stopped
   // any way but by a signal still keeps nearly all of them, and at the end.
   constexpr int kFlushEvery = 4096;
@@ -169,6 +167,10 @@ int main(int argc, char** argv) {
   // which the output code reports as a file it cannot write (exit 1), keeping only whole
   // files and whole rows (io/output_file.hpp).
   std::signal(SIGXFSZ, SIG_IGN);
+  // SIGINT and SIGTERM from the first moment: one arriving while the input is read or a
+  // cut is made is then seen by the command, which stops at its next step, increment or
+  // stage with a message, instead of the program vanishing without a word.
+  dda::watch_for_interrupts();
   CLI::App app{"dda: two-dimensional Discontinuous Deformation Analysis"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("dda ") + DDA_VERSION);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 #include "kinematics/block_matrices.hpp"
 #include "kinematics/frames.hpp"
@@ -272,6 +273,9 @@ double max_displacement_share(const World& world, const Eigen::VectorXd& d) {
   for (const Block& b : world.blocks) {
     if (b.fixed) continue;
     const Vec6 db = increments_of(b, d);
+    // A non-finite answer (a solve that broke down) is too large a motion: the step is cut
+    // rather than committed (std::max would pass over a nan).
+    if (!db.allFinite()) return std::numeric_limits<double>::infinity();
     // The motion relative to the translation (rotation and strain, which the step
     // linearises) against the step limit; the whole motion against the reach the contact
     // search covered.
