@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_2.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <optional>
@@ -53,6 +54,54 @@ Vec2 plain(const Point& p) {
 Vec2 approximate(const Point& p) {
   const auto a = p.approx();
   return Vec2(0.5 * (a.x().inf() + a.x().sup()), 0.5 * (a.y().inf() + a.y().sup()));
+}
+
+// The part of segment a-b (as parameters 0 <= t0 < t1 <= 1) that the cut needs: from a
+// little before its first crossing of the domain's boundary to a little after its last,
+// unless an end lies inside (then from that end). Whatever lies beyond is outside the
+// domain and would be removed edge by edge after the sweep, each removal walking the
+// outside's boundary: in a domain with a long thin part outside its bounding box (a 100 km
+// strip with a notch), that removal took minutes and gigabytes. `margin` (m) keeps each
+// crossing inside the piece inserted, so that the exact boundary still cuts it there.
+// Parallel to an edge, or in doubt: the whole segment. Nothing of it near the domain: none.
+std::optional<std::pair<double, double>> part_near_domain(const Polygon& domain, const Vec2& a,
+                                                          const Vec2& b, double margin) {
+  const Vec2 ab = b - a;
+  const double length = ab.norm();
+  if (!(length > 0.0)) return std::pair{0.0, 1.0};
+  constexpr double kSlack = 1e-9;  // crossings at an edge's end count (through a corner)
+  double first = 2.0, last = -1.0;
+  for (std::size_t i = 0; i < domain.size(); ++i) {
+    const Vec2& p = domain[i];
+    const Vec2 pq = domain[(i + 1) % domain.size()] - p;
+    const double denom = cross(ab, pq);
+    if (std::abs(denom) <= 1e-12 * length * pq.norm()) {
+      if (std::abs(cross(p - a, ab)) <= 1e-9 * length * (length + (p - a).norm())) {
+        return std::pair{0.0, 1.0};  // along an edge's line: kept whole
+      }
+      continue;
+    }
+    const double t = cross(p - a, pq) / denom, u = cross(p - a, ab) / denom;
+    if (u < -kSlack || u > 1.0 + kSlack || t < -kSlack || t > 1.0 + kSlack) continue;
+    first = std::min(first, t);
+    last = std::max(last, t);
+  }
+  if (first > last) {  // no crossing: wholly inside, or wholly outside
+    if (contains_point(domain, 0.5 * (a + b))) return std::pair{0.0, 1.0};
+    return std::nullopt;
+  }
+  const double m = margin / length;
+  const double t0 = contains_point(domain, a) ? 0.0 : std::max(0.0, first - m);
+  const double t1 = contains_point(domain, b) ? 1.0 : std::min(1.0, last + m);
+  return std::pair{t0, t1};
+}
+
+// The point at parameter t of segment a-b, exactly on its line (so that clipping a joint
+// moves no block corner by a rounding).
+Point along(const Point& a, const Point& b, double t) {
+  if (t == 0.0) return a;
+  if (t == 1.0) return b;
+  return a + Kernel::FT(t) * (b - a);
 }
 
 // The vertices of a boundary cycle, those between two collinear edges dropped (exactly).
@@ -283,8 +332,18 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
     const Vec2& next = domain[(i + 1) % domain.size()];
     segments.push_back(segment(exact(domain[i]), exact(next), kNoGroup));
   }
+  Vec2 lo = domain.front(), hi = lo;
+  for (const Vec2& p : domain) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double margin = 1e-6 * (hi - lo).norm() + 1e-9;
   for (const JointSegment& j : joints) {
-    if (j.from != j.to) segments.push_back(segment(exact(j.from), exact(j.to), j.group));
+    if (j.from == j.to) continue;
+    const auto part = part_near_domain(domain, j.from, j.to, margin);
+    if (!part) continue;
+    const Point a = exact(j.from), b = exact(j.to);
+    segments.push_back(segment(along(a, b, part->first), along(a, b, part->second), j.group));
   }
   Arrangement arr;
   CGAL::insert(arr, segments.begin(), segments.end());  // one sweep

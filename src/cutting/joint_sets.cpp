@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <random>
 
 namespace dda {
@@ -17,12 +19,44 @@ double normal(std::mt19937_64& rng) {
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
 }
 
-// The segments of the line through `p` along unit `d` inside the box (with a margin of one
-// trace beyond it), cut into traces with bridges, or whole.
+// The parameter range [t0, t1] of the line through `p` along unit `d` inside the box
+// widened by `margin` on every side (Liang and Barsky's slab clipping); empty (t0 > t1) when
+// the line misses it.
+std::pair<double, double> clip_to_box(const Vec2& p, const Vec2& d, const Vec2& lo, const Vec2& hi,
+                                      double margin) {
+  double t0 = -std::numeric_limits<double>::infinity(), t1 = -t0;
+  for (int k = 0; k < 2; ++k) {
+    const double a = lo[k] - margin - p[k], b = hi[k] + margin - p[k];
+    if (d[k] == 0.0) {
+      if (a > 0.0 || b < 0.0) return {1.0, 0.0};
+      continue;
+    }
+    const double ta = a / d[k], tb = b / d[k];
+    t0 = std::max(t0, std::min(ta, tb));
+    t1 = std::min(t1, std::max(ta, tb));
+  }
+  return {t0, t1};
+}
+
+// The segments of the line through `p` along unit `d` inside the box (with a small margin
+// beyond it, so that a trace crossing the boundary is cut by it, not ending on it), cut into traces
+// with bridges, or whole. Clipped to the box itself, not to its projection on the line: in a
+// tall narrow domain the projection made every line hundreds of metres long and every pair of
+// lines cross outside the domain (a 20 m x 10 km strip: 57 s and 6.8 GB for 13 000 blocks).
 void add_line(const JointSetSpec& set, const Vec2& p, const Vec2& d, const Vec2& lo,
               const Vec2& hi, std::mt19937_64& rng, std::vector<JointSegment>& out) {
-  // The line's parameter range over the box: the corners' projections, widened a little so
-  // that a trace crossing the boundary is cut by it, not ending on it.
+  // The margin is a share of the box's smaller side: beyond the domain each line is a stub
+  // that the cut removes, and in a strip 10 km long and 10 m high a share of the diagonal
+  // (100 m) made a mesh of crossings outside it whose removal took most of the cut.
+  const Vec2 size = hi - lo;
+  const double margin = 0.01 * std::min(size.x(), size.y()) + 1e-9;
+  const auto [c0, c1] = clip_to_box(p, d, lo, hi, margin);
+  if (!set.trace_length) {
+    if (c1 > c0) out.push_back({p + c0 * d, p + c1 * d});
+    return;
+  }
+  // The traces' phase runs from the box's projection on the line (as it always did, so that
+  // a model's random traces stay where they were); only their pieces in the box are kept.
   double t0 = 0.0, t1 = 0.0;
   bool first = true;
   for (const Vec2& c : {lo, hi, Vec2(lo.x(), hi.y()), Vec2(hi.x(), lo.y())}) {
@@ -31,18 +65,14 @@ void add_line(const JointSetSpec& set, const Vec2& p, const Vec2& d, const Vec2&
     t1 = first ? t : std::max(t1, t);
     first = false;
   }
-  const double margin = 0.01 * (hi - lo).norm() + 1e-9;
-  t0 -= margin;
-  t1 += margin;
-  if (!set.trace_length) {
-    out.push_back({p + t0 * d, p + t1 * d});
-    return;
-  }
+  const double phase_margin = 0.01 * size.norm() + 1e-9;
+  t0 -= phase_margin;
+  t1 += phase_margin;
   const double length = *set.trace_length;
   const double period = length + set.bridge;
   double t = t0 - uniform(rng) * period;  // a random phase per line
   for (; t < t1; t += period) {
-    const double a = std::max(t, t0), b = std::min(t + length, t1);
+    const double a = std::max({t, t0, c0}), b = std::min({t + length, t1, c1});
     if (b > a) out.push_back({p + a * d, p + b * d});
   }
 }

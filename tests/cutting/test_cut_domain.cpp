@@ -102,6 +102,37 @@ TEST_CASE("a concave domain cut by random traces keeps its area and no overlaps"
   CHECK(corner);
 }
 
+TEST_CASE("joints leaving and re-entering a notched domain cut it as if whole",
+          "[cutting]") {
+  // A U (30 m x 20 m with a 10 m x 10 m notch from the top, area 500 m^2). Each joint is
+  // inserted only from just before its first crossing of the boundary to just after its
+  // last (the cut of a long thin domain used to spend minutes removing the mesh of
+  // crossings outside it), so these check what must survive that: y = 15 leaves the left
+  // prong and re-enters the right one (the part across the notch stays, and is removed
+  // outside); a joint wholly in the notch is dropped; one along the base edge is kept. The
+  // grid x = 5, 15, 25 and y = 5, 15 makes 12 blocks: 3 in each outer column; in each inner
+  // column a 10 x 5 rectangle below, an L of 75 m^2 around the notch's corner, and a
+  // 5 x 5 square at the prong's top.
+  const Polygon domain{{0, 0}, {30, 0}, {30, 20}, {20, 20}, {20, 10}, {10, 10}, {10, 20}, {0, 20}};
+  const std::vector<JointSegment> joints{
+      {{-5, 5}, {35, 5}},    {{-5, 15}, {35, 15}},  {{5, -5}, {5, 25}}, {{15, -5}, {15, 25}},
+      {{25, -5}, {25, 25}},  {{12, 15}, {18, 16}},  {{-5, 0}, {35, 0}}};
+  const CutResult cut = cut_domain(domain, joints);
+  CHECK(cut.blocks.size() == 12);
+  CHECK(total_area(cut.blocks) == Approx(500.0).epsilon(1e-12));
+  check_blocks_valid(cut.blocks, 30.0);
+  int squares = 0, rectangles = 0, ells = 0;
+  for (const Polygon& b : cut.blocks) {  // exact: every corner is on the integer grid
+    const double a = signed_area(b);
+    squares += a == Approx(25.0).epsilon(1e-12) && b.size() == 4;
+    rectangles += a == Approx(50.0).epsilon(1e-12) && b.size() == 4;
+    ells += a == Approx(75.0).epsilon(1e-12) && b.size() == 6;
+  }
+  CHECK(squares == 6);
+  CHECK(rectangles == 4);
+  CHECK(ells == 2);
+}
+
 TEST_CASE("a block enclosing another is bridged into simple polygons", "[cutting]") {
   // A closed square of traces (3,3)-(7,7) inside a 10 m square touches nothing: the outer
   // block would have a hole. Two bridges, from the hole's lowest-left corner (3, 3) down to

@@ -266,8 +266,24 @@ def command_line(rng, kind, dda, inp, work):
         detail = rng.choice([1, 100, 1000, 5000, 20000, 100000, 400000])
     elif fault == "signal":
         detail = (rng.choice([signal.SIGTERM, signal.SIGINT]),
-                  rng.choice([rng.uniform(0.008, 0.03), rng.uniform(0.008, 0.3)]))
+                  rng.choice([rng.uniform(0.0, 0.02), rng.uniform(0.0, 0.3)]))
     return args, out, fault, detail
+
+
+def handlers_installed(pid, signum, wait_for):
+    """Waits until the program catches `signum` (its SigCgt bit in /proc), or has ended.
+    A signal before that, while the dynamic loader runs, ends any program by its default
+    action, with nothing said: not the program's doing, so not sent."""
+    while True:
+        try:
+            with open("/proc/%d/status" % pid) as f:
+                caught = next(int(l.split()[1], 16) for l in f if l.startswith("SigCgt:"))
+        except (OSError, StopIteration):
+            return False
+        if caught >> (signum - 1) & 1:
+            return True
+        if wait_for(0.001):
+            return False
 
 
 def run_one(args, fault, detail, timeout, memory_mib, sanitized):
@@ -302,7 +318,8 @@ def run_one(args, fault, detail, timeout, memory_mib, sanitized):
                 return False
             time.sleep(0.002)
 
-    if fault == "signal" and not wait_for(detail[1]):
+    if fault == "signal" and handlers_installed(proc.pid, detail[0], wait_for) and \
+            not wait_for(detail[1]):
         proc.send_signal(detail[0])
         sent = detail[0]
     if status is None and not wait_for(timeout):
