@@ -167,6 +167,9 @@ int main(int argc, char** argv) {
   // which the output code reports as a file it cannot write (exit 1), keeping only whole
   // files and whole rows (io/output_file.hpp).
   std::signal(SIGXFSZ, SIG_IGN);
+  // Likewise a FIFO (or pipe) whose reader has gone: SIGPIPE would end the program without a
+  // word; ignored, the write fails with EPIPE and is reported as a file it cannot write.
+  std::signal(SIGPIPE, SIG_IGN);
   // SIGINT and SIGTERM from the first moment: one arriving while the input is read or a
   // cut is made is then seen by the command, which stops at its next step, increment or
   // stage with a message, instead of the program vanishing without a word.

@@ -42,6 +42,21 @@ int write_all(int fd, std::string_view bytes) {
 
 constexpr const char* kNotReplaced = "; nothing of it was kept (a file of that name from before stays as it was)";
 
+// The path a chain of symbolic links ends at (relative targets taken from each link's
+// directory), or `path` itself when it is no link; at most 40 links followed, as the kernel.
+fs::path named_by_links(const fs::path& path) {
+  fs::path at = path;
+  for (int hops = 0; hops < 40; ++hops) {
+    struct stat st {};
+    if (::lstat(at.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return at;
+    std::error_code ec;
+    const fs::path target = fs::read_symlink(at, ec);
+    if (ec) return at;
+    at = target.is_absolute() ? target : at.parent_path() / target;
+  }
+  return at;
+}
+
 }  // namespace
 
 OutputTarget check_output_file(const fs::path& path) {
@@ -68,13 +83,9 @@ void write_file_whole(const fs::path& path, std::string_view bytes) {
     if (err != 0) fail(path, reason(err), "");
     return;
   }
-  // A symbolic link to a regular file stays a link: the file it names is replaced.
-  fs::path real = path;
-  std::error_code ec;
-  if (target == OutputTarget::Regular && fs::is_symlink(path, ec)) {
-    const fs::path resolved = fs::canonical(path, ec);
-    if (!ec) real = resolved;
-  }
+  // A symbolic link stays a link: the file it names is replaced, or created when the link
+  // names nothing yet (a dangling link was once replaced by a regular file).
+  const fs::path real = named_by_links(path);
   const fs::path tmp = real.string() + ".tmp";
   struct stat st {};
   if (::lstat(tmp.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {

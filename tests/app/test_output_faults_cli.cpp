@@ -294,3 +294,37 @@ TEST_CASE("dda fos checks its output directory before any work, and writes its r
   CHECK_FALSE(fs::exists(limited / "report.json"));
   CHECK(leftovers(dir.path).empty());
 }
+
+TEST_CASE("a dangling link at an output path stays a link; a FIFO whose reader leaves is exit 1",
+          "[cli][output]") {
+  const dda::test::TempDir dir("dda-out-faults-links-");
+  // dda cut --out a link that names no file yet: the scene is written where the link points
+  // and the link stays (it was replaced by a regular file, the link lost).
+  const fs::path link = dir.path / "scene.json";
+  fs::create_symlink("made-later.json", link);
+  const CommandResult c = dda_with("cut " + kModel + " --out " + shell_quote(link.string()));
+  INFO(c.output);
+  CHECK(c.exit_code == 0);
+  CHECK(fs::is_symlink(link));
+  CHECK(fs::is_regular_file(dir.path / "made-later.json"));
+  CHECK(contains(dda::test::read_file(dir.path / "made-later.json"), "\"blocks\""));
+  CHECK(leftovers(dir.path).empty());
+
+  // dda material-point into a FIFO whose reader takes 10 bytes and leaves: the next write
+  // fails with EPIPE, reported as a file it cannot write (exit 1), not SIGPIPE (exit 141,
+  // nothing said). 200 000 increments write some 20 MB, far more than a pipe holds.
+  const fs::path spec = dir.path / "spec.json";
+  dda::test::write_file(spec, R"json({
+    "material": {"model": "elastic", "density": 2000, "young": 5e7, "poisson": 0.3},
+    "path": [{"steps": 200000, "strain": {"exx": 0.01}}]})json");
+  const fs::path fifo = dir.path / "rows.csv";
+  REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
+  const CommandResult m = dda::test::run_command(
+      "sh -c " + shell_quote("head -c 10 " + shell_quote(fifo.string()) + " >/dev/null & exec " + kExe +
+                             " material-point " + shell_quote(spec.string()) + " --out " +
+                             shell_quote(fifo.string())));
+  INFO(m.output);
+  CHECK(m.exit_code == 1);
+  CHECK(contains(m.output, "dda: error: output: cannot write " + fifo.string() + " (Broken pipe)"));
+  CHECK(fs::is_fifo(fifo));
+}

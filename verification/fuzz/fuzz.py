@@ -305,7 +305,8 @@ def run_one(args, fault, detail, timeout, memory_mib, sanitized):
     status, usage = None, None
 
     def wait_for(seconds):
-        # os.wait4 rather than Popen.wait: it gives this child's own peak memory.
+        # os.wait4 rather than Popen.wait: it gives this child's own peak memory. Signals go
+        # by os.kill, not Popen.send_signal, which polls and could reap the child first.
         nonlocal status, usage
         end = time.monotonic() + seconds
         while True:
@@ -320,15 +321,15 @@ def run_one(args, fault, detail, timeout, memory_mib, sanitized):
 
     if fault == "signal" and handlers_installed(proc.pid, detail[0], wait_for) and \
             not wait_for(detail[1]):
-        proc.send_signal(detail[0])
+        os.kill(proc.pid, detail[0])
         sent = detail[0]
     if status is None and not wait_for(timeout):
         long_run = True
-        proc.send_signal(signal.SIGTERM)
+        os.kill(proc.pid, signal.SIGTERM)
         sent = signal.SIGTERM
         if not wait_for(20):
             hang = True
-            proc.kill()
+            os.kill(proc.pid, signal.SIGKILL)
             wait_for(60)
     reader.join()
     rss = usage.ru_maxrss / 1024 if usage else None
