@@ -1,6 +1,7 @@
 // Broad phase: which pairs of blocks are close enough to need a narrow-phase look.
-// Sort and sweep along x over axis-aligned boxes, so the cost grows as N log N (plus the
-// number of close pairs), not N^2. Pure function over plain data.
+// Sort and sweep over axis-aligned boxes, along the axis on which they lie side by side
+// least (x for a wall, y for a column), so the cost grows as N log N (plus the pairs that
+// overlap along that axis), not N^2. Pure function over plain data.
 #pragma once
 
 #include <functional>
@@ -21,7 +22,8 @@ inline bool boxes_overlap(const Box& a, const Box& b) {
          b.min.y() <= a.max.y();
 }
 
-// All pairs (i, j), i < j, whose boxes overlap (boxes_overlap), in increasing (i, j) order.
+// All pairs (i, j), i < j, whose boxes overlap (boxes_overlap), in increasing (i, j) order
+// (the same list whichever axis the sweep takes).
 // (The sweep tests only the ends boxes_overlap needs: a box met later in the sweep starts no
 // earlier in x, so it cannot end before the first one starts.)
 std::vector<std::pair<int, int>> overlapping_pairs(const std::vector<Box>& boxes);

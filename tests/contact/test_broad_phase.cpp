@@ -74,6 +74,28 @@ TEST_CASE("overlapping_pairs agrees with a brute-force check on 300 random boxes
   CHECK(std::find(got.begin(), got.end(), std::make_pair(304, 305)) != got.end());
 }
 
+TEST_CASE("overlapping_pairs of a column agrees with a brute-force check", "[contact-geometry]") {
+  // 400 unit blocks stacked in y, each touching the next, and every fifth one a little wider
+  // so that it also touches a thin block hanging beside the column: the sweep takes y here
+  // (along x every box overlaps every other), and must give the same list. Expected pairs:
+  // 399 in the column and 80 with the thin blocks beside it (exact touching, on 1/4 m).
+  std::vector<Box> boxes;
+  for (int i = 0; i < 400; ++i) {
+    const double wide = i % 5 == 0 ? 0.25 : 0.0;
+    boxes.push_back(Box{Vec2(0, i), Vec2(1 + wide, i + 1)});
+  }
+  for (int i = 0; i < 400; i += 5) boxes.push_back(Box{Vec2(1.25, i + 0.25), Vec2(1.5, i + 0.75)});
+  std::vector<std::pair<int, int>> brute;
+  const int n = static_cast<int>(boxes.size());
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if (boxes_overlap(boxes[i], boxes[j])) brute.emplace_back(i, j);
+    }
+  }
+  CHECK(brute.size() == 399 + 80);
+  CHECK(overlapping_pairs(boxes) == brute);
+}
+
 TEST_CASE("overlapping_pairs of no boxes and of one box is empty", "[contact-geometry]") {
   CHECK(overlapping_pairs({}).empty());
   CHECK(overlapping_pairs({Box{Vec2(0, 0), Vec2(1, 1)}}).empty());
