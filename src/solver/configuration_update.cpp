@@ -293,6 +293,23 @@ void update_configuration(World& world, const Eigen::VectorXd& d, const StepCont
   remember_rotation_increments(world, d);
 }
 
+std::optional<std::size_t> first_inverted_block(const World& world, const Eigen::VectorXd& d,
+                                                const StepContext& ctx) {
+  const RotationUpdate treatment = world.control.rotation_update;
+  Polygon after;
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
+    if (b.fixed || b.rigid) continue;
+    const Vec6 db = increments_of(b, d);
+    const Mat2 column = solved_rotation_column(&ctx, static_cast<int>(i), db[kR0]);
+    after.resize(b.vertices.size());
+    for (std::size_t k = 0; k < after.size(); ++k) after[k] = vertex_after(treatment, b, k, db, &column);
+    const double area = signed_area(after);
+    if (!(area > 0.0)) return i;  // also a nan
+  }
+  return std::nullopt;
+}
+
 void update_stresses(World& world) {
   const bool in_block_frame = keeps_block_frame(world.control.rotation_update);
   for (Block& b : world.blocks) {

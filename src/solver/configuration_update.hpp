@@ -3,6 +3,8 @@
 // strains, stresses and velocities that follow from the step's increments d.
 #pragma once
 
+#include <optional>
+
 #include <Eigen/Dense>
 
 #include "solver/step_context.hpp"
@@ -82,6 +84,14 @@ Mat2 solved_rotation_column(const StepContext* ctx, int index, double r0);
 // db, without moving anything (the same rule per treatment; tests check that the two agree).
 Vec2 vertex_after(RotationUpdate treatment, const Block& b, std::size_t k, const Vec6& db,
                   const Mat2* column = nullptr);
+
+// The first deformable block (not fixed, not rigid) that the increments `d` would turn inside
+// out: its area after the step (its vertices by vertex_after, with ctx's rotation columns)
+// at most zero, or not finite. None: nullopt. A block far too soft for its load is crushed
+// through zero area over a few steps; its polar decomposition (or its Jacobian) has no
+// meaning there, and committing it wrote nan into the state.
+std::optional<std::size_t> first_inverted_block(const World& world, const Eigen::VectorXd& d,
+                                                const StepContext& ctx);
 
 // Stress from total strain (elastic, never added): s = s_initial + D e in the global frame,
 // or, for the local-frame treatments, s_initial + D e^ in the block frame turned to the

@@ -309,6 +309,27 @@ std::string describe_failure(const World& world, const std::string& what) {
   return out.str();
 }
 
+// When a deformable block has been squeezed to a hundredth of its area or less, the likely
+// reason a solve broke down (its mass and stiffness vanish with its area): said with it.
+std::string crushed_block_note(const World& world) {
+  double smallest = 0.01;
+  std::optional<std::size_t> which;
+  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+    const Block& b = world.blocks[i];
+    if (b.fixed || b.rigid || !(b.initial_area > 0.0)) continue;
+    const double share = b.moments.area / b.initial_area;
+    if (share < smallest) {
+      smallest = share;
+      which = i;
+    }
+  }
+  if (!which) return "";
+  std::ostringstream out;
+  out << "; block " << *which << " has been squeezed to " << smallest
+      << " of its area: its material is far too soft for its load";
+  return out.str();
+}
+
 int closed_contacts(const std::vector<Contact>& contacts) {
   return static_cast<int>(std::count_if(contacts.begin(), contacts.end(), [](const Contact& c) {
     return c.state.mode != ContactMode::Open;
@@ -951,6 +972,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   int penetration_cuts = 0;
   bool was_cut = false;
   std::string material_failure;  // why the last attempt's return map failed, if it did
+  std::string shape_failure;     // the block the last attempt turned inside out, if it did
 
   for (;;) {
     if (dt < kSmallestStepShare * scheduled_dt) {
@@ -961,6 +983,10 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
         return {false, describe_failure(world, "the material of " + material_failure +
                                                    ", at every step length down to 1e-9 of "
                                                    "the scheduled one")};
+      }
+      if (!shape_failure.empty()) {
+        return {false, describe_failure(world, shape_failure + ", at every step length down to "
+                                                               "1e-9 of the scheduled one")};
       }
       return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
                                              "the contacts or the motion do not settle")};
@@ -974,7 +1000,8 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
     stats.augmentations += loop.augmentations;
     if (!loop.solved) {
       return {false, describe_failure(world, "the global system could not be solved "
-                                             "(not positive definite or not finite)")};
+                                             "(not positive definite or not finite)" +
+                                                 crushed_block_note(world))};
     }
     // 4. Checks: an unsettled loop, too large a motion or too deep a penetration cut dt and
     //    redo the attempt. The penalty is never changed: raising it while contacts are loaded
@@ -1000,9 +1027,27 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
         return {false, describe_failure(world, what.str())};
       }
       material_failure = *cut == CutReason::Material ? loop.material_reason : std::string();
+      shape_failure.clear();
       count_cut(*cut, stats);
       was_cut = true;
       dt *= cut_share(*cut, moved, loop.material_fraction, 1.0, deepest_overshoot);
+      continue;
+    }
+    // 4b. A block the step would turn inside out (its area through zero: a block far too soft
+    //     for its load, crushed over a few steps) is a motion too large for the step: cut,
+    //     and when no step length keeps it whole, stop naming it (committed, its polar
+    //     decomposition wrote nan into the state).
+    if (const std::optional<std::size_t> inverted = first_inverted_block(world, loop.d, ctx)) {
+      const Block& b = world.blocks[*inverted];
+      std::ostringstream what;
+      what << "block " << *inverted << " is turned inside out: its area (" << b.moments.area
+           << " m^2 at the step's start, " << b.initial_area << " at the run's) falls through "
+           << "zero; its material is far too soft for its load";
+      shape_failure = what.str();
+      material_failure.clear();
+      count_cut(CutReason::Displacement, stats);
+      was_cut = true;
+      dt *= kCutMin;
       continue;
     }
     remember_step(world, scheduled_dt, first_dt, dt, was_cut, moved, stats);

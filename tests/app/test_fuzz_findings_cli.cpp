@@ -51,3 +51,39 @@ TEST_CASE("a step whose solve breaks down into nan is cut, never committed", "[i
   CHECK(summary["cut_steps"].get<int>() > 0);  // the 2000 s steps were cut
   CHECK(checked > 10);
 }
+
+TEST_CASE("a block crushed through zero area stops the run naming it, with no nan written",
+          "[input][cli]") {
+  // A 1.2 m x 0.3 m pad of E = 1e-9 Pa (a mutated rubber) under a 0.8 m concrete block: the
+  // pad has no stiffness to speak of and is crushed flat. Its area went through zero at
+  // step 102, the polar decomposition of its inverted map gave nan, and the run stopped a
+  // step later with nan in history.csv and the VTK files. Now a step that would turn a block
+  // inside out is cut, and the run stops (exit 3) with a message that names the block and
+  // says why, its last recorded state finite.
+  dda::test::TempDir dir("dda-fuzz-crush-");
+  const json scene = json::parse(R"json({
+    "gravity": [0.0, -9.81],
+    "control": {"time_step": 0.002, "end_time": 1.0, "output_every": 25},
+    "materials": {"concrete": {"model": "elastic", "density": 2400, "young": 3e10, "poisson": 0.2,
+                               "rigid": true},
+                  "rubber": {"model": "elastic", "density": 1200, "young": 1e-9, "poisson": 0.45}},
+    "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
+    "blocks": [
+      {"vertices": [[-2, -0.5], [2, -0.5], [2, 0], [-2, 0]], "material": "concrete", "fixed": true},
+      {"vertices": [[-1.6, 0], [-0.4, 0], [-0.4, 0.3], [-1.6, 0.3]], "material": "rubber"},
+      {"vertices": [[-1.4, 0.35], [-0.6, 0.35], [-0.6, 0.95], [-1.4, 0.95]], "material": "concrete"}
+    ]
+  })json");
+  const dda::test::SceneRun run = dda::test::run_scene(dir, "crush", scene);
+  INFO(run.result.output);
+  CHECK(run.result.exit_code == 3);
+  CHECK(dda::test::contains(run.result.output, "block 1 "));
+  CHECK(dda::test::contains(run.result.output, "far too soft for its load"));
+  const std::string history = dda::test::read_file(run.out / "history.csv");
+  REQUIRE_FALSE(history.empty());
+  CHECK_FALSE(dda::test::contains(history, "nan"));
+  CHECK_FALSE(dda::test::contains(history, "inf"));
+  for (const auto& e : fs::directory_iterator(run.out / "vtk")) {
+    CHECK_FALSE(dda::test::contains(dda::test::read_file(e.path()), "nan"));
+  }
+}
