@@ -302,6 +302,12 @@ std::optional<std::size_t> first_inverted_block(const World& world, const Eigen:
     if (b.fixed || b.rigid) continue;
     const Vec6 db = increments_of(b, d);
     const Mat2 column = solved_rotation_column(&ctx, static_cast<int>(i), db[kR0]);
+    if (places_by_polar(treatment, b)) {
+      // Placed by one linear map from the initial polygon: its area is det(map) x A0.
+      const double det = polar_map(b, db, column).determinant();
+      if (!(det > 0.0)) return i;
+      continue;
+    }
     after.resize(b.vertices.size());
     for (std::size_t k = 0; k < after.size(); ++k) after[k] = vertex_after(treatment, b, k, db, &column);
     const double area = signed_area(after);

@@ -295,7 +295,7 @@ TEST_CASE("dda fos checks its output directory before any work, and writes its r
   CHECK(leftovers(dir.path).empty());
 }
 
-TEST_CASE("a dangling link at an output path stays a link; a FIFO whose reader leaves is exit 1",
+TEST_CASE("a dangling link at an output path stays a link, and a FIFO whose reader leaves is exit 1",
           "[cli][output]") {
   const dda::test::TempDir dir("dda-out-faults-links-");
   // dda cut --out a link that names no file yet: the scene is written where the link points
