@@ -98,8 +98,9 @@ void print_statistics(const Model& model, const CutModel& cut, const CutScene& s
   }
 }
 
-// SIGINT or SIGTERM during a cut: it cannot stop inside CGAL's arrangement, so it stops at
-// the next stage: before the scene is written (nothing is), or after it (no picture).
+// SIGINT or SIGTERM before the cut or while the scene is written: it stops at the next
+// stage, before the scene is written (nothing is), or after it (no picture). During the
+// cut itself the program ends at once (exit_at_once_on_interrupt).
 int stopped(const std::string& what) {
   std::cerr << "dda: cut interrupted (signal " << interrupt_signal() << "); " << what << "\n";
   return interrupted_exit_code();
@@ -118,10 +119,14 @@ int cut_command(const std::string& model_path, const std::string& out_path) {
   // gets no picture: there is no file beside it to put one.
   const bool scene_is_file = check_output_file(out_path) != OutputTarget::Stream;
   if (scene_is_file) check_output_file(picture_path(out_path));
+  if (interrupt_signal() != 0) return stopped("nothing written");
+  // The cut cannot stop inside CGAL's arrangement and has written nothing yet: a signal
+  // ends it at once.
+  exit_at_once_on_interrupt("dda: cut interrupted while cutting; nothing written\n");
   const CutModel cut = cut_model(model.spec);
   const CutScene scene = cut_scene(model, cut);
   const std::string text = scene_text(scene.scene);
-  if (interrupt_signal() != 0) return stopped("nothing written");
+  exit_at_once_on_interrupt(nullptr);
   write_text_file(out_path, text);
   // The scene is read back as `dda run` reads it. A cut whose blocks a scene cannot hold
   // (e.g. a block too thin to have an area at the reader's tolerance) is the model's doing:

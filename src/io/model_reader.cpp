@@ -34,6 +34,32 @@ constexpr std::string_view kSceneKeys[] = {"description", "gravity", "plane",   
 // lines or a million traces is far beyond any slope study (issue 11 asks for ~2000 blocks).
 constexpr long kMaxLinesPerSet = 100000;
 constexpr long kMaxTracesPerSet = 1000000;
+// And on the blocks the sets make together, estimated from their crossings: a cut takes
+// about 3 kB a block and 30 s per 100 000 (docs/model-format.md, "Size, time and memory"),
+// a run some 37 kB a block; 300 000 blocks is a gigabyte to cut and more than a run can take
+// in a day.
+constexpr double kMaxEstimatedBlocks = 300000.0;
+
+// The crossings of the joint sets inside the domain, pair by pair: lines of spacings s_i,
+// s_j at an angle t cross A |sin t| / (s_i s_j) times over an area A, times each set's share
+// of its lines that is trace (trace_length / (trace_length + bridge)). About the number of
+// blocks when there are two sets or more.
+double estimated_crossings(const std::vector<JointSetModel>& sets, double area) {
+  const auto persistence = [](const JointSetSpec& t) {
+    return t.trace_length ? *t.trace_length / (*t.trace_length + t.bridge) : 1.0;
+  };
+  double crossings = 0.0;
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    const JointSetSpec& a = sets[i].traces;
+    for (std::size_t j = i + 1; j < sets.size(); ++j) {
+      const JointSetSpec& b = sets[j].traces;
+      const double angle = (a.dip - b.dip) * M_PI / 180.0;
+      crossings += area * std::abs(std::sin(angle)) * persistence(a) * persistence(b) /
+                   (a.spacing * b.spacing);
+    }
+  }
+  return crossings;
+}
 
 // The model's scene keys as a one-block scene, read by the scene reader under the model's
 // name: an error in them is reported at its place in the model (the keys are top-level in
@@ -200,6 +226,15 @@ Model read_model(const Field& root, const std::string& source) {
   if (auto sets = root.optional_member("joint_sets")) {
     for (const Field& s : sets->elements(0, "")) {
       spec.joint_sets.push_back(read_joint_set(s, joint_materials, diagonal));
+    }
+    const double area = std::abs(signed_area(spec.domain));
+    const double blocks = estimated_crossings(spec.joint_sets, area);
+    if (blocks > kMaxEstimatedBlocks) {
+      sets->fail("the sets cross about " + std::to_string(std::llround(blocks)) +
+                 " times inside the domain (" + format_number(area) + " m^2): a cut into about "
+                 "that many blocks; at most " + std::to_string(std::llround(kMaxEstimatedBlocks)) +
+                 " are allowed (docs/model-format.md, \"Size, time and memory\"; is a spacing "
+                 "in metres?)");
     }
   }
   if (auto g = root.optional_member("seed")) {

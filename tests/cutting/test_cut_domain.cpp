@@ -133,6 +133,31 @@ TEST_CASE("joints leaving and re-entering a notched domain cut it as if whole",
   CHECK(ells == 2);
 }
 
+TEST_CASE("a joint given many times cuts once, with the highest of its groups", "[cutting]") {
+  // Two sets of one dip, spacing and offset draw the same segments; CGAL's sweep met k copies
+  // of a curve pair by pair (a model whose two sets were listed 1500 times each cut for
+  // minutes). Copies go in once, reversed ones too, with the highest group, as overlapping
+  // segments give their edge. A 10 x 10 square cut by x = 5 (groups 0, 3 and 1, one copy
+  // reversed) and y = 5 (group 2, twice): four 5 x 5 blocks; the pairs across x = 5 carry
+  // group 3, those across y = 5 group 2.
+  const Polygon domain{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  std::vector<JointSegment> joints{{{5, -1}, {5, 11}, 0}, {{5, 11}, {5, -1}, 3},
+                                   {{-1, 5}, {11, 5}, 2}, {{5, -1}, {5, 11}, 1},
+                                   {{-1, 5}, {11, 5}, 2}};
+  for (int k = 0; k < 1000; ++k) joints.push_back({{5, -1}, {5, 11}, 0});
+  const CutResult cut = cut_domain(domain, joints);
+  REQUIRE(cut.blocks.size() == 4);
+  CHECK(total_area(cut.blocks) == Approx(100.0).epsilon(1e-12));
+  REQUIRE(cut.adjacency.size() == 4);
+  for (const BlockAdjacency& a : cut.adjacency) {
+    const Vec2 ca = polygon_moments(cut.blocks[a.a]).centroid;
+    const Vec2 cb = polygon_moments(cut.blocks[a.b]).centroid;
+    const bool across_x = std::abs(ca.x() - cb.x()) > 1.0;  // side by side: across x = 5
+    CHECK(a.group == (across_x ? 3 : 2));
+    CHECK(a.shared_length == Approx(5.0).epsilon(1e-12));
+  }
+}
+
 TEST_CASE("a block enclosing another is bridged into simple polygons", "[cutting]") {
   // A closed square of traces (3,3)-(7,7) inside a 10 m square touches nothing: the outer
   // block would have a hole. Two bridges, from the hole's lowest-left corner (3, 3) down to

@@ -125,6 +125,10 @@ TEST_CASE("a bad model is reported at its place in the file", "[cut]") {
        {"must be positive"}},
       {"spacing in millimetres", edit(m, "\"spacing\": 2.5", "\"spacing\": 0.00001"),
        "joint_sets[0].spacing", {"lines across the domain", "at most"}},
+      {"sets that make a million blocks",  // 100 m^2 / (0.01 m x 0.01 m), 1414 lines each
+       edit(m, "{\"dip\": 0, \"spacing\": 2.5, \"offset\": 1.25, \"joint_material\": \"bedding\"}",
+            "{\"dip\": 0, \"spacing\": 0.01}, {\"dip\": 90, \"spacing\": 0.01}"),
+       "joint_sets", {"cross about 1000000 times", "at most 300000"}},
       {"spacing too large for a double", edit(m, "\"spacing\": 2.5", "\"spacing\": 1e999"),
        "joint_sets[0].spacing", {"too large"}},
       {"negative dip scatter",
