@@ -64,6 +64,16 @@ std::string sliding_scene(double end_time) {
                 "velocity": [1, 0, 0]}]})json";
 }
 
+// An elastic point strained in 200 000 increments (some 20 MB of CSV rows), written to
+// DIR/spec.json: output far larger than a file-size limit or a pipe holds.
+fs::path long_elastic_spec(const fs::path& dir) {
+  const fs::path spec = dir / "spec.json";
+  dda::test::write_file(spec, R"json({
+    "material": {"model": "elastic", "density": 2000, "young": 5e7, "poisson": 0.3},
+    "path": [{"steps": 200000, "strain": {"exx": 0.01}}]})json");
+  return spec;
+}
+
 // Every line of `path` has `commas` commas, and the file ends with a line end.
 void check_whole_rows(const fs::path& path, long commas) {
   const std::string text = dda::test::read_file(path);
@@ -238,10 +248,7 @@ TEST_CASE("dda cut and material-point under a file-size limit leave no part of a
 
   // material-point: rows go out 4096 at a time; the limit falls inside a batch, and the
   // file is cut back to the last whole batch.
-  const fs::path spec = dir.path / "spec.json";
-  dda::test::write_file(spec, R"json({
-    "material": {"model": "elastic", "density": 2000, "young": 5e7, "poisson": 0.3},
-    "path": [{"steps": 200000, "strain": {"exx": 0.01}}]})json");
+  const fs::path spec = long_elastic_spec(dir.path);
   const fs::path csv = dir.path / "point.csv";
   const CommandResult m = dda_limited(2000, "material-point " + shell_quote(spec.string()) +
                                                 " --out " + shell_quote(csv.string()));
@@ -313,10 +320,7 @@ TEST_CASE("a dangling link at an output path stays a link, and a FIFO whose read
   // dda material-point into a FIFO whose reader takes 10 bytes and leaves: the next write
   // fails with EPIPE, reported as a file it cannot write (exit 1), not SIGPIPE (exit 141,
   // nothing said). 200 000 increments write some 20 MB, far more than a pipe holds.
-  const fs::path spec = dir.path / "spec.json";
-  dda::test::write_file(spec, R"json({
-    "material": {"model": "elastic", "density": 2000, "young": 5e7, "poisson": 0.3},
-    "path": [{"steps": 200000, "strain": {"exx": 0.01}}]})json");
+  const fs::path spec = long_elastic_spec(dir.path);
   const fs::path fifo = dir.path / "rows.csv";
   REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
   const CommandResult m = dda::test::run_command(
