@@ -1,4 +1,4 @@
-// `dda cut MODEL.json --out SCENE.json` (issue 11): reads a cutting model, cuts its domain
+// `dda cut MODEL.json --out SCENE.json`: reads a cutting model, cuts its domain
 // into blocks, writes the scene and prints the cut's statistics on stderr.
 #pragma once
 

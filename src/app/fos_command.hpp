@@ -1,4 +1,4 @@
-// `dda fos SCENE.json --out DIR` (issue 11): consolidate the scene, search for its factor of
+// `dda fos SCENE.json --out DIR`: consolidate the scene, search for its factor of
 // safety by strength reduction (studies/strength_reduction.hpp), write the report and the
 // pictures of the mechanism (docs/factor-of-safety.md).
 #pragma once

@@ -1,4 +1,4 @@
-// The geometric tests that label a cut block (issue 11, cutting/model.hpp): a point surely
+// The geometric tests that label a cut block (cutting/model.hpp): a point surely
 // inside it (for the region it belongs to), whether it lies along one of the domain's edges,
 // whether it lies inside a polygon. Pure functions over plain doubles.
 #pragma once

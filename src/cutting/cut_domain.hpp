@@ -1,4 +1,4 @@
-// Block cutting (issue 11): a domain polygon cut by joint segments into blocks. The geometry
+// Block cutting: a domain polygon cut by joint segments into blocks. The geometry
 // is CGAL's 2D arrangement with exact predicates and constructions, kept inside
 // cut_domain.cpp (the one file that includes CGAL, which is slow to compile) behind this
 // plain-double interface.

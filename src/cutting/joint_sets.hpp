@@ -1,4 +1,4 @@
-// Joint sets as trace segments (issue 11): a set of parallel joints of given dip and mean
+// Joint sets as trace segments: a set of parallel joints of given dip and mean
 // spacing, persistent or broken by rock bridges, with scatter of dip and spacing drawn from
 // a seed, so that a cut is reproducible. Pure functions; no CGAL.
 #pragma once

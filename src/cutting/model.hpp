@@ -1,4 +1,4 @@
-// A rock-slope model (issue 11): a domain, its joint sets and single joints, regions of
+// A rock-slope model: a domain, its joint sets and single joints, regions of
 // other materials, what is fixed; and the blocks it is cut into, each with its material,
 // fixed or not, with the joint material of every pair of neighbouring blocks.
 // docs/model-format.md documents the file that io/model_reader turns into a ModelSpec.

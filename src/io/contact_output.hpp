@@ -1,4 +1,4 @@
-// The contacts of an output step for ParaView and the summary (issue 11): one VTK point per
+// The contacts of an output step for ParaView and the summary: one VTK point per
 // vertex-to-edge contact, at the vertex where it is now, carrying its mode, forces, step slip,
 // gap and joint material, so the failure surface of a slope (sliding and opening joints) can
 // be seen; and the count of each mode per joint material. Pure functions of the world.

@@ -1,4 +1,4 @@
-// The scene a cut model gives (`dda cut`, issue 11): an ordinary scene JSON that `dda run`
+// The scene a cut model gives (`dda cut`): an ordinary scene JSON that `dda run`
 // reads, laid out to be edited by hand. The model's scene keys are copied as given.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The report of `dda fos` (issue 11): DIR/report.json (the contract: factor_of_safety,
+// The report of `dda fos`: DIR/report.json (the contract: factor_of_safety,
 // bracket, trials with F and stable; docs/factor-of-safety.md) and DIR/report.md, the same
 // for a reader.
 #pragma once

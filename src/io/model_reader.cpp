@@ -31,7 +31,7 @@ constexpr std::string_view kSceneKeys[] = {"description", "gravity", "plane",   
 
 // Caps on the traces a set may draw, so that a spacing or trace length given in the wrong
 // unit is an error at its key rather than a cut that runs out of memory. A cut of 100 000
-// lines or a million traces is far beyond any slope study (issue 11 asks for ~2000 blocks).
+// lines or a million traces is far beyond any slope study (a large one cuts ~2000 blocks).
 constexpr long kMaxLinesPerSet = 100000;
 constexpr long kMaxTracesPerSet = 1000000;
 // And on the blocks the sets make together, estimated from their crossings: a cut takes

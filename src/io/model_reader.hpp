@@ -1,4 +1,4 @@
-// Cutting-model JSON in (`dda cut`, issue 11): parsing and validation at the boundary, as
+// Cutting-model JSON in (`dda cut`): parsing and validation at the boundary, as
 // the scene reader does for scenes. docs/model-format.md documents the format; keep the two
 // in step. Every error names the file and the place in it ("model.json:
 // joint_sets[1].spacing: ...") and is thrown as InputError.

@@ -37,7 +37,7 @@ constexpr const char* kHistoryHeader =
     "kinetic,potential,strain_energy,contact_energy,load_work,friction_dissipation,"
     "plastic_dissipation,damping_dissipation,energy_remainder,multiplier_work";
 
-// issue 11's contract: these names, in this order (extend, do not rename).
+// A contract (docs/output-format.md): these names, in this order (extend, do not rename).
 constexpr const char* kMonitorsHeader = "step,time,monitor,x,y,ux,uy,vx,vy";
 
 std::string num(double x) { return format_full_precision(x); }

@@ -1,4 +1,4 @@
-// Output files that fail whole or not at all (issue 28, docs/output-format.md "When a file
+// Output files that fail whole or not at all (docs/output-format.md "When a file
 // cannot be written"): what is at an output path is checked before it is written over,
 // whole files go to a temporary name beside their final one and are renamed into place
 // when complete, and streamed files (history.csv, monitors.csv, the material-point CSV)

@@ -1,5 +1,5 @@
-// The inertia a DDA block's strain unknowns feel in the block's rotating frame (issue 13,
-// item 4; docs/rotating-inertia.md has the derivation).
+// The inertia a DDA block's strain unknowns feel in the block's rotating frame
+// (docs/rotating-inertia.md has the derivation).
 //
 // A block's kinematics are affine: x = xc + R(theta) U (X - Xc), U = I + E^ with E^ the
 // total strain in the block frame (the local-frame treatments keep exactly this). Its

@@ -1,4 +1,4 @@
-// The material-point driver (the core of `dda material-point`, issue 5 item 3): a strain or
+// The material-point driver (the core of `dda material-point`): a strain or
 // stress path applied to one material point, each in-plane component under strain or
 // stress control, mixed control solved by Newton with the consistent tangent.
 #pragma once

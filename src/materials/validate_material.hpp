@@ -15,7 +15,7 @@ struct ParameterError {
   std::string message;  // e.g. "must be in [0, 90) degrees, got 95"
 };
 
-// Names of the scene format (the contract of issue 5).
+// Names of the scene format (a contract: docs/scene-format.md, materials).
 std::optional<MaterialModel> parse_model(
     std::string_view name);  // "elastic", "drucker_prager", "mohr_coulomb"
 std::optional<DruckerPragerMatch> parse_match(

@@ -1,4 +1,4 @@
-// Base shaking (issue 11): the fixed blocks, the ground, move with a prescribed acceleration
+// Base shaking: the fixed blocks, the ground, move with a prescribed acceleration
 // history, as earthquake loading. The step is solved in the ground's frame: there the free
 // blocks feel gravity minus the ground's acceleration (d'Alembert), and every position,
 // displacement and velocity the run writes is relative to the ground. For a ground that

@@ -40,8 +40,8 @@ Eigen::VectorXd BlockSystem::expand(const Eigen::VectorXd& unknowns) const {
 }
 
 // Each 6x6 block enters with its leading unknowns_of(row) x unknowns_of(col) corner at
-// (offset[row], offset[col]): the dof map. Written straight into compressed columns (issue
-// 10, item 5): the couplings are bucketed by block column and sorted by block row (several
+// (offset[row], offset[col]): the dof map. Written straight into compressed columns: the
+// couplings are bucketed by block column and sorted by block row (several
 // couplings of one pair are summed into one block), so each scalar column is its diagonal
 // block's lower part followed by the coupled blocks in row order, already sorted. (Through
 // triplets this took 1.5 ms at 1000 bricks and 30 ms at 10000.)

@@ -4,7 +4,7 @@
 // diagonal are stored. Assembly fills it; the linear solvers (dense reference, CHOLMOD for
 // the symmetric system, KLU for the unsymmetric one) read it.
 //
-// The dof map (issue 10, item 7): a rigid block's row is assembled as 6x6 like any other,
+// The dof map: a rigid block's row is assembled as 6x6 like any other,
 // but only its u0, v0, r0 are unknowns of the system the solvers see. kU0, kV0, kR0 lead
 // the six, so block row b's unknowns are simply its first unknowns_of(b) slots (6, or 3 if
 // rigid), numbered from offset[b] in the reduced system. The matrices formed for the

@@ -174,8 +174,7 @@ StepEnergy step_energy(const World& world, const std::vector<Contact>& contacts,
     s.multiplier_work += kn * c.state.rest_shift * (g1 - g0);
     // What the spring held at the start is what contact_energy() booked at the last step's
     // end, by the same rule in the mode the contact started the step in. Counting only
-    // penetration (min(g, 0)) lost k/2 g^2 a step from every contact held in tension (until
-    // 2026-11-25).
+    // penetration (min(g, 0)) lost k/2 g^2 a step from every contact held in tension.
     const ContactMode start_mode =
         c.iterate.mode_changes > 0 ? c.iterate.start_mode : c.state.mode;
     const double stored_start = normal_spring_energy(start_mode, g0, kn);

@@ -1,4 +1,4 @@
-// The contact springs inside CholmodSolver's kept factor (issue 10, item 4). The factor is
+// The contact springs inside CholmodSolver's kept factor. The factor is
 // kept from step to step; between its matrix and the present one lie (a) the springs of
 // contacts whose mode changed, which appeared or which went (tens a step on a settled
 // 1000-brick wall: deferred changes, chatter between lock and slide), and (b) the small drift

@@ -1,4 +1,4 @@
-// Joint water pressure from a phreatic line (issue 11): hydrostatic pressure below the line
+// Joint water pressure from a phreatic line: hydrostatic pressure below the line
 // acts on the faces of the joints (both faces, pushing the blocks apart), as
 // limit-equilibrium slope checks load them (Hoek and Bray, Rock Slope Engineering, ch. 6:
 // the uplift U on a sliding plane and the thrust V in a water-filled tension crack). Free

@@ -10,7 +10,7 @@ std::optional<Eigen::VectorXd> solve_dense(const BlockSystem& system) {
   return Eigen::VectorXd(ldlt.solve(system.rhs));
 }
 
-// ---- rigid blocks (issue 10, item 7): x and y in the dof map's reduced layout; each block
+// ---- rigid blocks: x and y in the dof map's reduced layout; each block
 // acts by its leading unknowns_of(row) x unknowns_of(col) corner (BlockSystem) ----
 namespace {
 

@@ -36,7 +36,7 @@ struct LinearSolveStats {
   double largest_difference_from_plain = 0.0;
 };
 
-// Sparse Cholesky with CHOLMOD, and three ways of not factorising (issue 10):
+// Sparse Cholesky with CHOLMOD, and three ways of not factorising:
 //  - solve(): the plain path: factorise and solve; the symbolic analysis is kept while the
 //    sparsity pattern is unchanged (a scene without contacts keeps it for the whole run).
 //  - solve_reusing(): the system is close to the one last factorised (the next step, a
@@ -99,7 +99,7 @@ class CholmodSolver {
 
   // The cost model of solve_modified and of the refresh below: SparseCholesky's modelled
   // nanoseconds (refactorisation, rank-one modification, solve with the factor) plus
-  // kProductNs per multiply-add of a product with K. (Until 2026-11-23 it counted
+  // kProductNs per multiply-add of a product with K. (It once counted
   // multiply-adds, which priced a supernodal factorisation by its flops: 170 CG iterations'
   // worth at 10000 bricks where it takes 10, so the factor drifted until CG took 19
   // iterations a step.)

@@ -1,4 +1,4 @@
-// Plastic blocks inside the DDA step (issue 5 item 4).
+// Plastic blocks inside the DDA step.
 //
 // A plastic block's stress is the material library's answer for the total strain its
 // treatment accumulates (in the block frame for the local-frame treatments, global for the

@@ -112,7 +112,7 @@ inline constexpr EnumName<Inertia> kInertiaNames[] = {
     {Inertia::Shi, "shi"},
 };
 
-// A block material (issue 5): the material library's parameters (materials/
+// A block material: the material library's parameters (materials/
 // material_types.hpp: elastic, Drucker-Prager or Mohr-Coulomb, each with its own) under the
 // scene's name for them. Their plane mode is the scene's (the reader sets it).
 struct Material {
@@ -177,7 +177,7 @@ struct PinSpec {
 };
 
 // A monitoring point: a named material point of a block whose position, displacement and
-// velocity are written to monitors.csv at every output step (issue 11).
+// velocity are written to monitors.csv at every output step.
 struct MonitorSpec {
   std::string name;
   Vec2 point = Vec2::Zero();
@@ -226,7 +226,7 @@ struct ControlSettings {
   // solver/step.cpp) before a step whose contacts are deeper than allowed_penetration is
   // cut. Range 0 (off: cutting only, as Shi) to 50.
   int max_augmentations = 5;
-  // How the global system is solved (issue 10): true ("reuse", the default) keeps the
+  // How the global system is solved: true ("reuse", the default) keeps the
   // factor across iterations and steps (rank-one updates by changed contact springs,
   // conjugate gradients for the rest, refactorised when that costs less); false
   // ("factorise") factorises every system afresh, the plain reference path. Both give the

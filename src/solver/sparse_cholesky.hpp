@@ -38,7 +38,7 @@ class SparseCholesky {
 
   // Factorises the symmetric matrix given by its lower triangle. False when it is not
   // positive definite. The analysis (ordering and symbolic factor) is kept on a pattern that
-  // survives contact changes (issue 10, item 5): a matrix whose entries all lie in the
+  // survives contact changes: a matrix whose entries all lie in the
   // analysed pattern is factorised on it, with explicit zeros where it has none; one with an
   // entry outside is analysed again, on the union of the two patterns, as long as that has
   // at most kPatternSlack more entries than the matrix (else on the matrix's own pattern).
@@ -50,8 +50,8 @@ class SparseCholesky {
   int analyses() const { return analyses_; }
   // On the 1000-brick wall (6000 rows) AMD's factor is the smaller (6.9e7 flops against
   // METIS's 8.9e7) and its analysis 3 ms against 9 ms; at 10000 bricks (60000 rows) a
-  // factorisation with METIS takes 0.27-0.32 s supernodal on one core (issue 10's
-  // measurement), so both are tried there and CHOLMOD keeps the one with fewer entries.
+  // factorisation with METIS takes 0.27-0.32 s supernodal on one core
+  // (measured), so both are tried there and CHOLMOD keeps the one with fewer entries.
   static constexpr int kNestedDissectionRows = 20000;
 
   // K += c c^T for every term (update = true) or K -= c c^T (update = false). False when the
@@ -59,8 +59,9 @@ class SparseCholesky {
   bool modify(const std::vector<RankOneTerm>& terms, bool update);
 
   // A cost model of the ways to an answer, in modelled nanoseconds of one core of the
-  // machine it was fitted on (2-core AMD EPYC, 2026-11-23, Debian's serial OpenBLAS). Deterministic: computed from the structure
-  // of the last factorisation (tables made once per factorisation), so a run's path does
+  // machine it was fitted on (2-core AMD EPYC, Debian's serial OpenBLAS). Deterministic:
+  // computed from the structure of the last factorisation (tables made once per
+  // factorisation), so a run's path does
   // not depend on the machine's timing. Fitted on the brick walls' systems, 100 to 10000
   // bricks (docs/linear-solver.md, "Cost model", has the measurements):
   //  - refactorisation_cost(): a simplicial LDL' is a left-looking sweep at a flat

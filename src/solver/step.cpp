@@ -73,7 +73,7 @@ constexpr double kSmallestStepShare = 1e-9;
 constexpr double kTimeRoundOff = 1e-9;
 // The step size that remembers (World::step_size, remember_step): after a cut, each step that
 // succeeds at the remembered size lets the next try up to this factor longer, until the
-// schedule is reached. 1.2 (issue 25's example; ODE step controllers cap growth at 1.5 to 5,
+// schedule is reached. 1.2 (ODE step controllers cap growth at 1.5 to 5,
 // but they have an error estimate to aim with, and a failed DDA attempt costs a whole solve)
 // brings a contact cut (0.3) back to the schedule in 7 steps and Shi's smallest cut (0.1) in
 // 13, so a passing event costs a handful of short steps; were the cause to persist, a growth

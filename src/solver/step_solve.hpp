@@ -1,4 +1,4 @@
-// The one place where the step's system meets the linear solvers (issue 10, item 7: rigid
+// The one place where the step's system meets the linear solvers (rigid
 // blocks). The system is assembled with six slots per block row; with rigid blocks the
 // solvers see only the unknowns of its dof map (BlockSystem: a rigid block's u0, v0, r0), so
 // the rhs and, for an update of the factor, the springs that changed are reduced to them

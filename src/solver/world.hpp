@@ -59,11 +59,11 @@ struct Block {
   // exactly, only to the reach, which the contact search covers (docs/contacts.md).
   double reach = 0.0;
   double size = 0.0;  // half the larger side of its bounding box at the start (m), as w0
-  // A rigid block (issue 10, item 7) keeps the six slots of d like any block, but the
+  // A rigid block keeps the six slots of d like any block, but the
   // linear system solves only its u0, v0, r0 (BlockSystem's dof map): its strain increments
   // are exactly zero, it has no elastic matrix (D = 0) and no initial stress.
   bool rigid = false;
-  // Plastic blocks (issue 5) take their stress from the material library over the strain
+  // Plastic blocks take their stress from the material library over the strain
   // their treatment accumulates (src/solver/material_coupling.hpp); elastic blocks never
   // touch it. A free, deformable block of a plastic model.
   bool plastic = false;
@@ -150,7 +150,7 @@ struct EnergyLedger {
   double scale = 0.0;
 };
 
-// The step size that remembers (issue 25, item 3; solver/step.cpp, advance_step): once a
+// The step size that remembers (solver/step.cpp, advance_step): once a
 // step has been cut, the steps after it start from the step that worked instead of the
 // schedule's, and grow back towards it. While the schedule is followed it holds nothing.
 struct StepSizeMemory {

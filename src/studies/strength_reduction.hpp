@@ -1,4 +1,4 @@
-// Factor of safety by strength reduction (issue 11, `dda fos`): the joints' strengths (and,
+// Factor of safety by strength reduction (`dda fos`): the joints' strengths (and,
 // when asked, plastic blocks' strengths) divided by a trial factor F, a run (static by
 // default) from the consolidated scene, a verdict (stable or failing) after a bounded number
 // of steps, and a search for the F between the last stable and the first failing trial
