@@ -6,9 +6,13 @@
 // (materials), with 3 for a path that could not be followed. A command line CLI11 cannot
 // parse is bad input too (2, the bad argument named); --help and --version exit 0.
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <cstdio>
+#include <functional>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <string_view>
 
@@ -45,6 +49,41 @@ void require_output_path(const std::string& path, std::string_view command) {
 
 // What a command line that CLI11 refused gets: one line naming the bad argument, exit 2
 // (CLI11's own codes, 106 to 114, are not the program's). `first` is argv[1] if any.
+// A number on the command line: finite, and within [lo, hi] or positive. CLI11's Range
+// passes "nan" (every comparison with it is false) and PositiveNumber passes "inf":
+// `dda fos --max-factor nan --method limit-analysis` ran for ever, deaf to SIGTERM.
+CLI::Validator finite_number(std::string name, std::function<std::string(double)> check) {
+  return CLI::Validator(
+      [check = std::move(check)](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || end != text.c_str() + text.size()) return text + " is not a number";
+        if (!std::isfinite(v)) return text + " is not a finite number";
+        return check(v);
+      },
+      std::move(name));
+}
+
+CLI::Validator finite_range(double lo, double hi) {
+  std::ostringstream name;
+  name << "FLOAT in [" << lo << " - " << hi << "]";
+  return finite_number(name.str(), [lo, hi](double v) -> std::string {
+    if (v >= lo && v <= hi) return {};
+    std::ostringstream why;
+    why << "Value " << v << " not in range " << lo << " to " << hi;
+    return why.str();
+  });
+}
+
+CLI::Validator finite_positive() {
+  return finite_number("POSITIVE", [](double v) -> std::string {
+    if (v > 0.0) return {};
+    std::ostringstream why;
+    why << "Value " << v << " is not positive";
+    return why.str();
+  });
+}
+
 int report_parse_error(const CLI::ParseError& e, const CLI::App& app, const char* first) {
   std::string message;
   if (first == nullptr) {
@@ -200,21 +239,21 @@ int main(int argc, char** argv) {
   fos_app->add_option("scene", fos_scene, "Scene file (JSON, see docs/scene-format.md)");
   fos_app->add_option("--out", fos_dir, "Directory for report.json and report.md")->capture_default_str();
   fos_app->add_option("--tolerance", fos.tolerance, "Width of the final bracket in F")
-      ->capture_default_str()->check(CLI::Range(1e-6, 1.0));
+      ->capture_default_str()->check(finite_range(1e-6, 1.0));
   fos_app->add_option("--min-factor", fos.min_factor, "Lowest F tried")->capture_default_str()
-      ->check(CLI::Range(1e-3, 1.0));
+      ->check(finite_range(1e-3, 1.0));
   fos_app->add_option("--max-factor", fos.max_factor, "Highest F tried")->capture_default_str()
-      ->check(CLI::Range(1.0, 1e3));
+      ->check(finite_range(1.0, 1e3));
   fos_app->add_option("--failure-displacement", fos.failure_displacement,
                       "A trial fails when a watched point moves more (m); default: 0.05 x "
-                      "sqrt(median free-block area)")->check(CLI::PositiveNumber);
+                      "sqrt(median free-block area)")->check(finite_positive());
   fos_app->add_option("--trial-time", fos.trial_time,
                       "Simulated time of a trial (s); default: resolves 0.002 g, and at least 20 e-folds "
                       "of the relaxation the consolidation settled at")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_positive());
   fos_app->add_option("--dynamic-coefficient", fos.dynamic_coefficient,
                       "Velocity carried between the trial's steps (0: static trials, 1: dynamic)")->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(finite_range(0.0, 1.0));
   fos_app->add_flag("--reduce-materials", fos.reduce_materials,
                     "Also divide plastic blocks' strengths by F");
   fos_app->add_option("--jobs", fos.jobs, "Trials at once")->capture_default_str()
@@ -222,7 +261,7 @@ int main(int argc, char** argv) {
   fos_app->add_option("--consolidation-factor", fos.consolidation_factor,
                       "Consolidate with the joints' strengths divided by this (e.g. 0.5 for a "
                       "slope whose factor is below 1)")->capture_default_str()
-      ->check(CLI::Range(1e-3, 1.0));
+      ->check(finite_range(1e-3, 1.0));
   fos_app->add_option("--method", fos_options.method,
                       "strength-reduction (the search, with the limit analysis beside it) or "
                       "limit-analysis (that alone; docs/limit-analysis.md)")
@@ -240,7 +279,7 @@ int main(int argc, char** argv) {
   fos_app->add_option("--seismic-coefficient", fos.seismic_coefficient,
                       "Pseudo-static horizontal body force, as a share of the weight, along +x "
                       "(negative: along -x)")->capture_default_str()
-      ->check(CLI::Range(-1.0, 1.0));
+      ->check(finite_range(-1.0, 1.0));
 
   std::string model_path;
   std::string scene_out = "scene.json";

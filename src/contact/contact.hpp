@@ -66,7 +66,8 @@ struct ContactState {
   std::optional<ModeChange> deferred;
   // The augmented-Lagrangian multiplier of the normal spring, as a length (m; lambda / p):
   // the spring acts on gap - rest_shift, so it pushes with p rest_shift more than its
-  // penetration says (Lin, Amadei et al. 1996). Grown by solver/step.cpp when a contact ends
+  // penetration says (Lin, Amadei et al. 1996). Grown by augment_multipliers
+  // (solver/contact_assembly.cpp), called from the step, when a contact ends
   // an iteration deeper than allowed, kept while the contact stays closed (so a resting
   // load stays carried), zero once it opens.
   double rest_shift = 0.0;

@@ -28,6 +28,17 @@ TEST_CASE("a command line the parser refuses exits 2 naming the bad argument", "
       {"run --out", {"--out", "missing"}},
       {"run --frobnicate", {"not expected", "--frobnicate"}},
       {"fos a.json --tolerance 5", {"--tolerance", "5"}},
+      // Numbers must be finite: CLI11's own checks passed "nan" (every comparison with it
+      // is false) and "inf" for a positive number, and `dda fos --max-factor nan --method
+      // limit-analysis` then ran for ever (found by verification/fuzz under ASan).
+      {"fos a.json --max-factor nan", {"--max-factor", "nan is not a finite number"}},
+      {"fos a.json --min-factor -nan", {"--min-factor", "-nan is not a finite number"}},
+      {"fos a.json --tolerance NaN", {"--tolerance", "NaN is not a finite number"}},
+      {"fos a.json --trial-time inf", {"--trial-time", "inf is not a finite number"}},
+      {"fos a.json --failure-displacement 1e999", {"--failure-displacement", "not a finite"}},
+      {"fos a.json --trial-time 0", {"--trial-time", "0 is not positive"}},
+      {"fos a.json --seismic-coefficient 0x", {"--seismic-coefficient", "0x is not a number"}},
+      {"fos a.json --dynamic-coefficient 1.5", {"--dynamic-coefficient", "not in range 0 to 1"}},
       {"material-point --out", {"--out", "missing"}},
   };
   for (const Case& c : cases) {

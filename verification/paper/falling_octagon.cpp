@@ -173,11 +173,6 @@ std::string falling_report(const Options& opt, const std::vector<FallingRun>& ru
           }
         }
       }
-      if (r.result.status == RunStatus::NotAvailable) {
-        md << "| " << r.treatment << " | - | - | " << paper_area << " | " << paper_re
-           << " | - | - | - | - | - | not available yet |\n";
-        continue;
-      }
       const FallingSample& last = r.samples.back();
       md << "| " << r.treatment << " | " << fixed(last.area, 6) << " | "
          << sig(100.0 * rel_error(last.area, r.initial_area), 4) << " | " << paper_area << " | "

@@ -1,7 +1,7 @@
 // dda_verify_paper --out DIR [--smoke] [--closed-form-only]: reproduces the examples of Jiang and Zheng (2015),
 // Section 5, for every rotation treatment; writes CSVs and report.md into DIR and prints the
-// report. Exit codes: 0 done (a treatment that diverges or is not available yet is a result,
-// not a failure); 1 the output could not be written; 2 bad arguments.
+// report. Exit codes: 0 done (a treatment that diverges is a result, not a failure); 1 the
+// output could not be written; 2 bad arguments.
 #include <chrono>
 #include <cstdio>
 #include <exception>

@@ -59,8 +59,8 @@ def ordered_treatments(rows):
 
 
 def available(summary_rows):
-    """Treatments with at least one run that got past step 0 (others are not available yet)."""
-    return {r["treatment"] for r in summary_rows if r["status"] != "not available yet"}
+    """Treatments with a summary row (every treatment runs; a diverged run has its row too)."""
+    return {r["treatment"] for r in summary_rows}
 
 
 def plot_falling_scene(d):

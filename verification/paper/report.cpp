@@ -29,9 +29,7 @@ std::string availability(const Options& opt, const AllResults& r) {
     if (!bad) bad = first_failure(r.swinging, t.name);
     if (!bad) bad = first_failure(r.speed.spin, t.name);
     if (!bad) bad = first_failure(r.speed.pendulum, t.name);
-    if (bad && bad->status == RunStatus::NotAvailable) {
-      status = "**not available yet** (" + bad->message + ")";
-    } else if (bad) {
+    if (bad) {
       status = "available; at least one run diverged (see the tables)";
     }
     md << "| " << t.name << " | " << (t.paper.empty() ? "-" : std::string(t.paper)) << " | "

@@ -185,8 +185,7 @@ std::string speed_report(const Options& opt, const SpeedResults& r) {
      << "|---|---:|---:|---:|---:|---|\n";
   for (const SpinPoint& p : r.spin) {
     md << "| " << p.treatment << " | " << sig(p.dt) << " | " << p.steps << " | "
-       << (p.result.status == RunStatus::NotAvailable ? "-" : sig(1e3 * p.result.wall_s)) << " | "
-       << (p.result.status == RunStatus::NotAvailable ? "-" : sig(p.area_rel_error)) << " | "
+       << sig(1e3 * p.result.wall_s) << " | " << sig(p.area_rel_error) << " | "
        << describe(p.result) << " |\n";
   }
   md << "\n### A rigid pendulum\n\n"
@@ -205,11 +204,6 @@ std::string speed_report(const Options& opt, const SpeedResults& r) {
      << "| treatment | dt (s) | steps | wall (ms) | period (s) | period error | amplitude "
         "(rad) | amplitude error | run |\n|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const PendulumPoint& p : r.pendulum) {
-    if (p.result.status == RunStatus::NotAvailable) {
-      md << "| " << p.treatment << " | " << sig(p.dt) << " | " << p.steps
-         << " | - | - | - | - | - | not available yet |\n";
-      continue;
-    }
     md << "| " << p.treatment << " | " << sig(p.dt) << " | " << p.steps << " | "
        << sig(1e3 * p.result.wall_s) << " | " << fixed(p.period, 6) << " | "
        << sig(rel(p.period, p.period_ref)) << " | " << fixed(p.amplitude, 6) << " | "

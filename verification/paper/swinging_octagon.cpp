@@ -234,12 +234,6 @@ std::string swinging_report(const Options& opt, const std::vector<SwingRun>& run
   for (std::size_t i = 0; i < kRecordSteps.size(); ++i) md << "---:|---:|---:|---:|";
   md << '\n';
   for (const SwingRun& r : runs) {
-    if (r.result.status == RunStatus::NotAvailable) {
-      md << "| " << r.treatment << " | not available yet |";
-      for (std::size_t i = 0; i < 4 * kRecordSteps.size(); ++i) md << " |";
-      md << '\n';
-      continue;
-    }
     const auto paper = paper_table2().find(r.treatment);
     for (std::size_t k = 0; k < 4; ++k) {
       md << "| " << r.treatment << " | " << kDiagonalNames[k] << " |";
@@ -324,10 +318,6 @@ std::string swinging_report(const Options& opt, const std::vector<SwingRun>& run
      << "| treatment | run | largest swing (rad) | past pi? | max (E - E0 - E_pin) (J) | "
         "gains energy? | E - E0 at the end (J) |\n|---|---|---:|---|---:|---|---:|\n";
   for (const SwingRun& r : runs) {
-    if (r.result.status == RunStatus::NotAvailable) {
-      md << "| " << r.treatment << " | not available yet | - | - | - | - | - |\n";
-      continue;
-    }
     const EnergySample& last = r.energy.back();
     const EnergySample& first = r.energy.front();
     md << "| " << r.treatment << " | " << describe(r.result) << " | " << fixed(r.max_swing, 5)

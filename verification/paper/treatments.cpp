@@ -24,7 +24,6 @@ std::string_view status_word(RunStatus s) {
   switch (s) {
     case RunStatus::Completed: return "completed";
     case RunStatus::Diverged: return "diverged";
-    case RunStatus::NotAvailable: return "not available yet";
   }
   return "?";
 }
@@ -47,11 +46,6 @@ RunResult run_world(World& world, const Observer& observe) {
       }
       observe(world);
     }
-  } catch (const std::logic_error& e) {
-    // The library throws logic_error for a treatment it names but does not implement; a run
-    // that already completed steps with it hit something else and counts as diverged.
-    result.status = world.step == 0 ? RunStatus::NotAvailable : RunStatus::Diverged;
-    result.message = e.what();
   } catch (const std::exception& e) {
     result.status = RunStatus::Diverged;
     result.message = e.what();
@@ -65,7 +59,6 @@ RunResult run_world(World& world, const Observer& observe) {
 std::string describe(const RunResult& r) {
   switch (r.status) {
     case RunStatus::Completed: return "completed";
-    case RunStatus::NotAvailable: return "not available yet";
     case RunStatus::Diverged:
       // The step's own messages already start "step k (t = ...): ..."; others do not.
       if (r.message.rfind("step ", 0) == 0) return "diverged at " + r.message;

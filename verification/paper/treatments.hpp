@@ -1,6 +1,5 @@
 // The rotation treatments the reproduction compares, and one way to run a world with any of
-// them that never throws: a treatment the library does not implement yet is reported as
-// "not available yet", a failed step as "diverged at step k".
+// them that never throws: a failed step, or an exception, is reported as "diverged at step k".
 #pragma once
 
 #include <functional>
@@ -44,7 +43,7 @@ inline const std::vector<Treatment>& all_treatments() {
 // paper recommends), to keep the CI run short.
 std::vector<Treatment> treatments_for(bool smoke);
 
-enum class RunStatus { Completed, Diverged, NotAvailable };
+enum class RunStatus { Completed, Diverged };
 std::string_view status_word(RunStatus s);
 
 struct RunResult {
