@@ -161,9 +161,9 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
                                      "last_stable.png", "first_failing.png"});
 
-  // SIGINT or SIGTERM: the consolidation or the running trials stop at their next step, and
-  // the report holds the trials judged so far (a second signal ends the program at once).
-  watch_for_interrupts();
+  // SIGINT or SIGTERM (watched from the start of main): the consolidation or the running
+  // trials stop at their next step, and the report holds the trials judged so far (a second
+  // signal ends the program at once).
   const auto interrupted = [] { return interrupt_signal() != 0; };
   std::cerr << "dda: consolidating " << scene_path << " at F = " << settings.consolidation_factor << "\n";
   ProgressBar progress(run_length(scene), run_unit(scene));

@@ -971,22 +971,18 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   clock.lap(stats.stage_times.detect);
   int penetration_cuts = 0;
   bool was_cut = false;
-  std::string material_failure;  // why the last attempt's return map failed, if it did
-  std::string shape_failure;     // the block the last attempt turned inside out, if it did
+  // What made the last attempt fail when a shorter step may not cure it: a return map that
+  // failed ("the material of block ..."), or a block turned inside out; empty otherwise.
+  std::string block_failure;
 
   for (;;) {
     if (dt < kSmallestStepShare * scheduled_dt) {
-      if (!material_failure.empty()) {
-        // Shorter steps did not cure a return map: say which block and why, not "the
-        // contacts do not settle" (a Mohr-Coulomb block without a tension cut-off hit by
-        // an impact that puts it in tension beyond its apex cut 209 steps before this).
-        return {false, describe_failure(world, "the material of " + material_failure +
-                                                   ", at every step length down to 1e-9 of "
-                                                   "the scheduled one")};
-      }
-      if (!shape_failure.empty()) {
-        return {false, describe_failure(world, shape_failure + ", at every step length down to "
-                                                               "1e-9 of the scheduled one")};
+      if (!block_failure.empty()) {
+        // Shorter steps did not cure it: say which block and why, not "the contacts do not
+        // settle" (a Mohr-Coulomb block without a tension cut-off hit by an impact that puts
+        // it in tension beyond its apex cut 209 steps before this).
+        return {false, describe_failure(world, block_failure + ", at every step length down "
+                                                               "to 1e-9 of the scheduled one")};
       }
       return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
                                              "the contacts or the motion do not settle")};
@@ -1026,8 +1022,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
              << " N/m) or control.allowed_penetration";
         return {false, describe_failure(world, what.str())};
       }
-      material_failure = *cut == CutReason::Material ? loop.material_reason : std::string();
-      shape_failure.clear();
+      block_failure = *cut == CutReason::Material && !loop.material_reason.empty()
+                          ? "the material of " + loop.material_reason
+                          : std::string();
       count_cut(*cut, stats);
       was_cut = true;
       dt *= cut_share(*cut, moved, loop.material_fraction, 1.0, deepest_overshoot);
@@ -1043,8 +1040,7 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       what << "block " << *inverted << " is turned inside out: its area (" << b.moments.area
            << " m^2 at the step's start, " << b.initial_area << " at the run's) falls through "
            << "zero; its material is far too soft for its load";
-      shape_failure = what.str();
-      material_failure.clear();
+      block_failure = what.str();
       count_cut(CutReason::Displacement, stats);
       was_cut = true;
       dt *= kCutMin;
