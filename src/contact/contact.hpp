@@ -67,9 +67,10 @@ struct ContactState {
   // The augmented-Lagrangian multiplier of the normal spring, as a length (m; lambda / p):
   // the spring acts on gap - rest_shift, so it pushes with p rest_shift more than its
   // penetration says (Lin, Amadei et al. 1996). Grown by augment_multipliers
-  // (solver/contact_assembly.cpp), called from the step, when a contact ends
-  // an iteration deeper than allowed, kept while the contact stays closed (so a resting
-  // load stays carried), zero once it opens.
+  // (solver/contact_assembly.cpp) when a settled solve leaves the contact deeper than its
+  // target share of the allowance, kept while the contact stays closed (so a resting load
+  // stays carried), set to zero where a solver opens the contact (Shi's loop in
+  // solver/contact_assembly.cpp, the Newton solver in solver/contact_newton.cpp).
   double rest_shift = 0.0;
   // The energy of the shear spring at the end of the last accepted step (J per metre),
   // F^2 / 2 ks whether locked or sliding: the energy account treats a sliding contact as its

@@ -16,7 +16,7 @@
 #include <variant>
 #include <vector>
 
-#include "kinematics/enum_names.hpp"
+#include "common/enum_names.hpp"
 #include "kinematics/types.hpp"
 #include "materials/elastic.hpp"
 #include "materials/hardening.hpp"

@@ -60,9 +60,6 @@ struct RunStats {
   bool interrupted = false;
   double deepest_penetration = 0.0;   // m, deepest contact penetration after any accepted step
   double largest_normal_force = 0.0;  // N/m, largest contact normal force after any accepted step
-  // Times the penalty was raised: always 0 since the penalty stays as the scene sets it
-  // (kept in the summary for the scripts that read it).
-  int penalty_raises = 0;
   // Augmented-Lagrangian rounds (solver/step.cpp, control.max_augmentations): solves spent pushing
   // contacts deeper than allowed_penetration back out at the fixed penalty.
   long augmentations = 0;

@@ -11,7 +11,7 @@
 
 #include "contact/joint_law.hpp"
 #include "kinematics/polygon.hpp"
-#include "kinematics/enum_names.hpp"
+#include "common/enum_names.hpp"
 #include "kinematics/types.hpp"
 #include "solver/base_motion.hpp"
 #include "solver/joint_water.hpp"

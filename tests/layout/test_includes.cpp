@@ -1,4 +1,4 @@
-// The house's layering (issue 14), read from the sources: rooms include only the rooms below
+// The house's layering, read from the sources: rooms include only the rooms below
 // them, no chain of includes comes back to where it started, and the core library needs
 // no SUNDIALS (CVODE and KINSOL serve the references in verification/reference only).
 #include <catch2/catch.hpp>
@@ -17,17 +17,18 @@ namespace fs = std::filesystem;
 namespace {
 
 // Each room and the rooms it may include (besides itself): the order of the README's
-// "Layout" (kinematics, then materials, contact and cutting, then solver, the studies that
-// run it many times, io, app).
+// "Layout" (common, what every room may use; kinematics, then materials, contact and
+// cutting, then solver, the studies that run it many times, io, app).
 const std::map<std::string, std::set<std::string>> kMayInclude = {
-    {"kinematics", {}},
-    {"materials", {"kinematics"}},
-    {"contact", {"kinematics"}},
-    {"cutting", {"kinematics"}},
-    {"solver", {"kinematics", "materials", "contact"}},
-    {"studies", {"kinematics", "materials", "contact", "solver"}},
-    {"io", {"kinematics", "materials", "contact", "cutting", "solver", "studies"}},
-    {"app", {"kinematics", "materials", "contact", "cutting", "solver", "studies", "io"}},
+    {"common", {}},
+    {"kinematics", {"common"}},
+    {"materials", {"common", "kinematics"}},
+    {"contact", {"common", "kinematics"}},
+    {"cutting", {"common", "kinematics"}},
+    {"solver", {"common", "kinematics", "materials", "contact"}},
+    {"studies", {"common", "kinematics", "materials", "contact", "solver"}},
+    {"io", {"common", "kinematics", "materials", "contact", "cutting", "solver", "studies"}},
+    {"app", {"common", "kinematics", "materials", "contact", "cutting", "solver", "studies", "io"}},
 };
 
 struct Include {
