@@ -1,7 +1,7 @@
 // One DDA step of a packed brick wall resting on a fixed base: N bricks 1 m x 0.5 m in
 // running bond (bench/brick_wall.hpp), under gravity, with Mohr-Coulomb joints (30
 // degrees). Reports block-steps per second and where the time goes (ms per step in each
-// stage). The same wall of rigid bricks (issue 10, item 7: 3 unknowns a brick instead of 6,
+// stage). The same wall of rigid bricks (3 unknowns a brick instead of 6,
 // the rest of the scene unchanged) is measured beside it. Run:
 //   build/release/dda_bench --benchmark_filter='PackedWall|SettledWall|RigidWall'
 #include <benchmark/benchmark.h>
@@ -92,7 +92,7 @@ void run_wall(benchmark::State& state, int warmup_steps, bool rigid = false,
   state.counters["cg_iterations"] =
       static_cast<double>(after.cg_iterations - before.cg_iterations) / steps;
   state.counters["solves"] = static_cast<double>(stats.iterations) / steps;
-  // At rest means this far below 1e-7 (issue 9's settled wall) after the measured steps.
+  // At rest means this far below 1e-7 (the settled wall's criterion) after the measured steps.
   const dda::EnergyTotals e = dda::scene_energy(world);
   state.counters["kinetic_over_potential"] = e.kinetic / std::abs(e.potential);
 }
@@ -104,12 +104,12 @@ BENCHMARK(BM_PackedWall)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 // 10000 bricks: a step takes seconds (see README "Speed"), so a few steps only.
 BENCHMARK(BM_PackedWall)->Arg(10000)->Iterations(3)->Unit(benchmark::kMillisecond);
 
-// The settled wall of issue 9: at rest, its kinetic energy far below 1e-7 of its potential
-// energy (the counter kinetic_over_potential says how far). Issue 10's targets: 1 ms a step
+// The settled wall: at rest, its kinetic energy far below 1e-7 of its potential
+// energy (the counter kinetic_over_potential says how far). The targets: 1 ms a step
 // at 100 bricks, 15 ms at 1000, 1 s at 10000. Brought to rest by 300 steps with kinetic
 // damping (warm_up above): about 5 s at 1000 bricks and 6 to 7 minutes at 10000 (whose
 // open-close loop takes one iteration a step from about step 230 on), so run
-// that one alone, --benchmark_filter='SettledWall/10000'. (Until 2026-11-23 the warm-up was
+// that one alone, --benchmark_filter='SettledWall/10000'. (Formerly the warm-up was
 // 300 plain steps, after which the 1000-brick wall still moved at ~1e-7 of its potential
 // energy and took 1.2 solves a step, and the 10000-brick wall was still settling.)
 constexpr int kSettleSteps = 300;
@@ -119,7 +119,7 @@ void BM_SettledWall(benchmark::State& state) {
 BENCHMARK(BM_SettledWall)->Arg(100)->Arg(1000)->Iterations(100)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SettledWall)->Arg(10000)->Iterations(10)->Unit(benchmark::kMillisecond);
 
-// The same two walls of rigid bricks (issue 10, item 7): 3 unknowns a brick, so the global
+// The same two walls of rigid bricks: 3 unknowns a brick, so the global
 // system has half the unknowns and a quarter of the entries of the deformable wall's.
 void BM_PackedRigidWall(benchmark::State& state) { run_wall(state, 5, true); }
 BENCHMARK(BM_PackedRigidWall)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);

@@ -1,4 +1,4 @@
-// Block cutting (issue 11): a 200 m x 100 m slope (its face cutting an 80 m x 80 m corner
+// Block cutting: a 200 m x 100 m slope (its face cutting an 80 m x 80 m corner
 // off the rectangle) cut by two persistent joint sets, at 30 degrees 4 m apart and at 120
 // degrees 3 m apart, into about 1500 blocks: trace generation and the exact arrangement.
 // And the full model path of `dda cut` on models/slope.json (about 2000 blocks).

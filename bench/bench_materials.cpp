@@ -1,4 +1,4 @@
-// Cost of one integrate() call of the material library (issue 5) on each return branch:
+// Cost of one integrate() call of the material library on each return branch:
 // elastic, Mohr-Coulomb plane, edge, apex and tension cut-off, Drucker-Prager cone and apex,
 // and the elastic model as the baseline. Each case is a trial stress (given as the initial
 // stress, at zero strain: the trial is s0 + D e either way) with principal axes turned away

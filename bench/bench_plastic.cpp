@@ -1,4 +1,4 @@
-// Cost of a DDA step with plastic blocks against the same scene elastic (issue 5): a packed
+// Cost of a DDA step with plastic blocks against the same scene elastic: a packed
 // wall of 100 bricks (as BM_PackedWall) whose bricks are (0) elastic, (1) Mohr-Coulomb that
 // never yields (cohesion 1 GPa), or (2) Mohr-Coulomb that yields under its own weight
 // (cohesion 10 kPa against ~1e5 Pa of self-weight stress). (0) is the price of elastic

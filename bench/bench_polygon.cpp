@@ -1,4 +1,4 @@
-// The reader's simplicity check (issue 12): a block outline of n vertices on a circle, by
+// The reader's simplicity check: a block outline of n vertices on a circle, by
 // the sweep along x that the reader uses and by the all-pairs reference. Before the sweep an
 // 80 000-vertex polygon took 21 s to read. Run:
 //   build/release/dda_bench --benchmark_filter=Simplicity

@@ -2,7 +2,7 @@
 // bricks 1 m x 0.5 m, the odd rows closed at both ends by half bricks (0.5 m x 0.5 m), rows
 // filled from the bottom (the top row may be partial); under gravity, Mohr-Coulomb joints at
 // 30 degrees, dt 0.002 s, all of one material (given). Used by BM_PackedWall and
-// BM_PlasticWall. (Until 2026-11-23 the odd rows were full bricks shifted by half a brick:
+// BM_PlasticWall. (Formerly the odd rows were full bricks shifted by half a brick:
 // the end brick of every even row then stood with its centroid right above the corner of
 // the brick below, and the wall's ends toppled slowly, so it never settled.)
 #pragma once

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times issue 11's "done when": dda cut then dda fos on a ~2000-block jointed slope
+# Times dda cut then dda fos on a ~2000-block jointed slope
 # (models/slope-fos.json), on both cores. Prints the cut's and the search's wall times and
 # the factor with its bracket; leaves the scene, the report and the pictures in OUT_DIR.
 #

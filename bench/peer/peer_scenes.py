@@ -9,7 +9,7 @@ bricks), on a fixed base 1 m thick reaching 1 m beyond either end, as bench/bric
 builds them; rock (2700 kg/m3, E 1 GPa, nu 0.25), joints at 30 degrees without cohesion,
 dt 0.002 s, 200 steps (with --end-time T: run to T seconds instead, as the comparison to
 0.4 s does), everything else at its default (penalty auto = 50 E).
-The moving scenes of issue 25 (box150, hopper300, ...) come from
+The moving scenes (box150, hopper300, ...) come from
 verification/hard-cases/make_scenes.py --moving.
 """
 import argparse

@@ -1,7 +1,7 @@
-// Faults and hostile inputs (issue 28, the input half), each through the real command line:
-// inputs that are not regular files or are too large, keys and values of 100 000
-// characters, coordinates and water far beyond any scene, Poisson's ratio next to 0.5, a
-// scene at rest, and thousands of blocks at one place. Each refusal is exit 2 with one
+// Faults and hostile inputs (the output half is test_output_faults_cli.cpp), each through the
+// real command line: inputs that are not regular files or are too large, keys and values of
+// 100 000 characters, coordinates and water far beyond any scene, Poisson's ratio next to
+// 0.5, a scene at rest, and thousands of blocks at one place. Each refusal is exit 2 with one
 // message naming the file and the reason, and nothing written.
 #include <sys/stat.h>
 
@@ -193,9 +193,9 @@ TEST_CASE("coordinates and water far beyond any scene are refused at their key",
 }
 
 TEST_CASE("a Poisson's ratio next to 0.5 is refused at its key, and 0.499 runs", "[input][cli]") {
-  // 0.4999999999 was accepted: issue 28 reports 39 845 steps and 370 350 open-close cuts for
-  // 0.04 s of an ordinary scene (103 s); measured here, the default scene's impact gains
-  // 2666 % of its energy scale (exit 3) and a plastic column cuts 52 of 300 steps.
+  // 0.4999999999 was accepted, and was reported to take 39 845 steps and 370 350 open-close
+  // cuts for 0.04 s of an ordinary scene (103 s); measured here, the default scene's impact
+  // gains 2666 % of its energy scale (exit 3) and a plastic column cuts 52 of 300 steps.
   dda::test::TempDir dir("dda-hostile-");
   for (const double nu : {0.4999999999, 0.4999}) {
     json s = base_scene();

@@ -1,4 +1,4 @@
-// Inputs at the edge (issue 12), each through the real command line: numbers that would
+// Inputs at the edge, each through the real command line: numbers that would
 // overflow or vanish in double precision, coordinates too coarse for the contacts, an end
 // time shorter than round-off, a plastic block that starts outside its yield surface, a
 // scene with no free block, and the contact search and step limit measured against the

@@ -1,5 +1,5 @@
 // Long commands stopped by a signal, and a reused output directory, through the real
-// command line (issue 12): what was written is kept, complete and marked.
+// command line: what was written is kept, complete and marked.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <nlohmann/json.hpp>

@@ -432,7 +432,7 @@ std::vector<BadSpec> bad_specs() {
        with(s, "/material/young", -5),
        "material.young",
        {"must be positive, got -5"}},
-      // ---- rigid (a scene key of materials, issue 10, item 7) ----
+      // ---- rigid (a scene key of materials; docs/scene-format.md, "Rigid blocks") ----
       {"rigid not a boolean",
        with(s, "/material/rigid", "yes"),
        "material.rigid",

@@ -1,4 +1,4 @@
-// Monitoring points (scene key `monitors`, DIR/monitors.csv; issue 11): through the real
+// Monitoring points (scene key `monitors`, DIR/monitors.csv): through the real
 // command line, on motions with closed forms. The contract's header is checked verbatim.
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
-// Output faults through the real command line (issue 28, the output half): an output path
-// that holds a device, a FIFO or a directory is never replaced; a full disk (/dev/full) or a
-// file-size limit (ulimit -f, whose SIGXFSZ dda ignores) is "results could not be written",
-// exit 1 naming the file, with no file cut short under its final name and no temporary file
-// left; dda fos checks its output directory before any work.
+// Output faults through the real command line (the input half is test_hostile_inputs_cli.cpp):
+// an output path that holds a device, a FIFO or a directory is never replaced; a full disk
+// (/dev/full) or a file-size limit (ulimit -f, whose SIGXFSZ dda ignores) is "results could not
+// be written", exit 1 naming the file, with no file cut short under its final name and no
+// temporary file left; dda fos checks its output directory before any work.
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <unistd.h>

@@ -453,7 +453,7 @@ TEST_CASE("a square in the notch of the L-shape: contacts on both walls, the ref
   //  b.v0 is within 0.01 of a.v3: a vertex pair. a.v3 is reflex, so (Shi's angle-to-angle
   //  rule for a concave angle) b.v0 goes on both edges of the reflex corner: the floor (gap
   //  dy) and the wall (gap dx), each with wedge score 0. Near a reflex corner free space is
-  //  the intersection of the two walls' outer sides: both hold the corner in. (Before issue 9
+  //  the intersection of the two walls' outer sides: both hold the corner in. (Formerly
   //  the pair went to one wall only, the larger gap, and the corner could pass through the
   //  other.)
   //  a's other corners (2,1), (1,2) project outside b's edges or are 0.5 from them; b.v2 is
@@ -552,7 +552,6 @@ TEST_CASE("a search distance larger than the blocks does not reach their far sid
 
 // ---------------------------------------------------------------------------------------
 // 4. concave blocks: stepped bases, L-shaped blocks, vertices meeting reflex corners
-//    (issue 9, item 5)
 // ---------------------------------------------------------------------------------------
 //
 // The stepped base used below, counter-clockwise:
@@ -640,7 +639,7 @@ TEST_CASE("a square on the lower step of a stepped base: the corner by the riser
   //  contact; one of each is kept, marked (vv).
   //  Nothing else is within reach: b.v2 is 0.5 from every edge; a.v4 (2,2) projects past the
   //  end of b's left side (t = -1) and is 0.5 above b's top; a.v2 (4,1) is 1.5 away.
-  // Before issue 9 the pair went to one edge only (the larger gap): with dx = 2 mm, dy = 0
+  // Formerly the pair went to one edge only (the larger gap): with dx = 2 mm, dy = 0
   // the riser, and b.v0 lost its support on the tread.
   const Polygon a = stepped_base();
   const std::vector<std::string> corner_held = {"v1.0 on e0.2 (vv)", "v1.0 on e0.3 (vv)",
@@ -871,7 +870,7 @@ TEST_CASE("face shares: a vertex carries half of the overlap of its face with th
   // Running bond: a brick over [0.5, 1.5] on a brick of the course below over [0, 1] (its
   // top edge (1, 0) -> (0, 0)): they share [0.5, 1]. The upper brick's vertex at 0.5 and the
   // lower brick's at 1 carry a quarter metre each, half a metre in all, not half a brick
-  // each (a metre, twice the face they share, until 2026-11-26).
+  // each (the former rule: a metre, twice the face they share).
   const Polygon upper{{0.5, 0}, {1.5, 0}, {1.5, 0.5}, {0.5, 0.5}};
   const Polygon lower{{0, -0.5}, {1, -0.5}, {1, 0}, {0, 0}};
   CHECK_THAT(length(upper, 0, {1, 0}, {0, 0}), WithinAbs(0.25, kTol));

@@ -1,4 +1,4 @@
-// Block cutting's geometry (issue 11, cutting/cut_domain): a domain cut by joint segments
+// Block cutting's geometry (cutting/cut_domain): a domain cut by joint segments
 // with CGAL's exact arrangement. Checked against what a cut must keep: the blocks' areas sum
 // to the domain's, no two blocks overlap, every block is a simple counter-clockwise polygon,
 // dead-end traces leave nothing inside a block, and a hole is bridged.

@@ -1,4 +1,4 @@
-// `dda cut` (issue 11): a cutting model read with located errors (io/model_reader), cut and
+// `dda cut` (docs/cutting.md): a cutting model read with located errors (io/model_reader), cut and
 // labelled (cutting/cut_model: region materials, fixed blocks, the joint material of each
 // pair of neighbours from the joints that made their shared edge), written as a scene that
 // the scene reader takes without a warning and that runs; the command line's exit codes;
@@ -347,7 +347,7 @@ TEST_CASE("dda cut: a bad model exits 2 with its place, a good one writes a scen
 
 TEST_CASE("the example slope model cuts into about 2000 blocks", "[cut]") {
   // models/slope.json: a 200 m x 100 m slope profile and two joint sets, meant to give on the
-  // order of 2000 blocks (issue 11). The bounds are that order of magnitude, loosely.
+  // order of 2000 blocks. The bounds are that order of magnitude, loosely.
   const Model model = read_model_file(std::string(DDA_SOURCE_DIR) + "/models/slope.json");
   const CutModel cut = cut_model(model.spec);
   INFO(cut.cut.blocks.size() << " blocks");

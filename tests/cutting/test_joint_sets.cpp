@@ -1,4 +1,4 @@
-// Joint sets as traces (issue 11, cutting/joint_sets): orientation, spacing and persistence
+// Joint sets as traces (cutting/joint_sets): orientation, spacing and persistence
 // of the traces against their inputs, exactly without scatter and statistically with it,
 // reproducibly from a seed; and a slope cut by two sets.
 #include <catch2/catch.hpp>

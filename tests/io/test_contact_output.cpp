@@ -1,4 +1,4 @@
-// Contact output (issue 11): the contacts of an output step as VTK points with their mode,
+// Contact output: the contacts of an output step as VTK points with their mode,
 // forces and joint material, the count of each mode per joint material, and both through a
 // real run (contacts.pvd, summary.json's contacts.modes_by_joint_material).
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
 // The input readers' shared pieces (io/json_input.hpp): text echoed in messages cut to a
 // readable length, and input files refused before reading when they are not regular files
-// or are too large (issue 28).
+// or are too large.
 #include <sys/stat.h>
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Output files that fail whole or not at all (io/output_file.hpp, issue 28).
+// Output files that fail whole or not at all (io/output_file.hpp).
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>

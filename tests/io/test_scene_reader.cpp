@@ -255,7 +255,7 @@ std::vector<BadScene> bad_scenes() {
        "pins[0].point", {"(10, 10) is outside every block"}},
       {"point load outside every block", edit(s, "\"point\": [1, 1]", "\"point\": [-5, 3]"),
        "point_loads[0].point", {"(-5, 3) is outside every block"}},
-      // ---- monitors (issue 11) ----
+      // ---- monitors ----
       {"monitor outside every block", edit(s, "\"point\": [3, 0.5]", "\"point\": [9, 9]"),
        "monitors[1].point", {"(9, 9) is outside every block"}},
       {"monitor without a name", edit(s, "\"name\": \"toe\", ", ""), "monitors[1].name",
@@ -266,7 +266,7 @@ std::vector<BadScene> bad_scenes() {
        "monitors[1].name", {"comma"}},
       {"monitor with an unknown key", edit(s, "\"name\": \"toe\"", "\"name\": \"toe\", \"block\": 0"),
        "monitors[1].block", {"unknown key (known keys: name, point)"}},
-      // ---- new in issue 3: control of contacts ----
+      // ---- control of contacts ----
       {"max_open_close 1", edit(s, "\"max_open_close\": 5", "\"max_open_close\": 1"),
        "control.max_open_close", {"at least 2, got 1"}},
       {"max_open_close not an integer", edit(s, "\"max_open_close\": 5", "\"max_open_close\": 2.5"),
@@ -337,7 +337,7 @@ std::vector<BadScene> bad_scenes() {
        "joints[0].friction_angle", {"unknown key", "known keys: blocks, material"}},
       {"joints not a list", edit(s, "[{\"blocks\": [1, 0], \"material\": \"bonded\"}]", "{}"),
        "joints", {"expected a list", "an object"}},
-      // ---- plastic materials (issue 5): the key set of each model ----
+      // ---- plastic materials: the key set of each model ----
       {"misspelt plastic key", with(p, "/materials/soil/friction_angel", 30),
        "materials.soil.friction_angel", {"unknown key", "did you mean \"friction_angle\""}},
       {"tension cut-off in Drucker-Prager", with(p, "/materials/clay/tensile_strength", 0),
@@ -394,7 +394,7 @@ std::vector<BadScene> bad_scenes() {
        "materials.soil.hardening", {"at least one [eps_p, cohesion] row", "got 0"}},
       {"plastic model in plane stress", with(p, "/plane", "stress"), "materials.clay.model",
        {"need plane strain", "plane stress"}},
-      // ---- rigid blocks (issue 10, item 7) ----
+      // ---- rigid blocks ----
       {"rigid not a boolean (block)", edit(s, "\"fixed\": true", "\"fixed\": true, \"rigid\": 1"),
        "blocks[0].rigid", {"expected true or false", "the number 1"}},
       {"rigid not a boolean (material)",

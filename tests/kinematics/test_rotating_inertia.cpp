@@ -1,4 +1,4 @@
-// The pseudo-rigid body's inertia (issue 13, item 4; kinematics/rotating_inertia.hpp,
+// The pseudo-rigid body's inertia (kinematics/rotating_inertia.hpp,
 // docs/rotating-inertia.md): a spinning deformable block carries its centrifugal stress,
 // keeps its angular momentum, and a swinging one follows the CVODE solution of the
 // pseudo-rigid body's own equations.
@@ -235,7 +235,7 @@ TEST_CASE("pseudo-rigid inertia: a swinging bar follows the CVODE pseudo-rigid b
   // Bounds: twice the measured error, a fall by a quarter at least, and Shi's error above
   // 15 %. The swing angle agrees to 4e-6 rad at both dt (bound 1e-5), not the time step's
   // error (it hardly falls with dt). Measured under the default finite_rotation_polar
-  // (2026-11-27: 1.49e-3, 9.56e-4, 19.1 %, 3.9e-6 and 3.1e-6 rad); finite_rotation gave the
+  // (1.49e-3, 9.56e-4, 19.1 %, 3.9e-6 and 3.1e-6 rad); finite_rotation gave the
   // same to two digits: at strains of 7e-5 the Hencky and Biot strains and the Kirchhoff
   // and Cauchy stresses agree to 1e-4 of themselves.
   const SwingErrors coarse = swing_errors(0.001, std::nullopt);

@@ -280,7 +280,7 @@ TEST_CASE("Taylor test: the tangent's remainder is second order", "[materials]")
   // beta h ~ h / (strain scale) ~ 1e-2 of the last at h = 2e-5, and with r = c h^n (1 + beta h)
   // the ratio on halving h is 2^n (1 + beta h / 2): within 0.5 % of 2 or 4, and closer with
   // each halving. Measured 0.31 % and 0.16 % at the first halving, then half that each time:
-  // 1 %. (10 % until 2026-11-25, 30 times the deviation.)
+  // 1 %. (Formerly 10 %, 30 times the deviation.)
   struct Case {
     MaterialModel model;
     Vec3 strain;

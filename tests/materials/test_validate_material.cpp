@@ -1,4 +1,4 @@
-// Bad material input (issue 5 item 5): each rule names the key at fault.
+// Bad material input: each rule names the key at fault.
 #include <catch2/catch.hpp>
 
 #include "support/material_builders.hpp"

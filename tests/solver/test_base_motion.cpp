@@ -1,4 +1,4 @@
-// Base shaking (issue 11): the ground's mean acceleration over a step against quadrature,
+// Base shaking: the ground's mean acceleration over a step against quadrature,
 // the reader's checks, and a block on an incline under a sine pulse against Newmark's rigid
 // sliding block, integrated independently here.
 #include <catch2/catch.hpp>
@@ -154,7 +154,7 @@ TEST_CASE("a block on an incline under a sine pulse slides Newmark's displacemen
   // so a step lost at the start loses at most 61.6 dt^2 / 2 = 3.1e-5 m/s of relative speed,
   // and at most 2.8e-5 m of slip over the 0.9 s of the dynamic stage: 3.5e-4 of it.
   // Measured 1.5e-4 of the slip at dt = 1 ms (0.078393 against 0.078405 m); 1e-3 bounds
-  // it (0.5 % until 2026-11-25, 33 times the error), while a wrong frame (gravity plus
+  // it (formerly 0.5 %, 33 times the error), while a wrong frame (gravity plus
   // instead of minus the ground's acceleration) or a step-start instead of a step-mean
   // acceleration would miss by far more.
   CHECK(dda_slip == Approx(reference).epsilon(1e-3));

@@ -1,4 +1,4 @@
-// The reduced system of rigid blocks (issue 10, item 7): BlockSystem's dof map, and the
+// The reduced system of rigid blocks: BlockSystem's dof map, and the
 // step's solve (solve_system) against the full six-slot system with the rigid blocks'
 // strain increments constrained to zero, solved densely on its own.
 #include <catch2/catch.hpp>

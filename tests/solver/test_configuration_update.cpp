@@ -1,4 +1,4 @@
-// The configuration-update treatments of issue 4 (original, second_order, post_adjustment,
+// The configuration-update treatments (original, second_order, post_adjustment,
 // local_frame, local_frame_as_printed) against closed forms: the sign of the frame
 // rotation, area growth of a spinning block, the printed Eq. (19) against the consistent
 // form, and area = A0 det(I + E^) in the block frame.

@@ -96,13 +96,13 @@ TEST_CASE("energy account: friction dissipates mu N times the distance slid", "[
   // remains is the block's elasticity (it squeezes and rocks on its springs): an error of
   // the order of its strain, m g / (b E) = 1.3e-5 for this 1 m wide block at 1 GPa. Measured
   // 9e-7 here (7.8e-6 and 8.9e-6 at dt 2 and 0.5 ms; a tenth at E = 10 GPa, the strain's
-  // 1/E): three times the strain bounds it. (1 % until 2026-11-25, 1e4 times the error.)
+  // 1/E): three times the strain bounds it. (Formerly 1 %, 1e4 times the error.)
   const double strain = m * 9.81 / (1.0 * 1e9);
   CHECK_THAT(w.energy.friction_dissipation, WithinRel(expected, 3.0 * strain));
   // Unexplained: of the order of the block's elastic energy, the stress of its weight over
   // its width, (m g / b)^2 A / 2E = 0.044 J, 4.6e-5 of the potential energy released
   // (m g slid sin 30); measured 0.0118 J (1.24e-5 of it at every dt from 0.5 to 2 ms, a tenth
-  // at E = 10 GPa). (1e-3 of it until 2026-11-25, 80 times the remainder.)
+  // at E = 10 GPa). (Formerly 1e-3 of it, 80 times the remainder.)
   const double elastic = std::pow(m * 9.81 / 1.0, 2) * 0.5 / (2.0 * 1e9);
   INFO("remainder " << w.energy.remainder << " J, elastic energy scale " << elastic << " J");
   CHECK(std::abs(w.energy.remainder) < elastic);
@@ -134,7 +134,7 @@ TEST_CASE("energy account: a block dropped on a floor creates no energy", "[ener
   // the account's terms are up to ~10 times the drop's energy (the potential energy from
   // y = 0 is 3.5 times it, the damping's sum about one), and at most 3000 steps each add a
   // few units of 1.1e-16 of them: ~1e-11 of the drop's energy if they all added up; 1e-9
-  // (measured 3.4e-12 of it at dt 2 ms, 6.9e-13 at 0.2 ms). (1e-3 of it until 2026-11-25,
+  // (measured 3.4e-12 of it at dt 2 ms, 6.9e-13 at 0.2 ms). (Formerly 1e-3 of it,
   // for the re-detection jumps docs/energy-balance.md describes; this drop shows none.)
   // finite_rotation_polar (the default) commits the Hencky strain of the map the step
   // applied, ln U', where the step was linear in the strain increment de: the two differ
@@ -422,7 +422,7 @@ TEST_CASE("energy account: a Mohr-Coulomb block that never yields books no plast
 
 namespace {
 
-// A plastic block in an impact (issue 27, item 8), run under the default treatment: the
+// A plastic block in an impact, run under the default treatment: the
 // largest gain and loss of its energy account, the least plastic dissipation a step
 // booked, the plastic dissipation at the end and the kinetic energy left.
 struct ImpactRun {
@@ -485,7 +485,7 @@ TEST_CASE("energy account: plastic blocks in impacts come to rest with plastic d
           "[energy][plastic]") {
   // Under the default finite_rotation_polar (docs/large-strain.md); each case yields (its
   // plastic dissipation ends above zero). Bounds, against the run's energy scale, are about
-  // three times what was measured (2026-11-27): the gains are the Hencky strain's
+  // three times what was measured: the gains are the Hencky strain's
   // second-order term of the steps with the largest strain increments (the impacts), the
   // loss is the wall's, a contact solved open over the step it opens in
   // (docs/energy-balance.md, "Losses"). A step's plastic dissipation falls below zero by

@@ -1,4 +1,4 @@
-// The treatments that change T inside the step (issue 4): finite_rotation (the secant
+// The treatments that change T inside the step: finite_rotation (the secant
 // rotation column iterated to the step's own r0, docs/paper-errata.md, item 6) and sin_variable
 // (Cheng and Zhang's T'). References: CVODE's pendulum (verification/reference/pendulum_reference), energy
 // conservation and the kinematics of the block frame.
@@ -133,7 +133,7 @@ TEST_CASE("finite_rotation: the paper's swinging octagon keeps its energy and it
   CHECK(swing.largest > M_PI - 1e-2);  // and it did swing all the way across (no damping)
   // The full energy (strain and pin spring included) is not conserved exactly: the
   // trapezoidal step of a turning deformable block on a penalty pin exchanges energy with
-  // the fast strain and pin modes, and it peaks at +81.5 J above E0 (measured 2026-11-26),
+  // the fast strain and pin modes, and it peaks at +81.5 J above E0 (measured),
   // 9.2e-6 of m g l. So "gains nothing" holds to 1e-5 of m g l, not to round-off. The bound,
   // 2e-5 m g l, is about twice that; the original treatment gains 5e7 J on this case, and a
   // pumping scheme gains in proportion to the swings it makes.

@@ -1,4 +1,4 @@
-// Joint water pressure from a phreatic line (issue 11): the pressure resultant on a segment
+// Joint water pressure from a phreatic line: the pressure resultant on a segment
 // against hand integrals, the forces on a joint face, and the reader's checks.
 #include <catch2/catch.hpp>
 
@@ -107,7 +107,7 @@ TEST_CASE("an open joint seen from both sides is wetted once", "[water]") {
   // each contact carries the half of that overlap next to its vertex: [2.75, 5.5] and
   // [0, 2.75] for right's vertices, [0, 2.75] for left's. Their union is [0, 5.5], and the
   // integral of (6 - y) over it is 33 - 5.5^2 / 2 = 17.875 (per contact it would be
-  // 17.875 + 13.125 = 31). Exact integrals: round-off only. (Until 2026-11-26 each vertex
+  // 17.875 + 13.125 = 31). Exact integrals: round-off only. (Formerly each vertex
   // carried half its own face, so right's lower vertex wetted [-0.5, 2.5], a part of its
   // face that faces nothing of the left block: 21.)
   CHECK(on_right == Approx(17.875).epsilon(1e-12));

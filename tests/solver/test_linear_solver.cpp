@@ -282,7 +282,7 @@ TEST_CASE("the supernodal factor of a wall's system agrees with dense LDLT, upda
 }
 
 TEST_CASE("the fast linear paths give the plain path's answers on a settling wall", "[solver]") {
-  // Issue 10: every fast path (CG on a kept factor, rank-one updates with CG on top) against
+  // Every fast path (CG on a kept factor, rank-one updates with CG on top) against
   // the plain factorise-and-solve of the same system, at every solve of 120 steps of a
   // 100-brick wall settling under gravity (contacts close, slide and lock meanwhile). The
   // answers differ by at most 1e-8 relative (the CG tolerance is 1e-13 in energy norm; see
@@ -412,7 +412,7 @@ TEST_CASE("the lower triangle written straight into compressed columns is the de
 }
 
 TEST_CASE("the analysis is kept on a pattern that survives contact changes", "[solver]") {
-  // Issue 10, item 5: a system whose couplings all lie in the analysed pattern (a contact
+  // A system whose couplings all lie in the analysed pattern (a contact
   // gone) is factorised on that analysis, with explicit zeros; a new coupling makes a new
   // analysis, of the union, so the system without it is then factorised without another.
   // Every answer agrees with dense LDLT of its own system to 1e-10 relative (the bound of the

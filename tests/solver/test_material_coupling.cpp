@@ -1,4 +1,4 @@
-// Plastic blocks inside the DDA step (issue 5 item 4): a Mohr-Coulomb specimen loaded in
+// Plastic blocks inside the DDA step: a Mohr-Coulomb specimen loaded in
 // plane-strain compression through its contacts levels off at the biaxial strength
 // s1 = N s3 + 2 c sqrt(N) (docs/closed-forms.md); one that never yields gives the elastic
 // block's answer.
@@ -222,7 +222,7 @@ TEST_CASE("a Mohr-Coulomb block compressed through its contacts levels off at th
     // springs carry a constant force), so over the last 50 steps s1 rises only by the
     // confinement's growth, N P (J / h at the end - J / h 50 steps before) (1500 Pa, 2.3e-4
     // of the strength, with J = 1): within 5 % of that (measured 0.3 %), where the 0.5 % of
-    // the strength used until 2026-11-25 was 21 times the rise.
+    // the strength formerly used was 21 times the rise.
     const std::size_t before = syy.size() - 50;
     const double rise = syy[before] - syy.back();
     const double growth = n * kConfining *
@@ -365,7 +365,7 @@ TEST_CASE("a non-associated Mohr-Coulomb block: Newton with the unsymmetric tang
   INFO("syy " << b.stress[1] << ", eps_p " << b.material_state.eps_p);
   REQUIRE(b.branch == Branch::Plane);
   // As in the associated test above: the shortening's N P (1 / h - 1) <= 9.3e-4 of the
-  // strength against the nominal s3 (measured 8.6e-4; 2 % until 2026-11-25), and within one
+  // strength against the nominal s3 (measured 8.6e-4; formerly 2 %), and within one
   // step's lag N P 1e-5 / h^2 of the closed form on the present height.
   const double h = height_of(b), n = flow_factor();
   CHECK(std::abs(-b.stress[1] - strength) <= 1e-3 * strength);

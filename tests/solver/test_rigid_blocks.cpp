@@ -1,7 +1,7 @@
-// Rigid blocks (issue 10, item 7): three unknowns (u0, v0, r0) in the same system as
-// deformable blocks. The rigid block's mass terms against the rigid body's own; a deformable
-// block of growing stiffness against the rigid one (the same motion in the limit); rigid
-// blocks under every rotation treatment; a mixed scene dropped into a box.
+// Rigid blocks (docs/scene-format.md, "Rigid blocks"): three unknowns (u0, v0, r0) in the same
+// system as deformable blocks. The rigid block's mass terms against the rigid body's own; a
+// deformable block of growing stiffness against the rigid one (the same motion in the limit);
+// rigid blocks under every rotation treatment; a mixed scene dropped into a box.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>

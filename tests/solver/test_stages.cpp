@@ -132,7 +132,7 @@ constexpr double kSlid = 1e-3;
 //   (static analysis carries a share 2 M/dt^2 / (2 M/dt^2 + k) < 1 of it over), about the
 //   settlement over the ramp's 50 steps, 3e-6 / 50 = 6e-8 m, and a suddenly released
 //   imbalance moves the block at most twice its static deflection: 1.2e-7 m. Measured
-//   9e-10 m (kHeld, used for this until 2026-11-25, was 11000 times that).
+//   9e-10 m (kHeld, formerly used for this, was 11000 times that).
 constexpr double kStill = 2.0 * 3e-6 / 50.0;
 
 // ---- reader ----

@@ -96,7 +96,7 @@ TEST_CASE("free fall stays exact when the displacement ratio cuts a spinning blo
 
 TEST_CASE("the step size remembers: a swinging bar is cut a few times, not at every step",
           "[step][step-size]") {
-  // Issue 25, item 3. A rigid 1 m x 0.2 m bar pinned at the middle of one end, released
+  // A rigid 1 m x 0.2 m bar pinned at the middle of one end, released
   // level, swings 2 s at a scheduled 0.01 s with a step limit of 1 cm (ratio 0.02 of half its
   // length). Its spin reaches sqrt(3 g / L) = 5.4 rad/s at the bottom, turning its far
   // corners (0.51 m from the centroid) by up to 2.8 cm in a scheduled step: beyond the limit
@@ -288,7 +288,7 @@ TEST_CASE("static mode: an initial stress relaxes to the strain -D^-1 s0", "[ste
     const Vec3& strain = treatment == RotationUpdate::Original ? b.strain : b.local_strain;
     CHECK((strain - expected).norm() <= 1e-12 * expected.norm());
     // The stress is s0 + D strain = D (strain - expected): at most |D| |D^-1| (4 at nu 0.25)
-    // times the strain's 1e-12 of s0 (measured 2e-16 of it; 1e-9 until 2026-11-25).
+    // times the strain's 1e-12 of s0 (measured 2e-16 of it; formerly 1e-9).
     CHECK(b.stress.norm() <= 1e-11 * s0.norm());
   }
 }

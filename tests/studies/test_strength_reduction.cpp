@@ -1,4 +1,4 @@
-// Factor of safety by strength reduction (issue 11): the reduced strengths, the Coulomb slip
+// Factor of safety by strength reduction: the reduced strengths, the Coulomb slip
 // joint law, the search's termination and bracket over a made-up verdict, and the factor of
 // a block on an inclined plane against its limit-equilibrium closed form.
 #include <catch2/catch.hpp>
@@ -334,7 +334,7 @@ TEST_CASE("a failing trial slides at the closed-form acceleration of its reduced
   // under W sin a / base = 5e4 Pa over half its height (gamma h / 2 = 1.25e-5 x 2.04 m =
   // 2.6e-5 m at G = 4 GPa) and the shear springs' stretch (5e5 N over two springs of
   // p / 2.5 = 2e11 N/m: 1.25e-6 m), 2.7e-5 m of the 0.32 m travelled: 1e-4 (measured
-  // 1.6e-5). (Both 1 % until 2026-11-25, 640 and 2500 times the errors.)
+  // 1.6e-5). (Both formerly 1 %, 640 and 2500 times the errors.)
   CHECK(t.end_speed == Approx(a * (t.simulated_time - 0.5 * 20 * 0.002)).epsilon(2e-5));
   CHECK(t.largest_displacement == Approx(0.5 * a * t.simulated_time * t.simulated_time).epsilon(1e-4));
 }

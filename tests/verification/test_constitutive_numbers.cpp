@@ -1,4 +1,4 @@
-// The iso-error maps' key numbers (issue 13, item 1, the maps' part): the maps' functions
+// The iso-error maps' key numbers: the maps' functions
 // (verification/constitutive/maps.cpp) run directly on the grid points that carry the
 // numbers of verification/constitutive/README.md, against the values measured on the full
 // 41 x 41 run: each map's maximum error, where it lies and the branches there; the errors

@@ -1,4 +1,4 @@
-// The iso-error maps' smoke run (verification/constitutive, issue 5):
+// The iso-error maps' smoke run (verification/constitutive):
 // `dda_verify_constitutive --smoke` exits 0, prints the report and writes report.md, maps.csv
 // and one CSV per map with every grid point, no failed return, and the start on the surface
 // (error 0 at the zero increment and at every elastic point); bad arguments exit 2. It guards

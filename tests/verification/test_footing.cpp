@@ -1,4 +1,4 @@
-// Plasticity in a boundary-value problem (issue 13 item 8; verification/footing): a smooth
+// Plasticity in a boundary-value problem (verification/footing): a smooth
 // rigid strip footing pressed into a weightless Tresca layer of 128 constant-strain
 // triangular blocks (the coarsest mesh of the refinement study, cell h = b / 2) against
 // Prandtl's bearing pressure (2 + pi) c.
@@ -68,7 +68,7 @@ TEST_CASE("a rigid strip footing on a Tresca layer of blocks reaches Prandtl's l
 
   // The load has levelled off: over the last third of the push the curve's slope is within
   // 5 % of its initial (elastic) slope, and it does not soften beyond 1 % of it. Measured:
-  // -0.1 % (0.8 % until 2026-11-26, when point contacts between triangles that meet only
+  // -0.1 % (0.8 % while point contacts between triangles that meet only
   // at a mesh node still carried half a face of bond each: contact/narrow_phase.hpp,
   // face_shares).
   const CurvePoint& first = r.curve[1];

@@ -1,4 +1,4 @@
-// The paper reproduction's key numbers (issue 13, item 1, in part): the full run of
+// The paper reproduction's key numbers (in part): the full run of
 // `dda_verify_paper` (about 2 s), its CSVs read back and held to closed forms and to the
 // physics of each case. Each tolerance says why it is what it is.
 #include <catch2/catch.hpp>
@@ -368,7 +368,7 @@ TEST_CASE("paper reproduction: the octagon's period and swing against CVODE's ri
 TEST_CASE("paper reproduction: a block sliding down an incline and a Mohr-Coulomb specimen "
           "against their closed forms over dt",
           "[paper]") {
-  // Issue 13, item 9: the work-precision sweeps of speed_incline.csv and speed_plastic.csv.
+  // The work-precision sweeps of speed_incline.csv and speed_plastic.csv.
   SECTION("the sliding block: d = g (sin a - cos a tan phi) t^2 / 2") {
     const std::vector<Row> rows = read_csv(closed_form_run() / "speed_incline.csv");
     REQUIRE(rows.size() == 8);

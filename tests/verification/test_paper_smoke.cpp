@@ -1,4 +1,4 @@
-// The paper reproduction's smoke run (verification/paper, issue 4): `dda_verify_paper --smoke`
+// The paper reproduction's smoke run (verification/paper): `dda_verify_paper --smoke`
 // exits 0, prints the report and writes report.md and every CSV, with the rows the plots read;
 // bad arguments exit 2. The physics of the treatments is tested elsewhere; this test guards the
 // one-command reproduction against breaking.

@@ -1,4 +1,4 @@
-// The slope verification (issue 11, verification/slope): the limit-equilibrium closed forms
+// The slope verification (verification/slope): the limit-equilibrium closed forms
 // reproduce Hoek & Bray's published factors to the precision they are given, and DDA's
 // strength-reduction factor of the cheap cases is the limit-equilibrium one within the
 // bracket and the verdict's resolution (verification/slope/README.md "Tolerances").
@@ -149,7 +149,7 @@ TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the plan
 TEST_CASE("the limit-equilibrium cases' factors do not move with dt (/5, x5) or the penalty "
           "(/10, x10)",
           "[slope]") {
-  // Each setting about 0.2 s (release). Measured (dda_verify_slope --spread, 2026-11-26):
+  // Each setting about 0.2 s (release). Measured (dda_verify_slope --spread):
   // every one of these cases gives the same bracket at all five settings. The tolerance is
   // one step of the search's final bisection (a third of its 0.01 bracket): a verdict that
   // flipped at one trial would move the factor by that much, and no less.

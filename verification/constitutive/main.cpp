@@ -1,5 +1,5 @@
 // dda_verify_constitutive --out DIR [--smoke]: the iso-error maps of the Mohr-Coulomb and
-// Drucker-Prager return maps (issue 5); writes one CSV per map, maps.csv and report.md into
+// Drucker-Prager return maps; writes one CSV per map, maps.csv and report.md into
 // DIR and prints the report. Exit codes: 0 done (large errors are results, not failures);
 // 1 the output could not be written; 2 bad arguments.
 #include <chrono>

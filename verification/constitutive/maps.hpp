@@ -1,4 +1,4 @@
-// Iso-error maps of the material library's return maps (issue 5; docs/closed-forms.md,
+// Iso-error maps of the material library's return maps (docs/closed-forms.md,
 // "Tangents and convergence"): from a stress on the yield surface, one strain increment
 // from a grid, the stress of ONE call to integrate() against a reference of many
 // sub-increments (successive calls with the state carried), mapped as the relative error

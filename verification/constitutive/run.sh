@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The iso-error maps of the material library in one command (issue 5; docs/closed-forms.md,
+# The iso-error maps of the material library in one command (docs/closed-forms.md,
 # "Tangents and convergence"). Prints the report and leaves report.md, the CSVs, the PNGs and
 # projection_check.md in OUT_DIR.
 #

@@ -1,4 +1,4 @@
-// Plasticity in a boundary-value problem (issue 13 item 8): a rigid, smooth strip footing
+// Plasticity in a boundary-value problem: a rigid, smooth strip footing
 // pressed into a weightless layer of Tresca (Mohr-Coulomb, phi = 0) blocks, against
 // Prandtl's bearing capacity q_u = (2 + pi) c. The layer is a mesh of constant-strain
 // triangular blocks bonded by joints far stronger than the soil, so the plasticity is in the

@@ -1,7 +1,7 @@
 // dda_verify_footing --out DIR [--smoke] [--cells H,H,...] [--steps N,N,...]
 //                    [--mesh crossed|diagonal|uniform|both|all] [--jobs N]
 // A smooth rigid strip footing pressed into a weightless Tresca layer of plastic blocks
-// against Prandtl's (2 + pi) c (issue 13 item 8; verification/footing/README.md). Writes
+// against Prandtl's (2 + pi) c (verification/footing/README.md). Writes
 // curves.csv (the load-settlement curve of every run), runs.csv (one row a run: the limit
 // pressure, its error against Prandtl, the cost), zone_<label>.csv (each block's outline and
 // plastic strain at the end), scene_<label>.json (the scene of each run, pins unmoved) and

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The footing verification in one command (issue 13 item 8): a smooth rigid strip footing
+# The footing verification in one command: a smooth rigid strip footing
 # pressed into a weightless Tresca layer of plastic blocks, against Prandtl's (2 + pi) c,
 # with its refinement study (cell size, load step) and cost. Prints the report and leaves
 # curves.csv, runs.csv, zone_*.csv, report.md and the PNGs (curves.png, limit.png,

@@ -8,7 +8,7 @@
 #
 #   verification/fuzz/run.sh OUT_DIR [--smoke] [--sanitized] [--seeds N] [--mutants M] [--first-seed S]
 #
-# Default: the campaign of issue 28 over again, 13 seeds of 250 mutants (3250 runs, about
+# Default: README.md's first campaign over again, 13 seeds of 250 mutants (3250 runs, about
 # 70 s on two cores in the release build). --smoke: two seeds of 200 mutants (a few seconds;
 # CI, also under the sanitizers). --sanitized: the program is an ASan/UBSan build (no
 # address-space limit; a sanitizer report is a crash). OUT_DIR/report.md and report.json

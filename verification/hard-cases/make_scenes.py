@@ -120,20 +120,20 @@ def case_column(n=20):
     # Static runs (no impacts): the elastic squares spread sideways under the column's
     # weight, and the lowest one's base corners slip outwards on the floor, each by up to
     # nu (1 + nu) sigma (b / 2) / E (plane strain, sigma the column's weight over the base).
-    # Since 2026-11-23 a corner that locks again keeps the friction it slid against
+    # A corner that locks again keeps the friction it slid against
     # (docs/contacts.md, "Relocking"), and which of the two corners locks first in a step is
     # decided by round-off: the column may shift by up to that slip (measured 1.5e-6 and
     # 2.1e-6 m at the two time steps; before, with the friction dropped at each lock, 1e-9 to
     # 5e-8 m). The limit is that slip, 5.2e-6 m.
     # Dynamic runs: the squares land flat on each other, and a landing a hair off flat
     # tilts; the impacts amplify round-off about 1e10-fold between 0.12 s and 0.2 s, on the
-    # plain factorise path as on the kept-factor one (measured 2026-11-23: 1e-15 m -> 1e-5
+    # plain factorise path as on the kept-factor one (measured: 1e-15 m -> 1e-5
     # m), and the drift saturates at millimetres whose value is a chaotic outcome: over nine
     # time steps from 0.0005 to 0.0022 s it ranged from 0.3 to 13.4 mm (13.4 at 0.002 s,
-    # 0.3 at 0.00205 s; measured 2026-11-23), so a limit inside that range would pass or fail
+    # 0.3 at 0.00205 s), so a limit inside that range would pass or fail
     # on round-off. The check asks for no lean a user would see and that the column
     # stands: 2.5 cm, a tenth of a block's width, a 0.3 degree lean of the 5.2 m column.
-    # (It was 2.5 mm until 2026-11-23, then 1 cm when the kept factor's CG showed 3.6 mm.)
+    # (It was first 2.5 mm, then 1 cm when the kept factor's CG showed 3.6 mm.)
     half_width, poisson, young = 0.125, ROCK["poisson"], ROCK["young"]
     sigma = n * RHO * G * (2 * half_width) ** 2 / (2 * half_width)
     spread = poisson * (1 + poisson) * sigma * half_width / young
@@ -279,7 +279,7 @@ def case_topple():
                 end_time=3.0, fall=1.0)
 
 def cases(smoke):
-    rng = random.Random(9)  # issue 9; every random draw below comes from this one stream
+    rng = random.Random(9)  # the suite's seed; every random draw below comes from this one stream
     box5, box30 = case_box(5, rng), case_box(30, rng)
     pack16, pack48 = case_pack(16, rng), case_pack(48, rng)
     every = {"box5": box5, "box30": box30, "column": case_column(),
@@ -450,7 +450,7 @@ def moving_hopper300(rng, n=300, end_time=4.0):
 def moving_rockfall10(rng, n=10, end_time=8.0):
     """A benched slope of three fixed levels, each a 4 m face (60, 55 and 50 degrees from
     the top down) with a 2 m flat bench below the upper two, then a fixed floor 25 m long
-    ending at a low fixed wall (15 m until 2026-11-25: the farthest boulder's runout is
+    ending at a low fixed wall (the floor was 15 m before: the farthest boulder's runout is
     chaotic, 3.5 to 14.6 m over time steps near 0.002 s, and one in twenty cleared the 1 m
     wall); friction 38 degrees, below every face's angle, so a boulder
     on a face slides or tumbles. Ten boulders (random convex polygons, 5 to 8 vertices on

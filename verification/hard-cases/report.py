@@ -20,9 +20,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 # The remainder tolerances, as shares of the case's energy scale. Gains: 1e-3. Shi's scheme
 # with penalty contacts only removes energy, so an honest gain is the account's own error
 # (terms taken at the step's end, round-off); measured on every run of the suite, of
-# --moving (both contact solvers), --moving-small and --arches on 2026-11-26: at most
+# --moving (both contact solvers), --moving-small and --arches: at most
 # 1.1e-4 with the default solver (the falling column at dt 0.002 s), 2.6e-4 with Shi's
-# loop (the dominoes). 1e-3 is four times the largest. (It was 1 % until then, a gain a
+# loop (the dominoes). 1e-3 is four times the largest. (It was formerly 1 %, a gain a
 # user would see in a plot.) Losses: 2 %. A contact solved open over the step it
 # opens in neither returns nor books what its spring held (docs/energy-balance.md,
 # "Losses"): the head-on collision at dt 0.0002 s loses 1.13 %, the dynamic piles and the

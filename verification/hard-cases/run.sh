@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The hard-case suite of issue 9 in one command: writes the scenes, runs each with
+# The hard-case suite in one command: writes the scenes, runs each with
 # `dda run`, timing it, then writes OUT_DIR/report.md and one PNG per case, and prints the
 # report. Exits 1 if any run fails its checks (everything is still written), 2 on bad use.
 #

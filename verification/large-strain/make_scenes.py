@@ -11,8 +11,8 @@ name, treatment, kind, expectation). --smoke: the default treatment
 Every scene but the three *_static ones is dynamic (dynamic_coefficient 1), has gravity (9.81 m/s^2) from its first
 step, plane strain, max_displacement_ratio 0.01, and a fixed 5 x 0.5 m base (E = 10 GPa)
 under x = -2..3 m, y = -0.5..0; the joints are frictional (30 degrees, no cohesion, no
-tensile strength); the penalty is 5e12 N/m (PENALTY, below). The scenes of issue 27 (docs/large-strain.md, section 4), as the
-earlier session ran them:
+tensile strength); the penalty is 5e12 N/m (PENALTY, below). The scenes of
+docs/large-strain.md, section 4, as the earlier session ran them:
 
   soft2      a 1 x 2 m elastic block, E = 1 MPa, nu 0.25, rho 2000, standing on the base:
              about 5 % strain under its own weight, oscillating; dt 0.002 s, 3000 steps;
@@ -35,7 +35,7 @@ and two elastic controls:
   rock_drop  a 0.5 m rock block (E = 1 GPa, rho 2700) dropped 0.1 m onto rock; dt 0.002 s,
              0.6 s: strains of 1e-4, where both treatments must agree;
 
-and, for issue 27 item 8 (plastic blocks thrown, crushed, static; each step in history.csv):
+and plastic blocks thrown, crushed and static (each step in history.csv):
 
   throw      drop01's block, 1 x 0.5 m, thrown at 3 m/s at a fixed wall from 0.01 m;
   crush      a 1 x 1 m MC block under a 2 x 0.75 m steel block (115.5 kN/m), joints 5 deg;
@@ -104,7 +104,7 @@ def drop(treatment, height, material, output_every=100000):
 
 # The plastic block of drop01 and drop1: Mohr-Coulomb with a tension cut-off of 0.
 MC_CUTOFF = {**MOHR_COULOMB, "tensile_strength": 0.0}
-# Every step in history.csv for the plastic scenes added for issue 27 item 8, so that
+# Every step in history.csv for the plastic scenes thrown, crushed and static, so that
 # summarise.py sees each step's plastic dissipation; drop01, drop1 and mc_no_cutoff (3000
 # steps) write every 10th, as writing 3000 VTK frames a run would take the smoke past its
 # few seconds on this machine's disk.
@@ -211,7 +211,7 @@ CASES = {
     "elastic_drop1": ("impact", "run", lambda t: drop(
         t, 1.0, {"model": "elastic", "density": 2000.0, "young": 1e8, "poisson": 0.3})),
     "rock_drop": ("impact", "run", rock_drop),
-    # issue 27 item 8: plastic blocks thrown, crushed, and the same static
+    # plastic blocks thrown, crushed, and the same static
     "throw": ("impact", "run", throw),
     "crush": ("settling", "run", lambda t: crush(t, True)),
     "drop01_static": ("settling", "run", drop_static),

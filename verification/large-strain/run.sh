@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Blocks that strain a lot under the default rotation treatment (issue 27;
+# Blocks that strain a lot under the default rotation treatment (see
 # verification/large-strain/README.md): make_scenes.py writes the scenes (soft elastic
 # blocks, a soft/stiff stack, Mohr-Coulomb blocks dropped, one without a tension cut-off,
 # two elastic controls, Mohr-Coulomb blocks thrown at a wall and crushed, static runs), `dda run` runs each under finite_rotation_polar (the default) and
@@ -59,7 +59,7 @@ for scene in "$out"/scenes/*.json; do
   run_one "$scene" "$out/runs/$name"
 done
 
-# Where finite_rotation stopped early, the default up to the same step: issue 27 asks for
+# Where finite_rotation stopped early, the default up to the same step: it must need
 # no more solves than finite_rotation, and a run that stopped at step 33 cannot be compared
 # with one of 3000 steps by their totals.
 if [ ${#smoke[@]} -eq 0 ]; then

@@ -8,7 +8,7 @@ default treatment (finite_rotation_polar) fails a check:
     largest loss within the tolerance of its kind (below) of the energy scale;
   - in every run of a scene with plastic blocks (a material other than elastic), the
     plastic dissipation (history.csv `plastic_dissipation`, cumulative) and its increments
-    between the rows written (each step in the scenes of issue 27 item 8, every 10th step
+    between the rows written (each step in the thrown, crushed and static scenes, every 10th step
     in the 3000-step drops) are never below -PLASTIC_ROUNDOFF x the energy scale;
   - the Mohr-Coulomb block without a tension cut-off stops (exit not 0) with a message
     that names the block and the reason (the stress beyond the apex, which psi = 0 cannot
@@ -27,7 +27,7 @@ import sys
 DEFAULT = "finite_rotation_polar"
 
 # |remainder| / scale allowed to the default, by kind of scene. Both are the largest share
-# measured on 2026-11-27 (README.md) with a margin of about 1.6, and both lie far below
+# measured (README.md) with a margin of about 1.6, and both lie far below
 # control.energy_tolerance (0.02), the guard that stopped finite_rotation's runs.
 TOLERANCE = {
     # Blocks set on the base and loaded by gravity at once, no impact: largest measured
@@ -47,7 +47,7 @@ TOLERANCE = {
 # A step's plastic dissipation is A (sigma1 - sigma0) . d_eps - dU_el - A/2 dsigma : C^-1 :
 # dsigma (docs/energy-balance.md), a difference of terms no larger than the scene's energy
 # (scale): what is left of it in a step without plastic flow is round-off of those terms,
-# a few 1e-16 of them. Measured 2026-11-28 over every run: the most negative increment
+# a few 1e-16 of them. Measured over every run: the most negative increment
 # -9.5e-13 J/m (drop1, rows every 10th step; 1.9e-17 of its scale; throw -2.3e-13), the
 # most negative total -1.8e-12 J/m (drop1, which flows only at its tension cut-off,
 # where sigma . d_eps_p = 0). 1e-12 of the scale (2.7e-8 to 3.4e-7 J/m here) is ~4e4
@@ -99,7 +99,7 @@ def check_stop(message, free_blocks):
     if not names_reason:
         problems.append("does not give the reason (stress beyond the apex)")
     # The reason must come first: a message that opens with the step cut reads as a solver
-    # failure (issue 27 asks for the block and the reason, "not a step cut below 1e-9").
+    # failure (a user needs the block and the reason, "not a step cut below 1e-9").
     if STEP_CUT in message.split(";")[0]:
         problems.append("leads with the step cut, not the reason")
     return problems

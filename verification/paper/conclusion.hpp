@@ -1,4 +1,4 @@
-// The report's conclusion (issue 13, item 2): which treatment is best by each measure the
+// The report's conclusion: which treatment is best by each measure the
 // reproduction takes, and the plain statement of its headline finding, with the numbers
 // read from this run's results (nothing in it is written by hand).
 #pragma once

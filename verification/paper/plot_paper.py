@@ -36,8 +36,8 @@ def read(dirname, name):
         return list(csv.DictReader(f))
 
 
-# The treatments' names (issue 4's contract), in the program's order: each keeps its colour in
-# every figure, whichever of them a run has.
+# The treatments' names (docs/scene-format.md, "Rotation treatments"), in the program's order:
+# each keeps its colour in every figure, whichever of them a run has.
 TREATMENTS = ["original", "second_order", "post_adjustment", "sin_variable", "local_frame",
               "local_frame_as_printed", "finite_rotation"]
 

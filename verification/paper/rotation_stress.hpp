@@ -1,4 +1,4 @@
-// Stress under rotation (issue 13, items 3 and 4): what each treatment's block carries while
+// Stress under rotation: what each treatment's block carries while
 // it turns, against closed forms and CVODE, and the evidence for the reproduction's headline
 // (the paper's local_frame and Ke's post_adjustment gain energy on the paper's own swinging
 // octagon): the gain against dt and against the pin's stiffness, and the octagon as a rigid

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The paper reproduction in one command (issue 4): Jiang and Zheng (2015), Section 5, for
+# The paper reproduction in one command: Jiang and Zheng (2015), Section 5, for
 # every rotation treatment. Prints the report and leaves report.md, the CSVs and the PNGs
 # in OUT_DIR.
 #

@@ -1,4 +1,4 @@
-// Speed against error beyond rotation (issue 13, item 9): work-precision sweeps over dt for
+// Speed against error beyond rotation: work-precision sweeps over dt for
 // (a) a contact case with a closed form, a block sliding down an incline with friction,
 //     d(t) = g (sin a - cos a tan phi) t^2 / 2;
 // (b) a plastic case with a closed form, the plane-strain compression of a Mohr-Coulomb

@@ -14,12 +14,12 @@
 namespace dda::paper {
 
 struct Treatment {
-  std::string_view name;   // the scene name (issue 4's contract)
+  std::string_view name;   // the scene name (docs/scene-format.md, "Rotation treatments")
   RotationUpdate value;
   std::string_view paper;  // the paper's row for it, empty if the paper has none
 };
 
-// Adding a treatment is one line here. Every name of issue 4 has an enum value now; whether
+// Adding a treatment is one line here. Every treatment name has an enum value now; whether
 // the library implements it is found out at run time (run_world), so the table need not
 // change as the other engineers finish theirs.
 inline const std::vector<Treatment>& all_treatments() {

@@ -1,4 +1,4 @@
-// The issue's alternative to the hand-written Newton of the step loop (issue 5 item 4):
+// An alternative to the hand-written Newton of the step loop:
 // KINSOL's Newton with a sparse direct linear solve (SUNDIALS' KLU) on one step's
 // equilibrium with the contact modes held fixed. Used to measure the two against each other
 // (bench/bench_newton.cpp) and to check that they find the same increments (tests).

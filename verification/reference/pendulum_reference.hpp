@@ -1,5 +1,5 @@
 // Reference solution of the rigid pendulum by SUNDIALS CVODE, for verifying the DDA rotation
-// treatments (issue 4: "period and amplitude against a CVODE solution of the pendulum equation").
+// treatments: their period and amplitude against a CVODE solution of the pendulum equation.
 //
 // Equation (per unit thickness, SI units):
 //

@@ -2,8 +2,8 @@
 // a body whose deformation is homogeneous, x = xc + R(theta) U (X - Xc), U = I + E with E
 // the strain in the body's own axes. That is exactly a DDA block's kinematics with finite
 // rotation, so the solution is an independent reference for one block of any stiffness:
-// a spinning block's centrifugal stress, a swinging block's strain (issue 13, item 4;
-// docs/rotating-inertia.md).
+// a spinning block's centrifugal stress, a swinging block's strain
+// (docs/rotating-inertia.md).
 //
 // The equations are Lagrange's, derived here without the step's formulas: kinetic energy
 // T = 1/2 m |xc'|^2 + 1/2 tr(F' J0 F'^T) with F = R U and J0 = int rho (X - Xc)(X - Xc)^T dA,

@@ -1,4 +1,4 @@
-// Limit-equilibrium factors of safety of the slope verification (issue 11), derived in
+// Limit-equilibrium factors of safety of the slope verification, derived in
 // limit_equilibrium.cpp from the free bodies of Hoek & Bray (1981, Rock Slope Engineering,
 // 3rd ed., chapters 7 and 9) and Wyllie & Mah (2004, 4th ed., chapters 6, 7 and 10). Units: kN
 // per metre, kPa, m, degrees. Every factor here is a strength-reduction factor: the one F that,

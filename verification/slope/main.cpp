@@ -1,6 +1,6 @@
 // dda_verify_slope --out DIR [--smoke] [--case NAME]... [--jobs N] [--verbose]: the factor of
 // safety of Hoek & Bray's slope examples by DDA strength reduction beside their
-// limit-equilibrium closed forms (issue 11); writes slope.csv, report.json, report.md and the
+// limit-equilibrium closed forms; writes slope.csv, report.json, report.md and the
 // mechanisms' outlines into DIR and prints the report. Exit codes: 0 done (a case off its
 // tolerance or skipped is a result in the report, not a failure); 1 a case could not run or
 // the output could not be written; 2 bad arguments.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The slope verification in one command (issue 11): DDA strength reduction against the
+# The slope verification in one command: DDA strength reduction against the
 # limit-equilibrium factors of Hoek & Bray's examples. Prints the report and leaves slope.csv,
 # report.md, report.json, mechanism_*.json and mechanism_*.png in OUT_DIR.
 #

@@ -1,4 +1,4 @@
-// The cases of the slope verification (issue 11): each a scene built in code, its
+// The cases of the slope verification: each a scene built in code, its
 // limit-equilibrium factor from limit_equilibrium.hpp, the published value it is checked
 // against, and the resolution within which a strength-reduction search can find it (README
 // "Tolerances"). Shared by dda_verify_slope and

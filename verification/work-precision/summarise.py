@@ -9,7 +9,7 @@ topple also the error of Shi's step applied to the closed form's own equations
     /usr/bin/python3 verification/work-precision/summarise.py OUT [--check]
 
 --check: exit 1 when a run's error passes its case's bound (BOUNDS: a few times the largest
-measured on 2026-11-27, README.md) or a run did not complete.
+measured, README.md) or a run did not complete.
 """
 import argparse
 import csv
