@@ -55,7 +55,7 @@ TEST_CASE("block slides down a 30 degree incline with friction 20 degrees", "[co
   // d(t) = acc (t - tau)^2 / 2. Measured tau = 0.52 dt here (0.3 to 0.94 dt at E = 1e9 and
   // 1e10 Pa and dt 0.5 to 2 ms; -0.09 dt at 0.5 ms and 1e9 Pa: the transient's phase decides
   // the sign), so |tau| <= dt, a relative error of at most 2 dt / t: 0.4 % at 1 s (measured
-  // 0.21 %), 0.2 % at 2 s (0.10 %). The 1 % used until 2026-11-25 was 5 to 10 times the error.
+  // 0.21 %), 0.2 % at 2 s (0.10 %). The 1 % used formerly was 5 to 10 times the error.
   const double lag1 = 1.0 - std::sqrt(2.0 * d[0] / acc), lag2 = 2.0 - std::sqrt(2.0 * d[1] / acc);
   INFO("d(1) = " << d[0] << " expected " << acc / 2 << "; d(2) = " << d[1] << " expected "
                  << acc * 2 << "; lag at 1 s " << lag1 / dt << " dt, at 2 s " << lag2 / dt << " dt");
@@ -83,8 +83,8 @@ TEST_CASE("block stays put on a 30 degree incline with friction 35 degrees", "[c
   // 50 E) stretch under m g sin a, so the creep scales as 1/E (measured 2.25e-6, 2.25e-7 and
   // 2.25e-8 m at E = 1, 10, 100 GPa) and stays below the compliance scale m g sin a / E
   // (6.6e-6 m for this unit-thickness block at 1 GPa; measured 0.34 of it at dt 2 ms, 0.69
-  // at 0.5 ms, where the settling transient overshoots more). The bound of 1e-4 m used until
-  // 2026-11-25 was 44 times the creep.
+  // at 0.5 ms, where the settling transient overshoots more). The bound of 1e-4 m used formerly
+  // was 44 times the creep.
   const double compliance = 2700.0 * kG * 0.5 * std::sin(M_PI / 6.0) / 1e9;
   INFO("creep at 1 s " << d[0] << " m, at 2 s " << d[1] << " m (difference " << d[1] - d[0]
                        << " m), compliance scale " << compliance);
@@ -127,7 +127,7 @@ TEST_CASE("a stack of five blocks on a fixed base stays at rest under its own we
   // widen under it, which moves their areas and lever arms by their strain, at most
   // rho g H / E = 2700 x 9.81 x 5 / 1e9 = 1.3e-4 at the bottom. Measured 2.3e-5 (top) to
   // 6.0e-5 (bottom), the same at dt 5 ms, and a tenth of that at E = 10 GPa (the strain's
-  // 1/E): the strain bounds it. (1e-3 until 2026-11-25, 17 times the largest error.)
+  // 1/E): the strain bounds it. (1e-3 formerly, 17 times the largest error.)
   const double strain = 2700.0 * kG * 5.0 / 1e9;
   for (int k = 1; k <= 5; ++k) {
     const Block& b = world.blocks[6 - k];
@@ -193,9 +193,9 @@ TEST_CASE("a dropped block bounces, settles, and gains no energy", "[contact]") 
   // the block's own weight squeezes by (1 + nu)(1 - 2 nu) rho g h / (2 E) = 8.3e-6: measured
   // 8.2e-6 short of m g / 2p (1.1e-9 m), nothing left of the rocking (the contact cycle,
   // damped by ~Omega / 4 = 0.14 each, has gone through 170 cycles); 2e-5 relative. (1e-6 m
-  // absolute until 2026-11-25, 900 times the error.)
+  // absolute formerly, 900 times the error.)
   // At rest: the velocity 2 d / dt - v0 is round-off of O(1 m) positions over dt = 2 ms,
-  // ~1e-13 m/s (measured 1.6e-14 m/s; 1e-3 m/s until 2026-11-25).
+  // ~1e-13 m/s (measured 1.6e-14 m/s; 1e-3 m/s formerly).
   CHECK(std::abs(world.blocks[1].velocity[1]) < 1e-11);
   CHECK_THAT(lowest_vertex(world.blocks[1]), WithinRel(-2700.0 * kG / 2e8, 2e-5));
   // Never deeper than allowed (the step is cut or the penalty raised otherwise).
@@ -205,7 +205,7 @@ TEST_CASE("a dropped block bounces, settles, and gains no energy", "[contact]") 
   // which can only lower the sum) never exceeds its start. Round-off: each of the 2000
   // steps adds at most a few units of 1.1e-16 of the 13 kJ scale to the sum, 4.4e-13 of it
   // if they all added up: 1e-12 of the drop energy (measured 6.9e-11 J, 5e-15 of it; 1e-9 of
-  // it until 2026-11-25).
+  // it formerly).
   INFO("largest gain " << worst_gain << " J");
   CHECK(worst_gain <= 1e-12 * 2700.0 * kG * 0.5);
 }
@@ -275,7 +275,7 @@ TEST_CASE("a diamond dropped on a corner resolves the vertex-to-vertex contact",
                << d.rotation);
   // Shi's scheme and the contacts only take energy out. Round-off: v^2 and 2 g dy are at most
   // ~10 m2/s2 here, each step adds at most a few units of 2.2e-15 m2/s2, so ~1000 steps all
-  // adding up make 2e-12 m2/s2: 1e-11 (measured 2.4e-15; 1e-9 until 2026-11-25).
+  // adding up make 2e-12 m2/s2: 1e-11 (measured 2.4e-15; 1e-9 formerly).
   CHECK(worst_excess <= 1e-11);
   CHECK(deepest <= world.allowed_penetration);
   if (side > 0) {
@@ -284,7 +284,7 @@ TEST_CASE("a diamond dropped on a corner resolves the vertex-to-vertex contact",
     // under its weight over half its height, (1 - nu^2) (rho g h / 2) / E x h / 2 = 1.55e-6 m
     // at most (no lateral restraint; 1.38e-6 m fully restrained): measured 1.55e-6 m below
     // 0.25. The default treatment (finite_rotation) keeps the area through the tip, so 2e-6
-    // m bounds it. (1e-3 m until 2026-11-25, when Shi's first-order T was the default: it
+    // m bounds it. (1e-3 m formerly, when Shi's first-order T was the default: it
     // inflated the side by ~1e-4 over the tip.)
     CHECK(d.moments.centroid.y() < 0.25);
     CHECK(d.moments.centroid.y() > 0.25 - 2e-6);
@@ -363,7 +363,7 @@ TEST_CASE("a block on an incline follows the Goodman and Bray chart", "[contact]
   // (moments about the corner, I = m (b^2 + h^2) / 3), the corner needs a friction of
   // |R_t| / R_n = 0.366 at 30 degrees and b/h 0.3, 0.470 at 35 degrees and b/h 0.4, 0.278 at
   // 20 degrees and b/h 0.25. The sliding-and-toppling cases (30, 20, 0.3) and (35, 25, 0.4)
-  // used until 2026-11-23 were 0.5 % and 0.9 % past that demand (tan 20 = 0.364, tan 25 =
+  // used formerly were 0.5 % and 0.9 % past that demand (tan 20 = 0.364, tan 25 =
   // 0.466): on the boundary, not away from it. These have friction 16 % and 14 % below
   // the demand (tan 17 = 0.306, tan 22 = 0.404), and enough of it that the sliding block
   // still turns 0.1 rad within the second (at 10 and 15 degrees it only slides that long).
@@ -417,7 +417,7 @@ TEST_CASE("a bonded joint holds a hanging block until the load exceeds its stren
   // at E = 1 GPa a load 1e-5 short of the strength (99.999 %) already breaks the bond, 1e-4
   // short (99.99 %) holds; at E = 10 GPa (a tenth of the shift) 99.999 % holds. So 99.99 % /
   // 100.01 % is the bracket this block allows (eight times the shift); the 90 % / 110 % used
-  // until 2026-11-25 was a thousand times wider.
+  // formerly was a thousand times wider.
   const double held = hanging_block_drop(0.9999 * strength - weight);
   // While it holds the centroid drops by the corner springs' stretch F / 2p (1e-6 m, the
   // auto penalty p = 50 E) plus the block's elastic stretch over half its height,
@@ -425,7 +425,7 @@ TEST_CASE("a bonded joint holds a hanging block until the load exceeds its stren
   // top edge's contraction partly (measured sxx = 0.30 syy): between unrestrained (sxx = 0,
   // eps_yy = (1 - nu^2) syy / E: 2.44e-5 m with the springs) and fully restrained
   // (sxx = nu / (1 - nu) syy, eps_yy = (1 + nu)(1 - 2 nu) / (1 - nu) syy / E: 2.18e-5 m).
-  // Measured 2.21e-5 m (plane strain; the 1e-4 m used until 2026-11-25 was 4.5 times it).
+  // Measured 2.21e-5 m (plane strain; the 1e-4 m used formerly was 4.5 times it).
   const double e = 1e9, nu = 0.25, pull = 0.9999 * strength;
   const double syy = pull * 0.5 / 1.0, springs = pull / (2.0 * 50.0 * e);
   const double free_drop = springs + (1.0 - nu * nu) * syy / e * 0.5;

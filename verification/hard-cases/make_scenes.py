@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes the hard-case scenes (issue 9) and their manifest.
+"""Writes the hard-case scenes and their manifest.
 
     make_scenes.py OUT_DIR [--smoke | --moving [NAME ...] | --moving-small | --arches]
 

@@ -317,7 +317,7 @@ def main():
                     f"{rem} | {physics} | **{'pass' if ok else 'FAIL'}** |")
         if s.get("message"):
             notes.append(f"- `{m['name']}`: {s['message'][:400]}")
-    lines = ["# Hard cases (issue 9): multi-block dynamics that never gains energy", "",
+    lines = ["# Hard cases: multi-block dynamics that never gains energy", "",
              f"{len(manifest) - failed} of {len(manifest)} runs pass. A run passes when `dda` "
              f"exits 0, its energy remainder stays below {TOLERANCE:g} of the case's energy "
              f"scale (and above -{LOSS_TOLERANCE:g}: energy lost unbooked) and its physics "

@@ -285,7 +285,7 @@ def main():
                      f"{cpu} | {r['check']} | {fmt_energy(r.get('plastic_final'))} | "
                      f"{fmt_energy(r.get('plastic_min_increment'))} |")
     if same_steps:
-        lines += ["", "Solves over the same steps (issue 27: no more than finite_rotation):", "",
+        lines += ["", "Solves over the same steps (the default should take no more than finite_rotation):", "",
                   "| scene | steps | finite_rotation | finite_rotation_polar | ratio | |",
                   "|---|---:|---:|---:|---:|---|"]
         for c in same_steps:

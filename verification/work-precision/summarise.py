@@ -106,7 +106,7 @@ def main():
     args = parser.parse_args()
     failures = []
     manifest = json.load(open(os.path.join(args.out, "manifest.json")))
-    lines = ["# Work-precision of multi-block contact cases (issue 27, item 6)", "",
+    lines = ["# Work-precision of multi-block contact cases", "",
              "Error against the closed form and the solver's wall time (`summary.json` "
              "`wall_time_s`, one run each, one core), by time step and penalty (a factor of "
              "E = 1 GPa). README.md has the cases and what the figures say.", ""]
