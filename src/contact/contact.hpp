@@ -61,7 +61,7 @@ struct ContactState {
   // a sliding contact's friction in a step's first iteration uses the last step's.
   double normal_force = 0.0;
   // A change of mode the accepted solve asked for but did not wait for, because it was
-  // within the contact resolution (solver/contact_assembly.cpp, kDeferShare): the contact
+  // within the contact resolution (solver/open_close_modes.cpp, kDeferShare): the contact
   // starts the next step in this mode (carry_over), anchored there if it locks.
   std::optional<ModeChange> deferred;
   // The augmented-Lagrangian multiplier of the normal spring, as a length (m; lambda / p):
@@ -70,7 +70,7 @@ struct ContactState {
   // (solver/contact_assembly.cpp) when a settled solve leaves the contact deeper than its
   // target share of the allowance, kept while the contact stays closed (so a resting load
   // stays carried), set to zero where a solver opens the contact (Shi's loop in
-  // solver/contact_assembly.cpp, the Newton solver in solver/contact_newton.cpp).
+  // solver/open_close_modes.cpp, the Newton solver in solver/contact_newton.cpp).
   double rest_shift = 0.0;
   // The energy of the shear spring at the end of the last accepted step (J per metre),
   // F^2 / 2 ks whether locked or sliding: the energy account treats a sliding contact as its

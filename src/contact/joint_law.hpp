@@ -25,6 +25,12 @@ enum class JointLawKind : std::uint8_t {
   CoulombSlip,
 };
 
+// A contact's springs: the normal spring is the scene's penalty p, the shear spring Shi's
+// usual p / 2.5 (Shi 1988; docs/contacts.md). Every assembly, response and energy of a
+// contact takes its shear stiffness from here.
+inline constexpr double kShearSpringRatio = 1.0 / 2.5;
+inline double shear_stiffness(double penalty) { return kShearSpringRatio * penalty; }
+
 struct JointLaw {
   double tan_phi = 0.0;           // tan(friction angle)
   double cohesion = 0.0;          // Pa
@@ -107,7 +113,7 @@ bool change_allowed(const Contact& c, const ContactDecision& next, int free_chan
 // locked one's shear spring (stiffness ks, N/m) is stretched past the friction limit by at
 // most that; a sliding one's slip reversed by at most that. A bond that forms or breaks is
 // never within it. Such a change need not hold up the open-close loop
-// (solver/contact_assembly.cpp, kDeferShare).
+// (solver/open_close_modes.cpp, kDeferShare).
 bool change_within_resolution(const Contact& c, const ContactDecision& next,
                               const ContactTrial& trial, const JointLaw& law, double ks,
                               double resolution);

@@ -8,13 +8,11 @@
 #include "contact/contact.hpp"
 #include "solver/sparse_cholesky.hpp"
 #include "solver/block_system.hpp"
+#include "solver/energy_terms.hpp"
 #include "solver/step_context.hpp"
 #include "solver/world.hpp"
 
 namespace dda {
-
-// Shi's shear spring is the normal penalty divided by 2.5 (Shi 1988; docs/contacts.md).
-inline constexpr double kShearSpringRatio = 1.0 / 2.5;
 
 // How a contact sees the unknowns: a scalar measure g = g0 + a.d_v + b.d_e, with d_v the
 // vertex block's increments and d_e the edge block's.
@@ -36,24 +34,6 @@ double evaluate(const World& world, const Contact& c, const Measure& m, const Ei
 void add_contact_terms(const World& world, std::vector<Contact>& contacts,
                        const StepContext& ctx, BlockSystem& system);
 
-// What one pass of the contact decisions found.
-struct ContactUpdate {
-  int changed = 0;  // contacts that changed mode (0: the open-close loop has converged)
-  // Contacts held closed by the chatter rule although the solve puts them in tension beyond
-  // the held-tension band: a step that ends with any is not accepted (it is cut), since the
-  // held spring pulls its vertex across the gap it started with and so creates energy.
-  int held_in_tension = 0;
-};
-
-// From the step's increments d: each contact's new gap, forces and next mode.
-ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& contacts,
-                                   const Eigen::VectorXd& d, const StepContext& ctx);
-
-// Where a contact measures its gap and friction next (ContactState::predicted_slip): a
-// sliding contact's slip in the latest solve (iterate.slip), within twice the larger step
-// limit of its blocks; zero for any other mode.
-double predicted_slip(const World& world, const Contact& c);
-
 // The stiffness a contact adds to K in its present mode, as rank-one terms c c^T with
 // c = sqrt(k) m (normal spring when closed, shear spring when locked); appended to `out`.
 void contact_spring_terms(const World& world, const Contact& c, const StepContext& ctx,
@@ -72,6 +52,22 @@ void contact_spring_terms(const World& world, const Contact& c, const StepContex
 // floor at steps of 1e-6 s left at 10.8 m/s. (A static step starts from rest: no impact.)
 int augment_multipliers(const World& world, std::vector<Contact>& contacts, double target_share,
                         const StepContext& ctx);
+
+// The contacts' share of an accepted step's energy account (before the configuration
+// update, with the modes and forces the contact solver left): their normal springs' and
+// shear springs' backward-Euler losses, the multipliers' work, friction's dissipation (and
+// any push forward, which the guard then names), each contact noted with what it brought in.
+void book_contact_step(const std::vector<Contact>& contacts, const StepContext& ctx,
+                       StepEnergy& step);
+
+// Adds the energy the contacts' springs hold now to `energy` (closed contacts' normal
+// springs at either sign of the gap, penetrating open ones, shear springs locked or sliding).
+void add_contact_spring_energy(const std::vector<Contact>& contacts, double penalty,
+                               double& energy);
+
+// After an accepted step: each contact keeps its shear spring's energy for the next step's
+// account (ContactState::spring_energy).
+void record_spring_energies(std::vector<Contact>& contacts, double penalty);
 
 // The deepest penetration of any contact after the step, as a share of that contact's
 // allowed penetration (> 1: deeper than allowed); 0 if none.

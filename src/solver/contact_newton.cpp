@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/joint_law.hpp"
 #include "solver/contact_assembly.hpp"
+#include "solver/open_close_modes.hpp"
 #include "solver/linear_solver.hpp"
 
 namespace dda {
@@ -45,7 +47,7 @@ constexpr int kLineSearchEvaluations = 40;
 
 ContactNewton::ContactNewton(const World& world, const std::vector<Contact>& contacts,
                              const StepContext& ctx)
-    : kn_(ctx.penalty), ks_(kShearSpringRatio * ctx.penalty) {
+    : kn_(ctx.penalty), ks_(shear_stiffness(ctx.penalty)) {
   start_.resize(contacts.size());
   solved_strength_.assign(contacts.size(), 0.0);
   solved_mode_.assign(contacts.size(), {ContactMode::Open, 0});

@@ -13,6 +13,7 @@
 #include "solver/assembly.hpp"
 #include "solver/configuration_update.hpp"
 #include "solver/contact_assembly.hpp"
+#include "solver/open_close_modes.hpp"
 #include "solver/base_motion.hpp"
 #include "solver/contact_detection.hpp"
 #include "solver/contact_newton.hpp"

@@ -74,7 +74,7 @@ BondCheck check_consolidation_bonds(const Scene& scene, double consolidation_fac
     if (!c.state.bonded) continue;
     // The state keeps the compression only; a bonded contact held open carries the
     // tension of its normal spring, p (gap - rest shift), as the open-close loop computes
-    // it (solver/contact_assembly.cpp).
+    // it (solver/open_close_modes.cpp).
     const double spring_gap = c.gap - c.state.rest_shift;
     const double normal = spring_gap > 0.0 ? -w.penalty * spring_gap : c.state.normal_force;
     demand[i] = bond_demand(normal, c.iterate.shear_force, c.length,
