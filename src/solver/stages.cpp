@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "contact/bonding.hpp"
+#include "solver/schedule.hpp"
 #include "solver/step.hpp"
 #include "solver/world.hpp"
 
@@ -92,10 +93,8 @@ double stage_gravity_factor(const StagePlan& plan, int stage, double t) {
   if (!s.gravity_ramp) return s.gravity_to;
   const double start = stage_start(plan, stage);
   const double end = plan.end_times[static_cast<std::size_t>(stage)];
-  // The stage's last step lands on its end up to round-off: within 1e-9 of its shortest
-  // time step, the share step.cpp's is_finished takes as the end reached.
-  const double typical = *std::min_element(s.time_steps.begin(), s.time_steps.end());
-  if (t >= end - 1e-9 * typical) return s.gravity_to;
+  // The stage's last step lands on its end up to round-off, as is_finished takes it.
+  if (reached_time(t, end, s.time_steps)) return s.gravity_to;
   const double share = std::clamp((t - start) / s.duration, 0.0, 1.0);
   return s.gravity_from + (s.gravity_to - s.gravity_from) * share;
 }

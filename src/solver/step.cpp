@@ -19,6 +19,7 @@
 #include "solver/contact_newton.hpp"
 #include "solver/energy.hpp"
 #include "solver/material_coupling.hpp"
+#include "solver/schedule.hpp"
 #include "solver/secant_angles.hpp"
 #include "solver/step_solve.hpp"
 
@@ -70,8 +71,6 @@ constexpr double kPenetrationHardShare = 10.0;
 constexpr double kOvershootShare = 0.01;
 // Below this share of the scheduled step the run is declared diverged.
 constexpr double kSmallestStepShare = 1e-9;
-// Times closer than this share of a step count as equal (end_time reached).
-constexpr double kTimeRoundOff = 1e-9;
 // The step size that remembers (World::step_size, remember_step): after a cut, each step that
 // succeeds at the remembered size lets the next try up to this factor longer, until the
 // schedule is reached. 1.2 (ODE step controllers cap growth at 1.5 to 5,
@@ -385,8 +384,7 @@ bool is_finished(const World& world) {
   // A run takes at least one step: an end time within round-off of the start (the reader
   // keeps it at least 1e-9 s) is one step of that length, not none.
   if (world.step == 0) return false;
-  const double typical = *std::min_element(c.time_steps.begin(), c.time_steps.end());
-  return world.time >= *c.end_time - kTimeRoundOff * typical;
+  return reached_time(world.time, *c.end_time, c.time_steps);
 }
 
 namespace {

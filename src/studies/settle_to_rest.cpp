@@ -74,12 +74,8 @@ Settling settle_to_rest(World& world, const SettlingSettings& s,
   std::vector<double> ratios;
   int flat = 0;         // creep windows in a row that did not fall
   double last_window = 0.0;
-  bool first = true;    // run() calls the observer once before the first step
-  const StepObserver observe = [&](const World& w, const RunStats&) {
-    if (first) {
-      first = false;
-      return true;
-    }
+  RunHook hook;
+  hook.after_step = [&](const World& w, const RunStats&) {
     const std::size_t n = ratios.size() + 1;  // steps so far
     MotionMark now{free_block_centroids(w), w.time, static_cast<long>(n)};
     const MotionMark& from = recent.window_start(now.step);
@@ -109,7 +105,7 @@ Settling settle_to_rest(World& world, const SettlingSettings& s,
     }
     return !keep_going || keep_going();
   };
-  out.stats = run(world, observe);
+  out.stats = run(world, hook);
   if (out.stats.diverged) out.stopped = "diverged: " + out.stats.message;
   if (out.stopped.empty()) out.stopped = "interrupted";
   out.steps = static_cast<int>(ratios.size());

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "solver/run.hpp"
+#include "solver/schedule.hpp"
 #include "studies/recent_motion.hpp"
 #include "studies/trial_watch.hpp"
 
@@ -171,8 +172,7 @@ FosSettings resolve_fos_settings(const World& consolidated, FosSettings s,
     s.trial_time = std::sqrt(2.0 * s.failure_displacement / (s.detect_acceleration * g));
     // A static trial relaxes at the pace the consolidation settled at, in steps: at least
     // relaxations_per_trial e-folds of it (docs/factor-of-safety.md, section 1).
-    const double dt = *std::min_element(consolidated.control.time_steps.begin(),
-                                        consolidated.control.time_steps.end());
+    const double dt = shortest_time_step(consolidated.control.time_steps);
     s.trial_time = std::max(s.trial_time, s.relaxations_per_trial * relaxation_steps * dt);
   }
   if (s.decay_horizon_steps <= 0.0 && relaxation_steps > 0.0) {
@@ -181,16 +181,13 @@ FosSettings resolve_fos_settings(const World& consolidated, FosSettings s,
   return s;
 }
 
-TrialResult run_trial(const World& consolidated, const FosSettings& s, double factor,
-                      const StopQuery& stop) {
-  assert(s.failure_displacement > 0.0 && s.trial_time > 0.0);
-  const auto start = std::chrono::steady_clock::now();
-  TrialResult r;
-  r.factor = factor;
-  r.world = consolidated;
-  World& w = r.world;
-  // The trial: no stages (their gravity and joints have done their work); the last time
-  // steps the consolidation used, the trial's dynamic coefficient, the reduced strengths.
+namespace {
+
+// The trial's world: the consolidated one with no stages (their gravity and joints have done
+// their work), the last time steps the consolidation used, the trial's dynamic coefficient,
+// the reduced strengths, and every block at rest.
+World trial_world(const World& consolidated, const FosSettings& s, double factor) {
+  World w = consolidated;
   w.stages = StagePlan{};
   w.base_motion.reset();  // a strength-reduction trial is static loading: no shaking
   w.control.dynamic_coefficient = s.dynamic_coefficient;
@@ -208,47 +205,11 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
   // that ended dynamic must not hand its motion to the verdict.
   for (Block& b : w.blocks) b.velocity.setZero();
   w.step_size = StepSizeMemory{};  // nor its remembered step size: the trial starts on schedule
+  return w;
+}
 
-  // A step count far beyond what the trial time needs (step cuts shorten steps) bounds the
-  // trial even if the time step collapses.
-  const double dt = *std::min_element(w.control.time_steps.begin(), w.control.time_steps.end());
-  const long step_cap = 20L * static_cast<long>(std::ceil(s.trial_time / dt)) + 100;
-  // Speeds are taken as displacements over windows of steps (TrialWatch), not from the
-  // blocks' velocities: rigid blocks on penalty springs keep vibrating at centimetres per
-  // second in a slope that stands (measured on models/slope-fos.json at F = 1: 2.6 cm/s after
-  // 1 s, against a creep speed of 3.5 cm/s, with 0.5 mm of displacement), and the vibration
-  // averages out.
-  TrialWatch watch({s.failure_displacement, s.trial_time, s.detect_acceleration,
-                    s.dynamic_coefficient, consolidated.gravity.norm(),
-                    std::max(0.0, s.decay_horizon_steps), dt},
-                   watched_points(w));
-  TrialStop stopped = TrialStop::Continue;
-  bool before_first_step = true;  // run() calls the observer once before the first step
-  const StepObserver observe = [&](const World&, const RunStats&) {
-    if (before_first_step) {
-      before_first_step = false;
-      return true;
-    }
-    ++r.steps;
-    if (stop && stop()) {
-      r.interrupted = true;
-      return false;
-    }
-    r.kinetic_peak = std::max(r.kinetic_peak, total_kinetic(w));
-    stopped = watch.observe(watched_points(w), w.time - consolidated.time, r.steps);
-    return stopped == TrialStop::Continue && r.steps < step_cap;
-  };
-  // The ordinary run loop (solver/run.hpp) runs the trial; the verdict watches its steps.
-  r.stats = run(w, observe);
-  r.kinetic_end = total_kinetic(w);
-  r.simulated_time = w.time - consolidated.time;
-  r.largest_displacement = watch.largest_displacement();
-  r.watched_point = watch.watched_point();
-  const std::vector<Vec2> end_points = watched_points(w);
-  const SpeedWindow end = watch.end_speed(end_points, r.simulated_time, r.steps);
-  r.end_speed = end.speed;
-  r.end_speed_limit = end.limit;
-  r.predicted_displacement = watch.predicted_displacement(end_points, r.simulated_time, r.steps);
+// The verdict from how the watch stopped the trial and where its motion ended.
+void judge(TrialResult& r, const FosSettings& s, TrialStop stopped) {
   r.stable = false;
   if (r.interrupted) {
     r.verdict = "interrupted";
@@ -270,16 +231,69 @@ TrialResult run_trial(const World& consolidated, const FosSettings& s, double fa
     r.stable = true;
     r.verdict = stopped == TrialStop::AtRest ? "at rest" : "did not fail within the trial time";
   }
-  if (w.monitors.empty() && r.watched_point >= 0) {
-    // Watched points are the free blocks in order: the ordinal back to the block index.
-    int ordinal = 0;
-    for (std::size_t i = 0; i < w.blocks.size(); ++i) {
-      if (w.blocks[i].fixed) continue;
-      if (ordinal++ == r.watched_point) {
-        r.watched_point = static_cast<int>(i);
-        break;
-      }
+}
+
+// Watched points are the free blocks in order (no monitors): the ordinal back to the block
+// index.
+int block_of_watched_point(const World& w, int ordinal) {
+  int k = 0;
+  for (std::size_t i = 0; i < w.blocks.size(); ++i) {
+    if (w.blocks[i].fixed) continue;
+    if (k++ == ordinal) return static_cast<int>(i);
+  }
+  return ordinal;
+}
+
+}  // namespace
+
+TrialResult run_trial(const World& consolidated, const FosSettings& s, double factor,
+                      const StopQuery& stop) {
+  assert(s.failure_displacement > 0.0 && s.trial_time > 0.0);
+  const auto start = std::chrono::steady_clock::now();
+  TrialResult r;
+  r.factor = factor;
+  r.world = trial_world(consolidated, s, factor);
+  World& w = r.world;
+
+  // A step count far beyond what the trial time needs (step cuts shorten steps) bounds the
+  // trial even if the time step collapses.
+  const double dt = shortest_time_step(w.control.time_steps);
+  const long step_cap = 20L * static_cast<long>(std::ceil(s.trial_time / dt)) + 100;
+  // Speeds are taken as displacements over windows of steps (TrialWatch), not from the
+  // blocks' velocities: rigid blocks on penalty springs keep vibrating at centimetres per
+  // second in a slope that stands (measured on models/slope-fos.json at F = 1: 2.6 cm/s after
+  // 1 s, against a creep speed of 3.5 cm/s, with 0.5 mm of displacement), and the vibration
+  // averages out.
+  TrialWatch watch({s.failure_displacement, s.trial_time, s.detect_acceleration,
+                    s.dynamic_coefficient, consolidated.gravity.norm(),
+                    std::max(0.0, s.decay_horizon_steps), dt},
+                   watched_points(w));
+  TrialStop stopped = TrialStop::Continue;
+  RunHook hook;
+  hook.after_step = [&](const World&, const RunStats&) {
+    ++r.steps;
+    if (stop && stop()) {
+      r.interrupted = true;
+      return false;
     }
+    r.kinetic_peak = std::max(r.kinetic_peak, total_kinetic(w));
+    stopped = watch.observe(watched_points(w), w.time - consolidated.time, r.steps);
+    return stopped == TrialStop::Continue && r.steps < step_cap;
+  };
+  // The ordinary run loop (solver/run.hpp) runs the trial; the verdict watches its steps.
+  r.stats = run(w, hook);
+  r.kinetic_end = total_kinetic(w);
+  r.simulated_time = w.time - consolidated.time;
+  r.largest_displacement = watch.largest_displacement();
+  r.watched_point = watch.watched_point();
+  const std::vector<Vec2> end_points = watched_points(w);
+  const SpeedWindow end = watch.end_speed(end_points, r.simulated_time, r.steps);
+  r.end_speed = end.speed;
+  r.end_speed_limit = end.limit;
+  r.predicted_displacement = watch.predicted_displacement(end_points, r.simulated_time, r.steps);
+  judge(r, s, stopped);
+  if (w.monitors.empty() && r.watched_point >= 0) {
+    r.watched_point = block_of_watched_point(w, r.watched_point);
   }
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -10,6 +10,7 @@
 #include "solver/contact_detection.hpp"
 #include "kinsol_step.hpp"
 #include "solver/material_coupling.hpp"
+#include "solver/moving_anchors.hpp"
 #include "solver/run.hpp"
 #include "solver/step.hpp"
 #include "solver/world.hpp"
@@ -88,19 +89,24 @@ struct LoadedStress {
   std::vector<double> expected;
 };
 LoadedStress load_up(Platen& p, double top, int steps) {
-  StepWorkspace ws;
-  RunStats stats;
   LoadedStress out;
-  for (int k = 1; k <= steps; ++k) {
-    const double load = top * k / steps;
-    p.world.loads[p.vertical_load].force = Vec2(0.0, -load);
-    const StepOutcome outcome = advance_step(p.world, ws, stats);
-    INFO(outcome.message);
-    REQUIRE(outcome.ok);
-    const Block& b = p.world.blocks[p.specimen];
+  const int first = p.world.step;
+  p.world.control.steps = first + steps;
+  double load = 0.0;
+  RunHook hook;
+  hook.before_step = [&](World& w) {
+    load = top * (w.step - first + 1) / steps;
+    w.loads[p.vertical_load].force = Vec2(0.0, -load);
+  };
+  hook.after_step = [&](const World& w, const RunStats&) {
+    const Block& b = w.blocks[p.specimen];
     out.syy.push_back(b.stress[1]);
     out.expected.push_back(-load / (b.vertices[1].x() - b.vertices[0].x()));
-  }
+    return true;
+  };
+  const RunStats stats = run(p.world, hook);
+  INFO(stats.message);
+  REQUIRE_FALSE(stats.diverged);
   return out;
 }
 
@@ -129,25 +135,25 @@ struct PushShape {
 
 std::vector<double> push_down(Platen& p, double per_step, int steps, RunStats* out = nullptr,
                               PushShape* shape = nullptr) {
-  StepWorkspace ws;
-  RunStats stats;
   std::vector<double> syy;
-  for (int k = 1; k <= steps; ++k) {
-    p.world.pins[0].anchor.y() -= per_step;
-    const StepOutcome outcome = advance_step(p.world, ws, stats);
-    INFO(outcome.message);
-    REQUIRE(outcome.ok);
-    syy.push_back(p.world.blocks[p.specimen].stress[1]);
+  p.world.control.steps = p.world.step + steps;
+  RunHook hook;
+  hook.before_step = moving_anchors(Vec2(0.0, -per_step));
+  hook.after_step = [&](const World& w, const RunStats&) {
+    const Block& b = w.blocks[p.specimen];
+    syy.push_back(b.stress[1]);
     if (shape != nullptr) {
-      const Block& b = p.world.blocks[p.specimen];
       shape->height.push_back(height_of(b));
-      shape->kirchhoff.push_back(kirchhoff_factor(p.world, b));
+      shape->kirchhoff.push_back(kirchhoff_factor(w, b));
     }
-  }
+    return true;
+  };
+  const RunStats stats = run(p.world, hook);
+  INFO(stats.message);
+  REQUIRE_FALSE(stats.diverged);
   if (out != nullptr) *out = stats;
   return syy;
 }
-
 
 }  // namespace
 
@@ -347,19 +353,20 @@ TEST_CASE("a non-associated Mohr-Coulomb block: Newton with the unsymmetric tang
   // tangent, and the solve that confirms it (3 solves; the symmetric part alone took 12).
   const double psi = 10.0;
   Platen p = platen_test(MaterialModel::MohrCoulomb, true, psi);
-  StepWorkspace ws;
-  RunStats stats;
-  Vec4 plastic_before = Vec4::Zero();
-  long solves_last_step = 0;
-  for (int k = 1; k <= 200; ++k) {
-    if (k == 150) plastic_before = p.world.blocks[p.specimen].material_state.plastic_strain;
-    p.world.pins[0].anchor.y() -= 1e-5;
-    const long before = stats.iterations;
-    const StepOutcome outcome = advance_step(p.world, ws, stats);
-    INFO(outcome.message);
-    REQUIRE(outcome.ok);
-    solves_last_step = stats.iterations - before;
-  }
+  push_down(p, 1e-5, 149);
+  const Vec4 plastic_before = p.world.blocks[p.specimen].material_state.plastic_strain;
+  long solves_last_step = 0, solves_so_far = 0;
+  p.world.control.steps = 200;
+  RunHook hook;
+  hook.before_step = moving_anchors(Vec2(0.0, -1e-5));
+  hook.after_step = [&](const World&, const RunStats& stats) {
+    solves_last_step = stats.iterations - solves_so_far;
+    solves_so_far = stats.iterations;
+    return true;
+  };
+  const RunStats stats = run(p.world, hook);
+  INFO(stats.message);
+  REQUIRE_FALSE(stats.diverged);
   const Block& b = p.world.blocks[p.specimen];
   const double strength = biaxial_strength();
   INFO("syy " << b.stress[1] << ", eps_p " << b.material_state.eps_p);
@@ -393,12 +400,7 @@ TEST_CASE("KINSOL's Newton finds the step the hand-written Newton finds", "[plas
     // carried normal force, which is what Shi's open-close loop solves; the converged contact
     // solver lets the friction follow N (docs/contact-solver.md), a different step.
     p.world.control.contact_solver = ContactSolver::OpenClose;
-    StepWorkspace ws;
-    RunStats stats;
-    for (int k = 1; k <= 150; ++k) {
-      p.world.pins[0].anchor.y() -= 1e-5;
-      REQUIRE(advance_step(p.world, ws, stats).ok);
-    }
+    push_down(p, 1e-5, 150);
     REQUIRE(p.world.blocks[p.specimen].branch == Branch::Plane);
     p.world.pins[0].anchor.y() -= 1e-5;
     std::vector<Contact> contacts = p.world.contacts;
@@ -411,6 +413,8 @@ TEST_CASE("KINSOL's Newton finds the step the hand-written Newton finds", "[plas
     INFO("psi " << psi << ": " << k.message << ", " << k.iterations << " iterations");
     REQUIRE(k.ok);
     CHECK(k.iterations <= 4);  // quadratic: the plastic correction and a confirmation
+    StepWorkspace ws;  // the one step, from a fresh factorisation as KINSOL's
+    RunStats stats;
     REQUIRE(advance_step(p.world, ws, stats).ok);
     Eigen::VectorXd hand(p.world.dof_count);
     for (const Block& b : p.world.blocks) {

@@ -4,14 +4,15 @@
 #include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <unordered_set>
 
 #include <nlohmann/json.hpp>
 
 #include "io/scene_reader.hpp"
+#include "solver/moving_anchors.hpp"
 #include "solver/run.hpp"
-#include "solver/step.hpp"
 #include "solver/world.hpp"
 
 namespace dda::footing {
@@ -180,7 +181,6 @@ FootingResult run_footing(const FootingCase& c) {
   FootingResult r;
   r.blocks = footing - 3;
   const double per_step = c.settlement / c.steps;
-  StepWorkspace ws;
   RunStats stats;
   const auto t0 = std::chrono::steady_clock::now();
   const double cpu0 = thread_cpu_seconds();
@@ -242,24 +242,27 @@ FootingResult run_footing(const FootingCase& c) {
     cuts_before = stats.cut_steps;
     r.curve.push_back(p);
   };
-  record(0);
-  for (int k = 1; k <= c.steps; ++k) {
-    // The driver moves the anchors between steps: the pins' springs then store
-    // p/2 ((x - a')^2 - (x - a)^2) more at the points where the step starts. That is the
-    // work of whatever moves the footing, booked as load work so that the energy account
-    // (and its guard) sees it; within the step the anchors stay put as the account assumes.
-    for (Pin& p : world.pins) {
-      const double before = (p.current - p.anchor).squaredNorm();
-      p.anchor.y() -= per_step;
-      world.energy.load_work += 0.5 * world.penalty * ((p.current - p.anchor).squaredNorm() - before);
-    }
-    const StepOutcome outcome = advance_step(world, ws, stats);
-    if (!outcome.ok) {
-      r.ok = false;
-      r.message = "step " + std::to_string(k) + ": " + outcome.message;
-      break;
-    }
-    record(k);
+  // The driver presses the footing in through its pins (solver/moving_anchors.hpp), a fixed
+  // distance each step, and records the curve after every step.
+  const std::function<void(World&)> press = moving_anchors(Vec2(0.0, -per_step));
+  int attempting = 0;  // the step being taken, for the message of one that fails
+  RunHook hook;
+  hook.at_start = [&](const World&, const RunStats&) {
+    record(0);
+    return true;
+  };
+  hook.before_step = [&](World& w) {
+    attempting = w.step + 1;
+    press(w);
+  };
+  hook.after_step = [&](const World& w, const RunStats&) {
+    record(w.step);
+    return true;
+  };
+  run(world, hook, stats);
+  if (stats.diverged) {
+    r.ok = false;
+    r.message = "step " + std::to_string(attempting) + ": " + stats.message;
   }
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.cpu_s = thread_cpu_seconds() - cpu0;

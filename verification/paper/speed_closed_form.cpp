@@ -1,15 +1,13 @@
 #include "speed_closed_form.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <sstream>
-#include <stdexcept>
 
 #include "csv.hpp"
 #include "paper_scenes.hpp"
-#include "solver/step.hpp"
+#include "solver/moving_anchors.hpp"
 
 namespace dda::paper {
 namespace {
@@ -86,25 +84,8 @@ PlasticPoint plastic_once(double dt) {
   p.dt = dt;
   p.steps = steps_for(kPushTime, dt);
   World world = make_world(platen_scene(dt, p.steps));
-  StepWorkspace ws;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    while (!is_finished(world)) {
-      world.pins[0].anchor.y() -= kPushRate * dt;
-      const StepOutcome outcome = advance_step(world, ws, p.result.stats);
-      if (!outcome.ok) {
-        p.result.status = RunStatus::Diverged;
-        p.result.message = outcome.message;
-        break;
-      }
-    }
-  } catch (const std::exception& e) {
-    p.result.status = RunStatus::Diverged;
-    p.result.message = e.what();
-  }
-  p.result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  p.result.steps_done = world.step;
-  p.result.stats.steps = world.step;
+  // The platen's pin pushes it down at kPushRate (solver/moving_anchors.hpp).
+  p.result = run_world(world, RunHook{{}, moving_anchors(Vec2(0.0, -kPushRate * dt)), {}});
   const Block& b = world.blocks[1];
   const double s = std::sin(kPlatenFriction * kPi / 180.0);
   const double n = (1.0 + s) / (1.0 - s), two_c_root_n = 2.0 * kPlatenCohesion * std::sqrt(n);

@@ -1,11 +1,11 @@
 #include "treatments.hpp"
 
-#include <limits>
 #include <chrono>
+#include <limits>
 #include <exception>
 #include <stdexcept>
 
-#include "solver/step.hpp"
+#include "solver/run.hpp"
 
 namespace dda::paper {
 
@@ -28,23 +28,14 @@ std::string_view status_word(RunStatus s) {
   return "?";
 }
 
-RunResult run_world(World& world, const Observer& observe) {
+RunResult run_world(World& world, const RunHook& hook) {
   RunResult result;
-  StepWorkspace ws;
   const auto start = std::chrono::steady_clock::now();
-  // The reproduction measures how much energy each treatment creates: the energy guard,
-  // which would stop such a run, is off here.
-  world.control.energy_tolerance = std::numeric_limits<double>::infinity();
   try {
-    observe(world);
-    while (!is_finished(world)) {
-      const StepOutcome outcome = advance_step(world, ws, result.stats);
-      if (!outcome.ok) {
-        result.status = RunStatus::Diverged;
-        result.message = outcome.message;
-        break;
-      }
-      observe(world);
+    run(world, hook, result.stats);
+    if (result.stats.diverged) {
+      result.status = RunStatus::Diverged;
+      result.message = result.stats.message;
     }
   } catch (const std::exception& e) {
     result.status = RunStatus::Diverged;
@@ -54,6 +45,17 @@ RunResult run_world(World& world, const Observer& observe) {
   result.steps_done = world.step;
   result.stats.steps = world.step;
   return result;
+}
+
+RunResult run_world(World& world, const Observer& observe) {
+  // The reproduction measures how much energy each treatment creates: the energy guard,
+  // which would stop such a run, is off here.
+  world.control.energy_tolerance = std::numeric_limits<double>::infinity();
+  const auto watch = [&observe](const World& w, const RunStats&) {
+    observe(w);
+    return true;
+  };
+  return run_world(world, RunHook{watch, {}, watch});
 }
 
 std::string describe(const RunResult& r) {

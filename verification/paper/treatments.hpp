@@ -57,9 +57,13 @@ struct RunResult {
 // Called once before the first step (world.step == 0) and after every completed step.
 using Observer = std::function<void(const World&)>;
 
-// Steps `world` until its scene is finished or a step fails. A std::logic_error from the
-// library is how it says "this rotation_update is not implemented yet"; any other exception
-// or a failed step is a divergence at that step.
+// Runs `world` (solver/run.hpp, with `hook`) until its scene is finished or a step fails.
+// A std::logic_error from the library is how it says "this rotation_update is not
+// implemented yet"; any other exception or a failed step is a divergence at that step.
+RunResult run_world(World& world, const RunHook& hook);
+
+// The same with the energy guard off (the reproduction measures the energy each treatment
+// creates) and `observe` at the start and after every step.
 RunResult run_world(World& world, const Observer& observe);
 
 // A one-line description of a result for tables: "completed", "diverged at step 123 (...)".
