@@ -4,10 +4,11 @@
    /usr/bin/python3 scripts/compare_results.py OUT_A OUT_B
 
 Every text file must be the same but for what changes from one run to the next: lines or
-JSON keys that hold times (wall, cpu, elapsed, seconds, date), paths (the two directories'
-own names), and the PNG pictures' bytes are not compared (a picture is drawn from the
-numbers compared). Prints each difference (the first five lines of a file) and exits 1 if
-there is one, 0 if the two runs are the same.
+JSON keys that hold times (wall, cpu, elapsed, seconds, date), table columns headed by a
+time, and paths (the two directories' own names and the repositories they ran from, which
+same-results.sh writes to repository.txt). PNG pictures are not compared (each is drawn
+from numbers that are). Prints each difference (the first five lines of a file) and exits 1
+if there is one, 0 if the two runs are the same.
 """
 import json
 import os
@@ -27,11 +28,13 @@ def strip_json(value):
     return value
 
 
-def text_lines(path, roots):
+def text_lines(path, roots, repositories):
     with open(path, encoding="utf-8", errors="replace") as f:
         text = f.read()
     for r in sorted(roots, key=len, reverse=True):
         text = text.replace(r, "<OUT>")
+    for r in sorted(repositories, key=len, reverse=True):
+        text = text.replace(r, "<REPOSITORY>")
     text = SECONDS.sub("<t> s", text)
     if path.endswith(".json"):
         try:
@@ -69,6 +72,12 @@ def main():
         return 2
     a, b = (os.path.abspath(p) for p in sys.argv[1:])
     roots = [a, b]
+    # The repositories the two runs read their scenes from (a worktree's differs from main's).
+    repositories = []
+    for out in (a, b):
+        path = os.path.join(out, "repository.txt")
+        if os.path.exists(path):
+            repositories.append(open(path).read().strip())
     files = set()
     for root in (a, b):
         for d, _, names in os.walk(root):
@@ -76,14 +85,14 @@ def main():
                 files.add(os.path.relpath(os.path.join(d, n), root))
     differ = 0
     for rel in sorted(files):
-        if os.path.splitext(rel)[1] in SKIP_EXT:
+        if os.path.splitext(rel)[1] in SKIP_EXT or rel == "repository.txt":
             continue
         pa, pb = os.path.join(a, rel), os.path.join(b, rel)
         if not (os.path.exists(pa) and os.path.exists(pb)):
             print(f"only in {'A' if os.path.exists(pa) else 'B'}: {rel}")
             differ += 1
             continue
-        la, lb = text_lines(pa, roots), text_lines(pb, roots)
+        la, lb = text_lines(pa, roots, repositories), text_lines(pb, roots, repositories)
         if la != lb:
             differ += 1
             shown = 0

@@ -23,6 +23,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 py=/usr/bin/python3
 rm -rf "$out"
 mkdir -p "$out/scenes" "$out/hard" "$out/moving"
+printf '%s\n' "$root" >"$out/repository.txt"  # read by compare_results.py: two worktrees differ in it
 for scene in "$root"/scenes/*.json; do
   name="$(basename "$scene" .json)"
   "$build/dda" run "$scene" --out "$out/scenes/$name" >"$out/scenes/$name.log" 2>&1 || echo "exit $?" >>"$out/scenes/$name.log"
