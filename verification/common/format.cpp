@@ -6,10 +6,10 @@
 
 namespace dda::verification {
 
-std::ofstream open_csv(const std::filesystem::path& dir, const std::string& name,
-                       const std::string& header) {
+WholeFile open_csv(const std::filesystem::path& dir, const std::string& name,
+                   const std::string& header) {
   const std::filesystem::path path = dir / name;
-  std::ofstream out(path);
+  WholeFile out(path);
   if (!out) throw std::runtime_error("cannot write " + path.string());
   out << header << '\n';
   return out;

@@ -4,15 +4,17 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 #include <string>
+
+#include "whole_file.hpp"
 
 namespace dda::verification {
 
-// Opens `dir/name` for writing and writes the header line; throws std::runtime_error
-// naming the file when it cannot be opened.
-std::ofstream open_csv(const std::filesystem::path& dir, const std::string& name,
-                       const std::string& header);
+// Opens `dir/name` for writing, as a WholeFile (it appears under its name when finished),
+// and writes the header line; throws std::runtime_error naming the file when it cannot be
+// opened.
+WholeFile open_csv(const std::filesystem::path& dir, const std::string& name,
+                   const std::string& header);
 
 // Shortest round-trip form of a double (17 significant digits at most).
 std::string full(double x);

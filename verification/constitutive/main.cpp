@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../common/arguments.hpp"
+#include "../common/whole_file.hpp"
 #include "report.hpp"
 
 namespace {
@@ -48,12 +49,13 @@ int main(int argc, char** argv) {
     const double wall_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::string report = full_report(opt, maps, summaries, wall_s);
-    std::ofstream out(opt.out / "report.md");
+    dda::verification::WholeFile out(opt.out / "report.md");
     if (!(out << report)) {
       std::cerr << "dda_verify_constitutive: cannot write " << (opt.out / "report.md").string()
                 << '\n';
       return 1;
     }
+    out.finish();  // a failed close or rename throws "cannot write ...", reported below
     std::cout << report;
   } catch (const std::exception& e) {
     std::cerr << "dda_verify_constitutive: " << e.what() << '\n';

@@ -14,6 +14,7 @@ namespace {
 
 using verification::full;
 using verification::open_csv;
+using verification::WholeFile;
 
 // Two significant digits unless asked otherwise; NaN as "-".
 std::string sig(double x, int digits = 2) { return verification::significant(x, digits); }
@@ -160,7 +161,7 @@ MapSummary summarise(const MapResult& r) {
 }
 
 void write_map_csv(const std::filesystem::path& dir, const MapResult& r) {
-  std::ofstream out = open_csv(
+  WholeFile out = open_csv(
       dir, r.spec.name + ".csv",
       "x,y,exx,eyy,gxy,sxx,syy,szz,sxy,ref_sxx,ref_syy,ref_szz,ref_sxy,error,branch,"
       "reference_branch,eps_p,reference_eps_p,status");
@@ -176,18 +177,18 @@ void write_map_csv(const std::filesystem::path& dir, const MapResult& r) {
         << branch_name(p.reference_branch) << ',' << full(p.one.state.eps_p) << ','
         << full(p.reference_eps_p) << ',' << status << '\n';
   }
-  if (!out) throw std::runtime_error("cannot write " + (dir / (r.spec.name + ".csv")).string());
+  out.finish();  // throws "cannot write PATH" when a write, the close or the rename failed
 }
 
 void write_summary_csv(const std::filesystem::path& dir, const std::vector<MapResult>& maps,
                        const std::vector<MapSummary>& summaries) {
-  std::ofstream out = open_csv(dir, "maps.csv",
-                               "name,title,start,flow,x_label,y_label,extent,n,substeps,"
-                               "yield_strain,max_error,max_x,max_y,ns_per_call,"
-                               "ns_per_reference_call,model,young,poisson,cohesion,"
-                               "friction_angle,dilation_angle,tensile_strength,hardening,match,"
-                               "start_sxx,start_syy,start_szz,start_sxy,dx_exx,dx_eyy,dx_gxy,"
-                               "dy_exx,dy_eyy,dy_gxy");
+  WholeFile out = open_csv(dir, "maps.csv",
+                           "name,title,start,flow,x_label,y_label,extent,n,substeps,"
+                           "yield_strain,max_error,max_x,max_y,ns_per_call,"
+                           "ns_per_reference_call,model,young,poisson,cohesion,"
+                           "friction_angle,dilation_angle,tensile_strength,hardening,match,"
+                           "start_sxx,start_syy,start_szz,start_sxy,dx_exx,dx_eyy,dx_gxy,"
+                           "dy_exx,dy_eyy,dy_gxy");
   for (std::size_t i = 0; i < maps.size(); ++i) {
     const MapResult& r = maps[i];
     const MapSummary& s = summaries[i];
@@ -212,7 +213,7 @@ void write_summary_csv(const std::filesystem::path& dir, const std::vector<MapRe
     for (int k = 0; k < 3; ++k) out << ',' << full(r.spec.dir_y[k]);
     out << '\n';
   }
-  if (!out) throw std::runtime_error("cannot write " + (dir / "maps.csv").string());
+  out.finish();
 }
 
 std::string full_report(const Options& opt, const std::vector<MapResult>& maps,

@@ -10,6 +10,7 @@ namespace dda::paper {
 using verification::fixed;
 using verification::full;
 using verification::open_csv;
+using verification::WholeFile;
 
 // Three significant digits unless asked otherwise.
 inline std::string sig(double x, int digits = 3) { return verification::significant(x, digits); }

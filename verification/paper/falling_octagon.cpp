@@ -67,7 +67,7 @@ std::vector<FallingRun> run_falling(const Options& opt) {
 
 void write_falling_csv(const Options& opt, const std::vector<FallingRun>& runs) {
   {
-    std::ofstream out = open_csv(opt.out, "falling_scene.csv", "block,role,vertex,x,y");
+    WholeFile out = open_csv(opt.out, "falling_scene.csv", "block,role,vertex,x,y");
     const Staircase stairs = table1_staircase();
     const std::vector<Polygon> blocks = staircase_blocks(stairs);
     for (std::size_t i = 0; i < blocks.size(); ++i) {
@@ -82,11 +82,12 @@ void write_falling_csv(const Options& opt, const std::vector<FallingRun>& runs) 
       out << blocks.size() << ",rock," << k << ',' << full(octagon[k].x()) << ','
           << full(octagon[k].y()) << '\n';
     }
+    out.finish();
   }
-  std::ofstream area =
+  WholeFile area =
       open_csv(opt.out, "falling_area.csv",
                "treatment,setting,step,time,area,area_rel_error,rotation,omega,xc,yc");
-  std::ofstream path = open_csv(opt.out, "falling_path.csv", "treatment,setting,step,vertex,x,y");
+  WholeFile path = open_csv(opt.out, "falling_path.csv", "treatment,setting,step,vertex,x,y");
   for (const FallingRun& r : runs) {
     for (const FallingSample& s : r.samples) {
       area << r.treatment << ',' << r.setting << ',' << s.step << ',' << full(s.time) << ','
@@ -101,10 +102,12 @@ void write_falling_csv(const Options& opt, const std::vector<FallingRun>& runs) 
       }
     }
   }
-  std::ofstream sum = open_csv(opt.out, "falling_summary.csv",
-                               "treatment,setting,status,steps,time,initial_area,final_area,"
-                               "area_rel_error,paper_area,paper_rel_error,rotation,turned,"
-                               "cut_steps");
+  area.finish();
+  path.finish();
+  WholeFile sum = open_csv(opt.out, "falling_summary.csv",
+                           "treatment,setting,status,steps,time,initial_area,final_area,"
+                           "area_rel_error,paper_area,paper_rel_error,rotation,turned,"
+                           "cut_steps");
   const std::vector<FallingSetting> settings = table1_settings();
   for (const FallingRun& r : runs) {
     const FallingSample& last = r.samples.back();
@@ -119,6 +122,7 @@ void write_falling_csv(const Options& opt, const std::vector<FallingRun>& runs) 
         << full(paper) << ',' << full(rel_error(paper, kPaperInitialArea)) << ','
         << full(last.rotation) << ',' << full(r.turned) << ',' << r.result.stats.cut_steps << '\n';
   }
+  sum.finish();
 }
 
 std::string falling_report(const Options& opt, const std::vector<FallingRun>& runs) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "../common/arguments.hpp"
+#include "../common/whole_file.hpp"
 #include "report.hpp"
 
 namespace {
@@ -42,11 +43,12 @@ int main(int argc, char** argv) {
       const std::string report =
           "# Speed against error beyond rotation (dda_verify_paper --closed-form-only" +
           std::string(opt.smoke ? " --smoke" : "") + ")\n\n" + closed_form_speed_report(opt, r);
-      std::ofstream out(opt.out / "report.md");
+      dda::verification::WholeFile out(opt.out / "report.md");
       if (!(out << report)) {
         std::cerr << "dda_verify_paper: cannot write " << (opt.out / "report.md").string() << '\n';
         return 1;
       }
+      out.finish();  // a failed close or rename throws "cannot write ...", reported below
       std::cout << report;
       return 0;
     }
@@ -65,11 +67,12 @@ int main(int argc, char** argv) {
     write_rotation_csv(opt, all.rotation);
     all.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::string report = full_report(opt, all);
-    std::ofstream out(opt.out / "report.md");
+    dda::verification::WholeFile out(opt.out / "report.md");
     if (!(out << report)) {
       std::cerr << "dda_verify_paper: cannot write " << (opt.out / "report.md").string() << '\n';
       return 1;
     }
+    out.finish();  // a failed close or rename throws "cannot write ...", reported below
     std::cout << report;
   } catch (const std::exception& e) {
     std::cerr << "dda_verify_paper: " << e.what() << '\n';

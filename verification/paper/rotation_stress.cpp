@@ -283,21 +283,22 @@ RotationStudy run_rotation_study(const Options& opt) {
 }
 
 void write_rotation_csv(const Options& opt, const RotationStudy& s) {
-  std::ofstream spin = open_csv(opt.out, "rotation_spin.csv",
-                                "treatment,inertia,status,sxx,syy,sxy,expected_sxx,expected_syy,"
-                                "expected_sxy,rel_error");
+  WholeFile spin = open_csv(opt.out, "rotation_spin.csv",
+                            "treatment,inertia,status,sxx,syy,sxy,expected_sxx,expected_syy,"
+                            "expected_sxy,rel_error");
   for (const SpinStress& r : s.spin) {
     spin << r.treatment << ',' << r.inertia << ',' << status_word(r.result.status) << ','
          << full(r.stress[0]) << ',' << full(r.stress[1]) << ',' << full(r.stress[2]) << ','
          << full(r.expected[0]) << ',' << full(r.expected[1]) << ',' << full(r.expected[2])
          << ',' << full(r.error) << '\n';
   }
-  std::ofstream swing = open_csv(opt.out, "rotation_swing.csv",
-                                 "treatment,inertia,time,sxx,syy,sxy,expected_sxx,expected_syy,"
-                                 "expected_sxy");
-  std::ofstream swing_sum = open_csv(opt.out, "rotation_swing_summary.csv",
-                                     "treatment,inertia,status,largest_Pa,max_rel_error,"
-                                     "rms_rel_error");
+  spin.finish();
+  WholeFile swing = open_csv(opt.out, "rotation_swing.csv",
+                             "treatment,inertia,time,sxx,syy,sxy,expected_sxx,expected_syy,"
+                             "expected_sxy");
+  WholeFile swing_sum = open_csv(opt.out, "rotation_swing_summary.csv",
+                                 "treatment,inertia,status,largest_Pa,max_rel_error,"
+                                 "rms_rel_error");
   for (const SwingStress& r : s.swing) {
     for (std::size_t k = 0; k < r.time.size(); ++k) {
       swing << r.treatment << ',' << r.inertia << ',' << full(r.time[k]);
@@ -308,15 +309,18 @@ void write_rotation_csv(const Options& opt, const RotationStudy& s) {
     swing_sum << r.treatment << ',' << r.inertia << ',' << status_word(r.result.status) << ','
               << full(r.largest) << ',' << full(r.max_error) << ',' << full(r.rms_error) << '\n';
   }
-  std::ofstream table = open_csv(opt.out, "rotation_table3.csv",
-                                 "treatment,inertia,step,rel_error");
+  swing.finish();
+  swing_sum.finish();
+  WholeFile table = open_csv(opt.out, "rotation_table3.csv",
+                             "treatment,inertia,step,rel_error");
   for (const SwingStress& r : s.swing) {
     for (const auto& [step, error] : r.table_steps) {
       table << r.treatment << ',' << r.inertia << ',' << step << ',' << full(error) << '\n';
     }
   }
-  std::ofstream gain = open_csv(opt.out, "rotation_gain.csv",
-                                "study,treatment,dt,penalty,time,status,gain_over_mgl,max_swing");
+  table.finish();
+  WholeFile gain = open_csv(opt.out, "rotation_gain.csv",
+                            "study,treatment,dt,penalty,time,status,gain_over_mgl,max_swing");
   for (const auto* list : {&s.gain_dt, &s.gain_penalty}) {
     for (const GainPoint& g : *list) {
       gain << (list == &s.gain_dt ? "dt" : "penalty") << ',' << g.treatment << ','
@@ -325,23 +329,26 @@ void write_rotation_csv(const Options& opt, const RotationStudy& s) {
            << '\n';
     }
   }
-  std::ofstream damping = open_csv(opt.out, "rotation_damping.csv",
-                                   "treatment,dynamic_coefficient,dt,steps,status,gain_over_mgl,"
-                                   "max_swing,exx_end,eyy_end,gxy_end");
+  gain.finish();
+  WholeFile damping = open_csv(opt.out, "rotation_damping.csv",
+                               "treatment,dynamic_coefficient,dt,steps,status,gain_over_mgl,"
+                               "max_swing,exx_end,eyy_end,gxy_end");
   for (const GainPoint& g : s.gain_damping) {
     damping << g.treatment << ',' << full(g.dynamic) << ',' << full(g.dt) << ','
             << g.result.steps_done << ',' << status_word(g.result.status) << ','
             << full(g.gain) << ',' << full(g.max_swing) << ',' << full(g.strain_end[0]) << ','
             << full(g.strain_end[1]) << ',' << full(g.strain_end[2]) << '\n';
   }
-  std::ofstream pend = open_csv(opt.out, "rotation_pendulum.csv",
-                                "treatment,status,period,reference_period,period_rel_error,"
-                                "first_swing,reference_first_swing");
+  damping.finish();
+  WholeFile pend = open_csv(opt.out, "rotation_pendulum.csv",
+                            "treatment,status,period,reference_period,period_rel_error,"
+                            "first_swing,reference_first_swing");
   for (const PendulumCheck& c : s.pendulum) {
     pend << c.treatment << ',' << status_word(c.result.status) << ',' << full(c.period) << ','
          << full(s.reference_period) << ',' << full(c.period_error) << ','
          << full(c.first_swing) << ',' << full(s.reference_first_swing) << '\n';
   }
+  pend.finish();
 }
 
 }  // namespace dda::paper

@@ -151,10 +151,10 @@ ClosedFormSpeed run_closed_form_speed(const Options& opt) {
 }
 
 void write_closed_form_speed_csv(const Options& opt, const ClosedFormSpeed& r) {
-  std::ofstream inc = open_csv(opt.out, "speed_incline.csv",
-                               "dt,steps,status,wall_s,distance,distance_ref,rel_error,order,"
-                               "lag,lag_over_dt,lag_end,slide_acc,acc_ref,acc_rel_error,"
-                               "omega_dt,penalty,mass,open_close_iterations,cut_steps");
+  WholeFile inc = open_csv(opt.out, "speed_incline.csv",
+                           "dt,steps,status,wall_s,distance,distance_ref,rel_error,order,"
+                           "lag,lag_over_dt,lag_end,slide_acc,acc_ref,acc_rel_error,"
+                           "omega_dt,penalty,mass,open_close_iterations,cut_steps");
   for (const InclinePoint& p : r.incline) {
     inc << full(p.dt) << ',' << p.steps << ',' << status_word(p.result.status) << ','
         << full(p.result.wall_s) << ',' << full(p.distance) << ',' << full(p.distance_ref) << ','
@@ -164,10 +164,11 @@ void write_closed_form_speed_csv(const Options& opt, const ClosedFormSpeed& r) {
         << full(r.incline_penalty) << ',' << full(r.incline_mass) << ','
         << p.result.stats.iterations << ',' << p.result.stats.cut_steps << '\n';
   }
-  std::ofstream pl = open_csv(opt.out, "speed_plastic.csv",
-                              "dt,steps,status,wall_s,syy,sxx,height,s1_present,strength,"
-                              "error_present,order,error_signed,lag_term,inertia_term,error_nominal,"
-                              "yield_residual,eps_p,solves");
+  inc.finish();
+  WholeFile pl = open_csv(opt.out, "speed_plastic.csv",
+                          "dt,steps,status,wall_s,syy,sxx,height,s1_present,strength,"
+                          "error_present,order,error_signed,lag_term,inertia_term,error_nominal,"
+                          "yield_residual,eps_p,solves");
   for (const PlasticPoint& p : r.plastic) {
     pl << full(p.dt) << ',' << p.steps << ',' << status_word(p.result.status) << ','
        << full(p.result.wall_s) << ',' << full(p.syy) << ',' << full(p.sxx) << ','
@@ -177,6 +178,7 @@ void write_closed_form_speed_csv(const Options& opt, const ClosedFormSpeed& r) {
        << full(p.yield_residual) << ',' << full(p.eps_p) << ',' << p.result.stats.iterations
        << '\n';
   }
+  pl.finish();
 }
 
 std::string closed_form_speed_report(const Options& opt, const ClosedFormSpeed& r) {

@@ -152,16 +152,17 @@ SpeedResults run_speed(const Options& opt) {
 }
 
 void write_speed_csv(const Options& opt, const SpeedResults& r) {
-  std::ofstream spin = open_csv(opt.out, "speed_spin.csv",
-                                "treatment,dt,steps,status,wall_s,area_rel_error");
+  WholeFile spin = open_csv(opt.out, "speed_spin.csv",
+                            "treatment,dt,steps,status,wall_s,area_rel_error");
   for (const SpinPoint& p : r.spin) {
     spin << p.treatment << ',' << full(p.dt) << ',' << p.steps << ','
          << status_word(p.result.status) << ',' << full(p.result.wall_s) << ','
          << full(p.area_rel_error) << '\n';
   }
-  std::ofstream pend = open_csv(opt.out, "speed_pendulum.csv",
-                                "treatment,dt,steps,status,wall_s,period,period_ref,"
-                                "period_rel_error,amplitude,amplitude_ref,amplitude_rel_error");
+  spin.finish();
+  WholeFile pend = open_csv(opt.out, "speed_pendulum.csv",
+                            "treatment,dt,steps,status,wall_s,period,period_ref,"
+                            "period_rel_error,amplitude,amplitude_ref,amplitude_rel_error");
   for (const PendulumPoint& p : r.pendulum) {
     pend << p.treatment << ',' << full(p.dt) << ',' << p.steps << ','
          << status_word(p.result.status) << ',' << full(p.result.wall_s) << ','
@@ -169,6 +170,7 @@ void write_speed_csv(const Options& opt, const SpeedResults& r) {
          << ',' << full(p.amplitude) << ',' << full(p.amplitude_ref) << ','
          << full(rel(p.amplitude, p.amplitude_ref)) << '\n';
   }
+  pend.finish();
   write_closed_form_speed_csv(opt, r.closed_form);
 }
 

@@ -163,11 +163,11 @@ std::vector<SwingRun> run_swinging(const Options& opt) {
 }
 
 void write_swinging_csv(const Options& opt, const std::vector<SwingRun>& runs) {
-  std::ofstream diag = open_csv(opt.out, "swinging_diagonals.csv",
-                                "treatment,step,diagonal,length,strain,paper_length,paper_strain");
-  std::ofstream strains = open_csv(opt.out, "swinging_strains.csv",
-                                   "treatment,step,exx,eyy,gxy,e_max,e_min,all_diagonals_between,"
-                                   "area_rel_change");
+  WholeFile diag = open_csv(opt.out, "swinging_diagonals.csv",
+                            "treatment,step,diagonal,length,strain,paper_length,paper_strain");
+  WholeFile strains = open_csv(opt.out, "swinging_strains.csv",
+                               "treatment,step,exx,eyy,gxy,e_max,e_min,all_diagonals_between,"
+                               "area_rel_change");
   for (const SwingRun& r : runs) {
     const auto paper = paper_table2().find(r.treatment);
     for (const DiagonalRecord& d : r.records) {
@@ -186,9 +186,11 @@ void write_swinging_csv(const Options& opt, const std::vector<SwingRun>& runs) {
               << full(d.area_rel_change) << '\n';
     }
   }
-  std::ofstream energy = open_csv(opt.out, "swinging_energy.csv",
-                                  "treatment,step,time,kinetic,potential,total,pin_energy,"
-                                  "strain_energy,swing_angle");
+  diag.finish();
+  strains.finish();
+  WholeFile energy = open_csv(opt.out, "swinging_energy.csv",
+                              "treatment,step,time,kinetic,potential,total,pin_energy,"
+                              "strain_energy,swing_angle");
   for (const SwingRun& r : runs) {
     for (const EnergySample& s : r.energy) {
       energy << r.treatment << ',' << s.step << ',' << full(s.time) << ',' << full(s.kinetic)
@@ -196,9 +198,10 @@ void write_swinging_csv(const Options& opt, const std::vector<SwingRun>& runs) {
              << full(s.pin) << ',' << full(s.strain) << ',' << full(s.swing) << '\n';
     }
   }
-  std::ofstream sum = open_csv(opt.out, "swinging_summary.csv",
-                               "treatment,status,steps,max_swing,past_pi,max_excess_over_pin_J,"
-                               "gains_energy,all_diagonals_between,mgl_J");
+  energy.finish();
+  WholeFile sum = open_csv(opt.out, "swinging_summary.csv",
+                           "treatment,status,steps,max_swing,past_pi,max_excess_over_pin_J,"
+                           "gains_energy,all_diagonals_between,mgl_J");
   for (const SwingRun& r : runs) {
     const bool between = !r.records.empty() &&
                          std::all_of(r.records.begin(), r.records.end(),
@@ -208,6 +211,7 @@ void write_swinging_csv(const Options& opt, const std::vector<SwingRun>& runs) {
         << full(r.max_excess) << ',' << (r.gains_energy ? 1 : 0) << ',' << (between ? 1 : 0)
         << ',' << full(r.mgl) << '\n';
   }
+  sum.finish();
 }
 
 std::string swinging_report(const Options& opt, const std::vector<SwingRun>& runs) {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "../common/format.hpp"
+#include "../common/whole_file.hpp"
 
 namespace dda::slope {
 namespace {
@@ -36,9 +37,9 @@ json polygons(const std::vector<Polygon>& ps) {
   return out;
 }
 
+// Whole or not at all (verification/common/whole_file.hpp); throws "cannot write PATH".
 void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path);
-  if (!(out << text)) throw std::runtime_error("cannot write " + path.string());
+  verification::write_whole_file(path, text);
 }
 
 json case_json(const SlopeCase& c, const CaseResult& r) {
