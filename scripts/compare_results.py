@@ -15,7 +15,7 @@ import os
 import re
 import sys
 
-TIMING = re.compile(r"(wall|cpu|elapsed|seconds|_s\b|time_s|date|took|ms a|per_step_ms|duration)", re.I)
+TIMING = re.compile(r"(wall|cpu|elapsed|seconds|_s\b|time_s|date|took|ms a|per_step_ms|duration|ns_per|ns per)", re.I)
 SECONDS = re.compile(r"\b\d+(\.\d+)?(e-?\d+)? ?(s|ms|min)\b")
 SKIP_EXT = {".png"}
 
