@@ -4,8 +4,7 @@
 // against Prandtl's (2 + pi) c (verification/footing/README.md). Writes
 // curves.csv (the load-settlement curve of every run), runs.csv (one row a run: the limit
 // pressure, its error against Prandtl, the cost), zone_<label>.csv (each block's outline and
-// plastic strain at the end), scene_<label>.json (the scene of each run, pins unmoved) and
-// report.md into DIR, and prints the report. Exit codes: 0 done (a run that stops early is a
+// plastic strain at the end) and report.md into DIR, and prints the report. Exit codes: 0 done (a run that stops early is a
 // result in the report); 1 output could not be written; 2 bad arguments.
 #include <algorithm>
 #include <cmath>
