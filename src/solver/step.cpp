@@ -310,6 +310,34 @@ std::optional<Eigen::VectorXd> assemble_and_solve(World& world, StepWorkspace& w
   return solved;
 }
 
+// One iterate of the open-close loop: what its solve changed. The loop reads from it alone
+// whether it has settled, whether another solve would see another system, and its verdict.
+struct OpenCloseIterate {
+  ContactUpdate contacts;      // modes changed; contacts held closed in tension
+  int rotation_moved = 0;      // blocks whose T or spin is off the answer (follow_solve)
+  MaterialFollowUp materials;  // plastic blocks whose Newton iteration has not converged
+  int augmented = 0;           // contacts whose multiplier grew after this solve
+
+  // The answer agrees with the system it was solved from: no contact changed mode or is held
+  // in tension, and T, the spins and the plastic blocks' linearisation follow it.
+  bool settled() const {
+    return contacts.changed == 0 && contacts.held_in_tension == 0 && rotation_moved == 0 &&
+           materials.unconverged == 0;
+  }
+  // The next solve would see another system. (A contact held in tension changes none: the
+  // loop stops there, and its verdict cuts the step.)
+  bool system_changed() const {
+    return contacts.changed > 0 || rotation_moved > 0 || materials.unconverged > 0 ||
+           augmented > 0;
+  }
+  // The verdict on the iterate the loop ended with: accepted when settled with no multiplier
+  // grown after its solve, else cut.
+  std::optional<CutReason> verdict() const {
+    if (settled() && augmented == 0) return std::nullopt;
+    return CutReason::OpenClose;
+  }
+};
+
 // 3. The open-close loop: assemble, solve, let every contact choose its next mode, until no
 //    contact changes (and, for finite_rotation, until each block's secant angle is its own
 //    r0; for plastic blocks, until their Newton iteration has converged). Every
@@ -327,15 +355,13 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
 
   assemble(world, ctx, ws.block_terms);
   LoopResult r;
-  ContactUpdate contacts;
-  int secants_moved = 0;
   // Whether the block terms were assembled with spins followed from an iterate (not those
   // carried into the step): only then must the answer's own spins agree with them
   // (follow_spins). The first solve's, at the carried rates, is a consistent step too.
   bool followed_spins_assembled = false;
-  MaterialFollowUp materials;
-  int augmented = 0;  // contacts whose multiplier grew after this solve
+  OpenCloseIterate it;
   do {
+    it = OpenCloseIterate{};
     const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
     const std::optional<Eigen::VectorXd> solved =
         assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
@@ -345,42 +371,34 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
       return r;
     }
     r.d = *solved;
-    contacts = update_contact_modes(world, world.contacts, r.d, ctx);
+    it.contacts = update_contact_modes(world, world.contacts, r.d, ctx);
     // T and the spins follow the answer where the treatment iterates them.
-    secants_moved =
+    it.rotation_moved =
         treatment.follow_solve(world, r.d, ctx, start.rotation,
                                {spinning, plastic && followed_spins_assembled, nullptr})
             .moved;
     if (plastic) {
-      materials = follow_materials(world, r.d, ctx.material_terms);
-      if (materials.failed) {
+      it.materials = follow_materials(world, r.d, ctx.material_terms);
+      if (it.materials.failed) {
         r.unsettled = CutReason::Material;
-        r.material_fraction = materials.suggested_fraction;
-        r.material_reason = materials.reason;
+        r.material_fraction = it.materials.suggested_fraction;
+        r.material_reason = it.materials.reason;
         return r;
       }
     }
-    if (secants_moved > 0 || materials.unconverged > 0) {
+    if (it.rotation_moved > 0 || it.materials.unconverged > 0) {
       assemble(world, ctx, ws.block_terms);
       followed_spins_assembled = spinning;
     }
-    augmented = 0;
-    const bool settled = contacts.changed == 0 && contacts.held_in_tension == 0 &&
-                         secants_moved == 0 && materials.unconverged == 0;
-    if (settled && r.augmentations < world.control.max_augmentations &&
+    if (it.settled() && r.augmentations < world.control.max_augmentations &&
         deepest_penetration_share(world.contacts) > 1.0) {
-      augmented = augment_multipliers(world, world.contacts, kAugmentTargetShare, ctx);
-      if (augmented > 0) ++r.augmentations;
+      it.augmented = augment_multipliers(world, world.contacts, kAugmentTargetShare, ctx);
+      if (it.augmented > 0) ++r.augmentations;
     }
     clock.lap(times.contact_update);
-  } while ((contacts.changed > 0 || secants_moved > 0 || materials.unconverged > 0 ||
-            augmented > 0) &&
-           r.iterations < iteration_limit + r.augmentations);
+  } while (it.system_changed() && r.iterations < iteration_limit + r.augmentations);
   treatment.finish_unknowns(world, r.d);
-  if (contacts.changed > 0 || contacts.held_in_tension > 0 || secants_moved > 0 ||
-      materials.unconverged > 0 || augmented > 0) {
-    r.unsettled = CutReason::OpenClose;
-  }
+  r.unsettled = it.verdict();
   return r;
 }
 
@@ -512,7 +530,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
     // the solve, the secant angles and the plastic blocks follow it (an outer fixed point:
     // moved with every line-searched iterate, a turning block's T kept a contact at its
     // kink flipping open and closed).
-    int secants_moved = 0;
+    int rotation_moved = 0;
     int points_moved = 0;  // sliding contacts whose measure point moved
     MaterialFollowUp materials;
     if (check.mismatched > 0) {
@@ -546,7 +564,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
           world, d, ctx, start.rotation,
           {spinning, plastic && followed_spins_assembled,
            points_moved == 0 && !plastic ? &ws.block_terms : nullptr});
-      secants_moved = followed.moved;
+      rotation_moved = followed.moved;
       if (followed.settled_free_blocks) {
         followed_spins_assembled = spinning;
         ++stats.local_secant_settles;
@@ -565,13 +583,13 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
           return r;
         }
       }
-      if (secants_moved > 0 || materials.unconverged > 0) {
+      if (rotation_moved > 0 || materials.unconverged > 0) {
         assemble(world, ctx, ws.block_terms);
         followed_spins_assembled = spinning;
       }
     }
     clock.lap(times.contact_update);
-    if (check.mismatched == 0 && secants_moved == 0 && points_moved == 0 &&
+    if (check.mismatched == 0 && rotation_moved == 0 && points_moved == 0 &&
         materials.unconverged == 0) {
       // Converged: bonds the answer breaks break now, and contacts deeper than allowed grow
       // their multipliers (penetration control, as in the open-close loop); either way the
