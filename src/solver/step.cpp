@@ -147,12 +147,12 @@ bool has_rotating_inertia(const World& world, const StepContext& ctx) {
 }
 
 void start_spins(const World& world, StepContext& ctx) {
-  ctx.spins.assign(world.blocks.size(), Spin{});
+  ctx.loop.spins.assign(world.blocks.size(), Spin{});
   const double k = ctx.dynamic_coefficient;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
     if (b.fixed || b.rigid) continue;
-    ctx.spins[i] = Spin{k * b.velocity[kR0], k * b.local_strain_rate};
+    ctx.loop.spins[i] = Spin{k * b.velocity[kR0], k * b.local_strain_rate};
   }
 }
 
@@ -275,7 +275,7 @@ LoopStart start_loop(const World& world, StepContext& ctx) {
   LoopStart start;
   treatment_of(world).start_step(world, ctx, start.rotation);
   start.plastic = has_plastic_blocks(world);
-  if (start.plastic) ctx.material_terms = start_linearization(world);
+  if (start.plastic) ctx.loop.material_terms = start_linearization(world);
   start.spinning = has_rotating_inertia(world, ctx);
   if (start.spinning) start_spins(world, ctx);
   return start;
@@ -362,7 +362,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   OpenCloseIterate it;
   do {
     it = OpenCloseIterate{};
-    const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
+    const bool unsymmetric = plastic && any_unsymmetric(ctx.loop.material_terms);
     const std::optional<Eigen::VectorXd> solved =
         assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
     ++r.iterations;
@@ -378,7 +378,7 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
                                {spinning, plastic && followed_spins_assembled, nullptr})
             .moved;
     if (plastic) {
-      it.materials = follow_materials(world, r.d, ctx.material_terms);
+      it.materials = follow_materials(world, r.d, ctx.loop.material_terms);
       if (it.materials.failed) {
         r.unsettled = CutReason::Material;
         r.material_fraction = it.materials.suggested_fraction;
@@ -430,7 +430,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
   // The last solves' (mismatched, largest): a cycle of up to kCycleWindow solves is seen.
   std::array<std::pair<int, double>, kCycleWindow> recent{};
   for (;;) {
-    const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
+    const bool unsymmetric = plastic && any_unsymmetric(ctx.loop.material_terms);
     const std::optional<Eigen::VectorXd> solved =
         assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
     ++r.iterations;
@@ -574,7 +574,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       }
       if (followed.columns_changed) newton.measure(world, world.contacts, ctx);
       if (plastic) {
-        materials = follow_materials(world, d, ctx.material_terms);
+        materials = follow_materials(world, d, ctx.loop.material_terms);
         if (materials.failed) {
           r.d = d;
           r.unsettled = CutReason::Material;

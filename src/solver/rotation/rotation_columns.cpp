@@ -14,10 +14,10 @@ std::vector<double> last_rotation_increments(const World& world) {
 
 void set_rotation_columns(const World& world, const std::vector<double>& angles,
                           Mat2 (*column)(double), StepContext& ctx) {
-  ctx.block_ts.assign(world.blocks.size(), shi_t());
+  ctx.loop.block_ts.assign(world.blocks.size(), shi_t());
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     if (world.blocks[i].fixed) continue;
-    ctx.block_ts[i] = t_with_rotation_column(column(angles[i]));
+    ctx.loop.block_ts[i] = t_with_rotation_column(column(angles[i]));
   }
 }
 

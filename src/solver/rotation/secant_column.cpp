@@ -51,10 +51,10 @@ int SecantColumn::follow_spins(const World& world, const Eigen::VectorXd& d, Ste
     if (b.fixed || b.rigid) continue;
     const Spin now = mean_spin(world, ctx, i, d.segment<6>(b.first_dof));
     if (tolerance != nullptr && b.plastic &&
-        spin_error(b, ctx.spins[i], now, ctx.dt) > (*tolerance)[i]) {
+        spin_error(b, ctx.loop.spins[i], now, ctx.dt) > (*tolerance)[i]) {
       ++moved;
     }
-    ctx.spins[i] = now;
+    ctx.loop.spins[i] = now;
   }
   return moved;
 }
@@ -115,7 +115,7 @@ bool SecantColumn::settle_free_secants(const World& world, const std::vector<int
       // Its spins too, at the free blocks' tolerance (follow_spins holds plastic blocks to
       // theirs by global solves; here it costs 6 x 6 solves only).
       if (spinning && !b.rigid &&
-          spin_error(b, ctx.spins[static_cast<std::size_t>(i)],
+          spin_error(b, ctx.loop.spins[static_cast<std::size_t>(i)],
                      mean_spin(world, ctx, static_cast<std::size_t>(i), xb),
                      ctx.dt) > kSecantDisplacementShare * world.w0) {
         agrees = false;

@@ -34,7 +34,7 @@ struct RotationIterate {
 
 // What the contact loop tells a treatment about the solve it follows.
 struct SolveFollow {
-  bool spinning = false;     // ctx.spins hold the rotating inertia's spins (they follow too)
+  bool spinning = false;     // ctx.loop.spins hold the rotating inertia's spins (they follow too)
   bool check_spins = false;  // plastic blocks' spins are checked against their tolerance
   // Not null: blocks in flight whose angle is off may settle block by block with these
   // block terms (the converged solver, when no measure point moved and no block is plastic).
@@ -69,7 +69,7 @@ class RotationTreatment {
 
   // ---- the step (its contact loop, solver/step.cpp) ----
 
-  // An attempt's start: T's rotation columns (ctx.block_ts) for the treatments that change
+  // An attempt's start: T's rotation columns (ctx.loop.block_ts) for the treatments that change
   // T inside the step, and the angles inside them. Others leave Shi's T.
   virtual void start_step(const World&, StepContext&, RotationIterate&) const {}
   // After a solve whose answer is d: T (and the rotating inertia's spins) follow the answer
