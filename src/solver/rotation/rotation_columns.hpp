@@ -14,7 +14,8 @@ namespace dda {
 std::vector<double> last_rotation_increments(const World& world);
 
 // ctx.loop.block_ts: Shi's T for fixed blocks; for every other block T with the rotation column
-// column(angles[i]) (secant_rotation_column or sine_rotation_column, kinematics/block_matrices.hpp).
+// column(angles[i]) (secant_rotation_column or sine_rotation_column,
+// kinematics/block_matrices.hpp).
 void set_rotation_columns(const World& world, const std::vector<double>& angles,
                           Mat2 (*column)(double), StepContext& ctx);
 

@@ -5,7 +5,7 @@
 #include "kinematics/block_matrices.hpp"
 #include "solver/assembly.hpp"
 #include "solver/rotation/rotation_columns.hpp"
-#include "solver/secant_angles.hpp"
+#include "solver/rotation/secant_angles.hpp"
 
 namespace dda {
 namespace {
@@ -20,18 +20,9 @@ void SecantColumn::start_step(const World& world, StepContext& ctx, RotationIter
   set_rotation_columns(world, it.angles, secant_rotation_column, ctx);
 }
 
-// The spins at the step's mean rates, r0 / dt and the block-frame strain increment / dt (the
-// increment turned by the mid-step angle, as the update will take it). follow_spins returns
-// how many plastic blocks' spins moved by more than their `tolerance` (secant_tolerances;
-// spin_error): their inertia was not that of the answer, which must be solved again. (A
-// plastic block's Newton converged at its second solve, assembled with the first iterate's
-// spins, whose strain rate was 3.2 1/s against the answer's 4.4: the first iterate is the
-// material's elastic prediction, far from a flow at zero stiffness. With the D^2 term so
-// short, a Mohr-Coulomb block stretching at its tension cut-off in flight gained 6.5 J/m a
-// step.) Elastic blocks are not checked: their iterates differ by the contacts' modes only,
-// and checking them too cost box150 a tenth more solves (7220 against 6539) for rattling
-// rock blocks whose stiffness, not their inertia, sets their strain. Without `tolerance`, 0.
-// Block i's spin at the mean rates of its increments db over the step.
+// Block i's spin at the mean rates of its increments db over the step: r0 / dt and the
+// block-frame strain increment / dt (the increment turned by the mid-step angle, as the
+// update will take it).
 Spin SecantColumn::mean_spin(const World& world, const StepContext& ctx, std::size_t i,
                              const Vec6& db) const {
   const Block& b = world.blocks[i];
@@ -43,6 +34,16 @@ Spin SecantColumn::mean_spin(const World& world, const StepContext& ctx, std::si
   return Spin{db[kR0] / ctx.dt, increment / ctx.dt};
 }
 
+// The spins moved to the answer's mean rates. Returns how many plastic blocks' spins moved
+// by more than their `tolerance` (secant_tolerances; spin_error): their inertia was not that
+// of the answer, which must be solved again. (A plastic block's Newton converged at its
+// second solve, assembled with the first iterate's spins, whose strain rate was 3.2 1/s
+// against the answer's 4.4: the first iterate is the material's elastic prediction, far from
+// a flow at zero stiffness. With the D^2 term so short, a Mohr-Coulomb block stretching at
+// its tension cut-off in flight gained 6.5 J/m a step.) Elastic blocks are not checked:
+// their iterates differ by the contacts' modes only, and checking them too cost box150 a
+// tenth more solves (7220 against 6539) for rattling rock blocks whose stiffness, not their
+// inertia, sets their strain. Without `tolerance`, 0.
 int SecantColumn::follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx,
                                const std::vector<double>* tolerance) const {
   int moved = 0;

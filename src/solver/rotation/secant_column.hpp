@@ -1,7 +1,7 @@
 // finite_rotation and finite_rotation_polar: kept_in_block_frame's update, with T carrying
 // the secant rotation column (R(r*) - I) / r* at an angle r* that follows the step's own r0
-// through the contact loop (docs/paper-errata.md, item 6; solver/secant_angles.hpp), and
-// the rotating inertia's spins following the step's own mean rates with it.
+// through the contact loop (docs/paper-errata.md, item 6; secant_angles.hpp), and the
+// rotating inertia's spins following the step's own mean rates with it.
 #pragma once
 
 #include "solver/rotation/kept_in_block_frame.hpp"
