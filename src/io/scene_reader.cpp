@@ -20,6 +20,7 @@
 #include "kinematics/overlap.hpp"
 #include "kinematics/polygon.hpp"
 #include "materials/material.hpp"
+#include "solver/rotation/treatment.hpp"
 
 namespace dda {
 

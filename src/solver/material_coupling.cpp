@@ -5,6 +5,7 @@
 #include "kinematics/frames.hpp"
 #include "solver/configuration_update.hpp"
 #include "materials/material.hpp"
+#include "solver/rotation/treatment.hpp"
 
 namespace dda {
 namespace {
@@ -16,7 +17,7 @@ struct Evaluation {
 };
 
 Evaluation evaluate(const World& world, const Block& b, const Vec6& db) {
-  const bool in_frame = keeps_block_frame(world.control.rotation_update);
+  const bool in_frame = treatment_of(world).keeps_frame();
   Evaluation e;
   e.result = integrate(material_of(world, b), b.material_state,
                        material_strain_after(world, b, db), initial_stress4(world, b));
@@ -75,7 +76,7 @@ std::vector<MaterialLinearization> start_linearization(const World& world) {
 
 Vec3 material_strain_after(const World& world, const Block& b, const Vec6& db) {
   const Vec3 increment = db.segment<3>(kEx);
-  if (!keeps_block_frame(world.control.rotation_update)) return b.strain + increment;
+  if (!treatment_of(world).keeps_frame()) return b.strain + increment;
   // The start angle, as in evaluate(); the update adds the same increment at the mid-step
   // angle, a difference of r0/2 of the increment's turn, second order in the step.
   // finite_rotation_polar's update commits the Hencky strain of the map the step applied

@@ -20,8 +20,8 @@
 namespace dda {
 
 // How the block configuration is moved at the end of a step (paper Sections 2 and 3; the
-// scene names are in kRotationUpdateNames). SinVariable and FiniteRotation change T inside
-// the step (solver/step.cpp).
+// scene names are in kRotationUpdateNames). Each is a RotationTreatment in a file of its own
+// (solver/rotation/treatment.hpp), found through one table (treatment_table.cpp).
 enum class RotationUpdate {
   Original,             // Shi: x += T d, strains added globally (paper Eqs. 2, 13)
   SecondOrder,          // MacLaughlin and Sitar: Eq. 8 with cos r = 1 - r^2/2, sin r = r
@@ -59,20 +59,6 @@ inline constexpr RotationUpdateName kRotationUpdateNames[] = {
 
 inline std::string_view rotation_update_name(RotationUpdate u) {
   return name_in(kRotationUpdateNames, u);
-}
-
-// Treatments that keep total strain, strain rates and stress in the block's own frame
-// (paper Section 3) rather than adding strain increments in the global frame (Eq. 13).
-inline bool keeps_block_frame(RotationUpdate u) {
-  return u == RotationUpdate::LocalFrame || u == RotationUpdate::LocalFrameAsPrinted ||
-         u == RotationUpdate::FiniteRotation || u == RotationUpdate::FiniteRotationPolar ||
-         u == RotationUpdate::Paper;
-}
-
-// Treatments whose T carries the secant rotation column at the step's own r0, iterated with
-// the open-close loop (docs/paper-errata.md, item 6): finite_rotation and its polar variant.
-inline bool uses_secant_rotation(RotationUpdate u) {
-  return u == RotationUpdate::FiniteRotation || u == RotationUpdate::FiniteRotationPolar;
 }
 
 // How each step's frictional contact problem is solved (control.contact_solver;

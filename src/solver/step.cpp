@@ -19,8 +19,9 @@
 #include "solver/contact_newton.hpp"
 #include "solver/energy.hpp"
 #include "solver/material_coupling.hpp"
+#include "solver/rotation/rotation_columns.hpp"
+#include "solver/rotation/treatment.hpp"
 #include "solver/schedule.hpp"
-#include "solver/secant_angles.hpp"
 #include "solver/step_solve.hpp"
 
 namespace dda {
@@ -135,171 +136,23 @@ StepContext make_step_context(const World& world, double dt) {
   return ctx;
 }
 
-// The treatments that change T inside the step: sin_variable uses Cheng and Zhang's column
-// with the last step's r0 (paper Eq. 11); finite_rotation the secant column at r* (starting
-// from the last step's r0, then following the step's own). The rest keep Shi's column.
-bool changes_t(RotationUpdate u) {
-  return u == RotationUpdate::SinVariable || uses_secant_rotation(u);
-}
-
-void set_rotation_columns(const World& world, const std::vector<double>& angles,
-                          StepContext& ctx) {
-  ctx.block_ts.assign(world.blocks.size(), shi_t());
-  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
-    if (world.blocks[i].fixed) continue;
-    ctx.block_ts[i] = t_with_rotation_column(world.control.rotation_update == RotationUpdate::SinVariable
-                                                 ? sine_rotation_column(angles[i])
-                                                 : secant_rotation_column(angles[i]));
-  }
-}
-
-std::vector<double> last_rotation_increments(const World& world) {
-  std::vector<double> angles(world.blocks.size(), 0.0);
-  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
-    angles[i] = world.blocks[i].last_rotation_increment;
-  }
-  return angles;
-}
-
-
 // The rotating-frame inertia's spins (kinematics/rotating_inertia.hpp), with the
 // pseudo-rigid body's inertia (which needs a block frame), in dynamic runs (a static step
 // starts every block from rest: no velocity, no quadratic velocity terms). At the step's
 // start they are taken from the velocities carried in; finite_rotation then follows them to
-// the step's own mean rates (follow_spins), like its secant angles. Rigid blocks have no
-// strain to stretch.
+// the step's own mean rates, like its secant angles (its follow_solve,
+// solver/rotation/secant_column.cpp). Rigid blocks have no strain to stretch.
 bool has_rotating_inertia(const World& world, const StepContext& ctx) {
   return world.pseudo_rigid && ctx.dynamic_coefficient > 0.0;
 }
 
 void start_spins(const World& world, StepContext& ctx) {
-  ctx.spins.assign(world.blocks.size(), Spin{});
+  ctx.loop.spins.assign(world.blocks.size(), Spin{});
   const double k = ctx.dynamic_coefficient;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
     if (b.fixed || b.rigid) continue;
-    ctx.spins[i] = Spin{k * b.velocity[kR0], k * b.local_strain_rate};
-  }
-}
-
-// finite_rotation: the spins at the step's mean rates, r0 / dt and the block-frame strain
-// increment / dt (the increment turned by the mid-step angle, as the update will take it).
-// Returns how many plastic blocks' spins moved by more than their `tolerance`
-// (secant_tolerances; spin_error): their inertia was not that of the answer, which must be
-// solved again. (A plastic block's Newton converged at its second solve, assembled with the
-// first iterate's spins, whose strain rate was 3.2 1/s against the answer's 4.4: the first
-// iterate is the material's elastic prediction, far from a flow at zero stiffness. With the
-// D^2 term so short, a Mohr-Coulomb block stretching at its tension cut-off in flight gained
-// 6.5 J/m a step.) Elastic blocks are not checked: their iterates differ by the contacts'
-// modes only, and checking them too cost box150 a tenth more solves (7220 against 6539) for
-// rattling rock blocks whose stiffness, not their inertia, sets their strain. Without
-// `tolerance`, 0.
-// Block i's spin at the mean rates of its increments db over the step.
-Spin mean_spin(const World& world, const StepContext& ctx, std::size_t i, const Vec6& db) {
-  const Block& b = world.blocks[i];
-  const Mat2 column = solved_rotation_column(&ctx, static_cast<int>(i), db[kR0]);
-  // finite_rotation_polar: D's mean over the step, the increment turned by the mid-step
-  // angle (spatial_rotating_inertia_force reads D, not the Hencky strain's rate).
-  const Vec3 increment = spatial_increments(world.control.rotation_update, b)
-                             ? block_frame_increment(b, db)
-                             : block_frame_increment(world.control.rotation_update, b, db, &column);
-  return Spin{db[kR0] / ctx.dt, increment / ctx.dt};
-}
-
-int follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx,
-                 const std::vector<double>* tolerance = nullptr) {
-  int moved = 0;
-  for (std::size_t i = 0; i < world.blocks.size(); ++i) {
-    const Block& b = world.blocks[i];
-    if (b.fixed || b.rigid) continue;
-    const Spin now = mean_spin(world, ctx, i, d.segment<6>(b.first_dof));
-    if (tolerance != nullptr && b.plastic &&
-        spin_error(b, ctx.spins[i], now, ctx.dt) > (*tolerance)[i]) {
-      ++moved;
-    }
-    ctx.spins[i] = now;
-  }
-  return moved;
-}
-
-// follow_spins after a solve, in both contact loops: its check (at secant_tolerances, built
-// only then) when `check`, i.e. when the scene has plastic blocks and the block terms hold
-// spins followed from an iterate; otherwise the spins follow unchecked.
-int follow_answer_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx, bool check) {
-  if (!check) return follow_spins(world, d, ctx);
-  const std::vector<double> tolerance = secant_tolerances(world, world.contacts);
-  return follow_spins(world, d, ctx, &tolerance);
-}
-
-// finite_rotation, once the contacts agree: when every block whose secant angle is off
-// (`off`, from follow_secant_angles) touches nothing (its contacts all open, which add no
-// terms), its rows of the step's system are its own block terms alone, so its increments are
-// solved block by block (6 x 6, or 3 x 3 for a rigid block) until its angle agrees, with no
-// global solve (a third of the solves of the hopper's first 1.5 s were for tumbling blocks in
-// flight). The other blocks keep the angles they were solved with. On success `angles`,
-// ctx's T, the spins and `block_terms` are those of the increments in d. False when an off
-// block touches another (nothing changed), or after kLocalSecantRounds rounds: `angles` and
-// d are as they came, but ctx's T, the spins and `block_terms` are the last round's, for the
-// caller to set from its angles as it does after any secant change.
-constexpr int kLocalSecantRounds = 10;
-
-bool settle_free_secants(const World& world, const std::vector<int>& off, bool spinning,
-                         std::vector<double>& angles, StepContext& ctx, BlockSystem& block_terms,
-                         Eigen::VectorXd& d) {
-  std::vector<unsigned char> touching(world.blocks.size(), 0);
-  for (const Contact& c : world.contacts) {
-    if (c.state.mode == ContactMode::Open) continue;
-    touching[static_cast<std::size_t>(c.key.vertex_block)] = 1;
-    touching[static_cast<std::size_t>(c.key.edge_block)] = 1;
-  }
-  for (const int i : off) {
-    if (touching[static_cast<std::size_t>(i)] != 0) return false;
-  }
-  std::vector<double> local = angles;  // the off blocks' from the r0 just solved
-  for (const int i : off) {
-    local[static_cast<std::size_t>(i)] = d[world.blocks[static_cast<std::size_t>(i)].first_dof + kR0];
-  }
-  Eigen::VectorXd x = d;
-  for (int round = 0; round < kLocalSecantRounds; ++round) {
-    set_rotation_columns(world, local, ctx);
-    if (spinning) follow_spins(world, x, ctx);
-    assemble(world, ctx, block_terms);
-    bool agrees = true;
-    std::vector<double> next = local;
-    for (const int i : off) {
-      const Block& b = world.blocks[static_cast<std::size_t>(i)];
-      const int n = b.rigid ? BlockSystem::kRigidUnknowns : 6;
-      const int row = block_row(b);
-      const Mat6& k = block_terms.diagonal[static_cast<std::size_t>(row)];
-      Vec6 xb = Vec6::Zero();
-      xb.head(n) = k.topLeftCorner(n, n).ldlt().solve(block_terms.rhs.segment(b.first_dof, n));
-      x.segment<6>(b.first_dof) = xb;
-      if (free_secant_off(world, b, xb[kR0], local[static_cast<std::size_t>(i)])) agrees = false;
-      // Its spins too, at the free blocks' tolerance (follow_spins holds plastic blocks to
-      // theirs by global solves; here it costs 6 x 6 solves only).
-      if (spinning && !b.rigid &&
-          spin_error(b, ctx.spins[static_cast<std::size_t>(i)],
-                     mean_spin(world, ctx, static_cast<std::size_t>(i), xb),
-                     ctx.dt) > kSecantDisplacementShare * world.w0) {
-        agrees = false;
-      }
-      next[static_cast<std::size_t>(i)] = xb[kR0];
-    }
-    if (agrees) {
-      // T, spins and block terms are those the increments were solved with.
-      angles = local;
-      d = x;
-      return true;
-    }
-    local = next;
-  }
-  return false;
-}
-
-// sin_variable solves for sin r0 in the rotation slot; the stages after the loop want r0.
-void sine_unknowns_to_angles(const World& world, Eigen::VectorXd& d) {
-  for (const Block& b : world.blocks) {
-    if (!b.fixed) d[b.first_dof + kR0] = std::asin(std::clamp(d[b.first_dof + kR0], -1.0, 1.0));
+    ctx.loop.spins[i] = Spin{k * b.velocity[kR0], k * b.local_strain_rate};
   }
 }
 
@@ -409,23 +262,20 @@ void follow_factor(const World& world, StepWorkspace& ws) {
   }
 }
 
-// What both contact solvers set up before their first solve: the rotation columns of the
-// treatments that change T (their angles), the plastic blocks' elastic predictor, the
-// rotating inertia's spins.
+// What both contact solvers set up before their first solve: the treatment's start (the
+// rotation columns of the treatments that change T, and their angles), the plastic blocks'
+// elastic predictor, the rotating inertia's spins.
 struct LoopStart {
-  std::vector<double> angles;  // per block: the angle inside T's rotation column
+  RotationIterate rotation;
   bool plastic = false;
   bool spinning = false;
 };
 
 LoopStart start_loop(const World& world, StepContext& ctx) {
   LoopStart start;
-  if (changes_t(world.control.rotation_update)) {
-    start.angles = last_rotation_increments(world);
-    set_rotation_columns(world, start.angles, ctx);
-  }
+  treatment_of(world).start_step(world, ctx, start.rotation);
   start.plastic = has_plastic_blocks(world);
-  if (start.plastic) ctx.material_terms = start_linearization(world);
+  if (start.plastic) ctx.loop.material_terms = start_linearization(world);
   start.spinning = has_rotating_inertia(world, ctx);
   if (start.spinning) start_spins(world, ctx);
   return start;
@@ -460,6 +310,34 @@ std::optional<Eigen::VectorXd> assemble_and_solve(World& world, StepWorkspace& w
   return solved;
 }
 
+// One iterate of the open-close loop: what its solve changed. The loop reads from it alone
+// whether it has settled, whether another solve would see another system, and its verdict.
+struct OpenCloseIterate {
+  ContactUpdate contacts;      // modes changed; contacts held closed in tension
+  int rotation_moved = 0;      // blocks whose T or spin is off the answer (follow_solve)
+  MaterialFollowUp materials;  // plastic blocks whose Newton iteration has not converged
+  int augmented = 0;           // contacts whose multiplier grew after this solve
+
+  // The answer agrees with the system it was solved from: no contact changed mode or is held
+  // in tension, and T, the spins and the plastic blocks' linearisation follow it.
+  bool settled() const {
+    return contacts.changed == 0 && contacts.held_in_tension == 0 && rotation_moved == 0 &&
+           materials.unconverged == 0;
+  }
+  // The next solve would see another system. (A contact held in tension changes none: the
+  // loop stops there, and its verdict cuts the step.)
+  bool system_changed() const {
+    return contacts.changed > 0 || rotation_moved > 0 || materials.unconverged > 0 ||
+           augmented > 0;
+  }
+  // The verdict on the iterate the loop ended with: accepted when settled with no multiplier
+  // grown after its solve, else cut.
+  std::optional<CutReason> verdict() const {
+    if (settled() && augmented == 0) return std::nullopt;
+    return CutReason::OpenClose;
+  }
+};
+
 // 3. The open-close loop: assemble, solve, let every contact choose its next mode, until no
 //    contact changes (and, for finite_rotation, until each block's secant angle is its own
 //    r0; for plastic blocks, until their Newton iteration has converged). Every
@@ -469,25 +347,22 @@ std::optional<Eigen::VectorXd> assemble_and_solve(World& world, StepWorkspace& w
 LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, RunStats& stats,
                             StageClock& clock) {
   StageTimes& times = stats.stage_times;
-  const RotationUpdate treatment = world.control.rotation_update;
+  const RotationTreatment& treatment = treatment_of(world);
   LoopStart start = start_loop(world, ctx);
-  std::vector<double>& angles = start.angles;
   const bool plastic = start.plastic, spinning = start.spinning;
   // (Each augmented-Lagrangian round used adds one more: the rounds are allowed beyond it.)
   const int iteration_limit = world.control.max_open_close + (plastic ? kExtraNewtonIterations : 0);
 
   assemble(world, ctx, ws.block_terms);
   LoopResult r;
-  ContactUpdate contacts;
-  int secants_moved = 0;
   // Whether the block terms were assembled with spins followed from an iterate (not those
   // carried into the step): only then must the answer's own spins agree with them
   // (follow_spins). The first solve's, at the carried rates, is a consistent step too.
   bool followed_spins_assembled = false;
-  MaterialFollowUp materials;
-  int augmented = 0;  // contacts whose multiplier grew after this solve
+  OpenCloseIterate it;
   do {
-    const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
+    it = OpenCloseIterate{};
+    const bool unsymmetric = plastic && any_unsymmetric(ctx.loop.material_terms);
     const std::optional<Eigen::VectorXd> solved =
         assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
     ++r.iterations;
@@ -496,46 +371,34 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
       return r;
     }
     r.d = *solved;
-    contacts = update_contact_modes(world, world.contacts, r.d, ctx);
-    if (uses_secant_rotation(treatment)) {
-      secants_moved = follow_secant_angles(world, world.contacts, r.d, angles);
-      if (secants_moved > 0) set_rotation_columns(world, angles, ctx);
-      // A spin off the answer's mean rates counts as a secant angle off it: both are the
-      // step's own answer fed back into its equations.
-      if (spinning) {
-        secants_moved += follow_answer_spins(world, r.d, ctx, plastic && followed_spins_assembled);
-      }
-    }
+    it.contacts = update_contact_modes(world, world.contacts, r.d, ctx);
+    // T and the spins follow the answer where the treatment iterates them.
+    it.rotation_moved =
+        treatment.follow_solve(world, r.d, ctx, start.rotation,
+                               {spinning, plastic && followed_spins_assembled, nullptr})
+            .moved;
     if (plastic) {
-      materials = follow_materials(world, r.d, ctx.material_terms);
-      if (materials.failed) {
+      it.materials = follow_materials(world, r.d, ctx.loop.material_terms);
+      if (it.materials.failed) {
         r.unsettled = CutReason::Material;
-        r.material_fraction = materials.suggested_fraction;
-        r.material_reason = materials.reason;
+        r.material_fraction = it.materials.suggested_fraction;
+        r.material_reason = it.materials.reason;
         return r;
       }
     }
-    if (secants_moved > 0 || materials.unconverged > 0) {
+    if (it.rotation_moved > 0 || it.materials.unconverged > 0) {
       assemble(world, ctx, ws.block_terms);
       followed_spins_assembled = spinning;
     }
-    augmented = 0;
-    const bool settled = contacts.changed == 0 && contacts.held_in_tension == 0 &&
-                         secants_moved == 0 && materials.unconverged == 0;
-    if (settled && r.augmentations < world.control.max_augmentations &&
+    if (it.settled() && r.augmentations < world.control.max_augmentations &&
         deepest_penetration_share(world.contacts) > 1.0) {
-      augmented = augment_multipliers(world, world.contacts, kAugmentTargetShare, ctx);
-      if (augmented > 0) ++r.augmentations;
+      it.augmented = augment_multipliers(world, world.contacts, kAugmentTargetShare, ctx);
+      if (it.augmented > 0) ++r.augmentations;
     }
     clock.lap(times.contact_update);
-  } while ((contacts.changed > 0 || secants_moved > 0 || materials.unconverged > 0 ||
-            augmented > 0) &&
-           r.iterations < iteration_limit + r.augmentations);
-  if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, r.d);
-  if (contacts.changed > 0 || contacts.held_in_tension > 0 || secants_moved > 0 ||
-      materials.unconverged > 0 || augmented > 0) {
-    r.unsettled = CutReason::OpenClose;
-  }
+  } while (it.system_changed() && r.iterations < iteration_limit + r.augmentations);
+  treatment.finish_unknowns(world, r.d);
+  r.unsettled = it.verdict();
   return r;
 }
 
@@ -547,9 +410,8 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
 LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ctx,
                                 RunStats& stats, StageClock& clock) {
   StageTimes& times = stats.stage_times;
-  const RotationUpdate treatment = world.control.rotation_update;
+  const RotationTreatment& treatment = treatment_of(world);
   LoopStart start = start_loop(world, ctx);
-  std::vector<double>& angles = start.angles;
   const bool plastic = start.plastic, spinning = start.spinning;
   const int iteration_limit =
       std::max(world.control.max_open_close, kNewtonIterations) + (plastic ? kExtraNewtonIterations : 0);
@@ -563,13 +425,12 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
   int extra_rounds = 0;  // bond breaks and augmentations: each earns one more iteration
   int holds = 0;         // times contacts were held open (hold_open_pulling)
   int fewest_mismatched = std::numeric_limits<int>::max();
-  std::vector<int> off_secants;  // blocks whose secant angle is off (follow_secant_angles)
   // Whether the block terms hold spins followed from an iterate (solve_open_close says why).
   bool followed_spins_assembled = false;
   // The last solves' (mismatched, largest): a cycle of up to kCycleWindow solves is seen.
   std::array<std::pair<int, double>, kCycleWindow> recent{};
   for (;;) {
-    const bool unsymmetric = plastic && any_unsymmetric(ctx.material_terms);
+    const bool unsymmetric = plastic && any_unsymmetric(ctx.loop.material_terms);
     const std::optional<Eigen::VectorXd> solved =
         assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
     ++r.iterations;
@@ -669,7 +530,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
     // the solve, the secant angles and the plastic blocks follow it (an outer fixed point:
     // moved with every line-searched iterate, a turning block's T kept a contact at its
     // kink flipping open and closed).
-    int secants_moved = 0;
+    int rotation_moved = 0;
     int points_moved = 0;  // sliding contacts whose measure point moved
     MaterialFollowUp materials;
     if (check.mismatched > 0) {
@@ -694,35 +555,26 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       // at its kink (a corner just landed) would flip open and cost two more solves.
       newton.respond(world, world.contacts, d);
       points_moved = newton.follow_measure_points(world, world.contacts, ctx, d);
-      if (uses_secant_rotation(treatment)) {
-        std::vector<double> solved_angles = angles;
-        secants_moved = follow_secant_angles(world, world.contacts, d, angles, &off_secants);
-        if (secants_moved > 0 && points_moved == 0 && !plastic) {
-          // Blocks in flight: their angles settle block by block (settle_free_secants); the
-          // contacts then see the new increments and T, and only a contact they change
-          // takes the loop on. (Otherwise T, spins and block terms are set from `angles`
-          // below, as after any secant change.)
-          if (settle_free_secants(world, off_secants, spinning, solved_angles, ctx, ws.block_terms, d)) {
-            angles = std::move(solved_angles);
-            secants_moved = 0;
-            followed_spins_assembled = spinning;
-            ++stats.local_secant_settles;
-            newton.measure(world, world.contacts, ctx);
-            check = newton.check(world, world.contacts, d, friction_follows);
-            if (check.mismatched > 0) newton.respond(world, world.contacts, d);
-          }
-        }
-        if (secants_moved > 0) {
-          set_rotation_columns(world, angles, ctx);
-          newton.measure(world, world.contacts, ctx);
-        }
-        // A spin off the answer's mean rates counts as a secant angle off it.
-        if (spinning) {
-          secants_moved += follow_answer_spins(world, d, ctx, plastic && followed_spins_assembled);
-        }
+      // T and the spins follow the answer where the treatment iterates them. Blocks in
+      // flight may settle block by block first (when no measure point moved and no block is
+      // plastic); the contacts then see the new increments and T, and only a contact they
+      // change takes the loop on. (The spins, which only the block terms read, follow before
+      // the contacts are measured again on the new T.)
+      const Followed followed = treatment.follow_solve(
+          world, d, ctx, start.rotation,
+          {spinning, plastic && followed_spins_assembled,
+           points_moved == 0 && !plastic ? &ws.block_terms : nullptr});
+      rotation_moved = followed.moved;
+      if (followed.settled_free_blocks) {
+        followed_spins_assembled = spinning;
+        ++stats.local_secant_settles;
+        newton.measure(world, world.contacts, ctx);
+        check = newton.check(world, world.contacts, d, friction_follows);
+        if (check.mismatched > 0) newton.respond(world, world.contacts, d);
       }
+      if (followed.columns_changed) newton.measure(world, world.contacts, ctx);
       if (plastic) {
-        materials = follow_materials(world, d, ctx.material_terms);
+        materials = follow_materials(world, d, ctx.loop.material_terms);
         if (materials.failed) {
           r.d = d;
           r.unsettled = CutReason::Material;
@@ -731,13 +583,13 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
           return r;
         }
       }
-      if (secants_moved > 0 || materials.unconverged > 0) {
+      if (rotation_moved > 0 || materials.unconverged > 0) {
         assemble(world, ctx, ws.block_terms);
         followed_spins_assembled = spinning;
       }
     }
     clock.lap(times.contact_update);
-    if (check.mismatched == 0 && secants_moved == 0 && points_moved == 0 &&
+    if (check.mismatched == 0 && rotation_moved == 0 && points_moved == 0 &&
         materials.unconverged == 0) {
       // Converged: bonds the answer breaks break now, and contacts deeper than allowed grow
       // their multipliers (penetration control, as in the open-close loop); either way the
@@ -763,7 +615,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       break;
     }
   }
-  if (treatment == RotationUpdate::SinVariable) sine_unknowns_to_angles(world, d);
+  treatment.finish_unknowns(world, d);
   r.d = d;
   return r;
 }

@@ -17,13 +17,9 @@ struct MaterialLinearization {
   bool symmetric = true;                 // false for non-associated flow while yielding
 };
 
-struct StepContext {
-  double dt = 0.0;                    // this attempt's time step (s)
-  double penalty = 0.0;               // pin and contact normal stiffness (N/m)
-  double dynamic_coefficient = 1.0;   // share of last velocity carried in, [0, 1]
-  // Base shaking: the ground's mean acceleration over this attempt's step (m/s^2; zero
-  // without base_motion). The step is solved in the ground's frame (solver/base_motion.hpp).
-  Vec2 base_acceleration = Vec2::Zero();
+// What the contact loop changes as it iterates towards an attempt's answer (solver/step.cpp):
+// the blocks' T, the plastic blocks' linearisation and the rotating inertia's spins.
+struct LoopTerms {
   // Each block's T (by block index) for the treatments that change its rotation column
   // inside the step (sin_variable, finite_rotation), made once per change of the columns,
   // not at every contact that reads it. Empty: Shi's T for all.
@@ -37,11 +33,23 @@ struct StepContext {
   std::vector<Spin> spins;
 };
 
+struct StepContext {
+  // Fixed for the attempt:
+  double dt = 0.0;                    // this attempt's time step (s)
+  double penalty = 0.0;               // pin and contact normal stiffness (N/m)
+  double dynamic_coefficient = 1.0;   // share of last velocity carried in, [0, 1]
+  // Base shaking: the ground's mean acceleration over this attempt's step (m/s^2; zero
+  // without base_motion). The step is solved in the ground's frame (solver/base_motion.hpp).
+  Vec2 base_acceleration = Vec2::Zero();
+  // What the contact loop changes (set at its start, then followed after each solve).
+  LoopTerms loop;
+};
+
 // The T that this step uses for block `block` (everything that builds the step equations
 // calls this: inertia, loads, pins, contacts).
 inline const LinearT& step_t(const StepContext& ctx, int block) {
-  if (ctx.block_ts.empty()) return shi_t();
-  return ctx.block_ts[static_cast<std::size_t>(block)];
+  if (ctx.loop.block_ts.empty()) return shi_t();
+  return ctx.loop.block_ts[static_cast<std::size_t>(block)];
 }
 
 }  // namespace dda

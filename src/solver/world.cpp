@@ -8,6 +8,7 @@
 #include "kinematics/rotating_inertia.hpp"
 #include "materials/elastic.hpp"
 #include "solver/energy.hpp"
+#include "solver/rotation/treatment.hpp"
 
 namespace dda {
 namespace {
@@ -35,12 +36,10 @@ World make_world(const Scene& scene) {
   world.plane = scene.plane;
   world.control = scene.control;
   world.penalty = resolve_penalty(scene);
-  // "auto": the pseudo-rigid inertia where a block frame is kept, except for the paper's
-  // method as printed, which keeps Shi's.
-  const bool frame_inertia = keeps_block_frame(scene.control.rotation_update) &&
-                             scene.control.rotation_update != RotationUpdate::Paper;
+  // "auto": the treatment's (RotationTreatment::auto_inertia): the pseudo-rigid inertia
+  // where a block frame is kept, except for the paper's method as printed, which keeps Shi's.
   world.pseudo_rigid =
-      scene.control.inertia.value_or(frame_inertia ? Inertia::PseudoRigid : Inertia::Shi) ==
+      scene.control.inertia.value_or(treatment_for(scene.control.rotation_update).auto_inertia()) ==
       Inertia::PseudoRigid;
 
   for (const Material& mat : scene.materials) {

@@ -1,11 +1,12 @@
-// finite_rotation's secant-angle iteration (solver/secant_angles.hpp): the tolerance a block
-// is held to, free or in contact, against the secant's displacement error l |r0| |r0 - r*| / 2.
+// finite_rotation's secant-angle iteration (solver/rotation/secant_angles.hpp): the tolerance a
+// block is held to, free or in contact, against the secant's displacement error
+// l |r0| |r0 - r*| / 2.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
 
 #include "support/scene_builders.hpp"
-#include "solver/secant_angles.hpp"
+#include "solver/rotation/secant_angles.hpp"
 #include "solver/world.hpp"
 
 using namespace dda;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "csv.hpp"
+#include "solver/rotation/treatment.hpp"
 
 namespace dda::paper {
 namespace {

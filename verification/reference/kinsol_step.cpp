@@ -26,8 +26,8 @@ struct Problem {
 // The step's system linearised at d: K d - f is then the residual at d (material_coupling.hpp:
 // the linearised stress equals the material's own at the point of linearisation).
 bool assemble_at(Problem& p, const Eigen::VectorXd& d) {
-  p.ctx.material_terms = start_linearization(p.world);
-  if (follow_materials(p.world, d, p.ctx.material_terms).failed) return false;
+  p.ctx.loop.material_terms = start_linearization(p.world);
+  if (follow_materials(p.world, d, p.ctx.loop.material_terms).failed) return false;
   assemble(p.world, p.ctx, p.system);
   add_contact_terms(p.world, p.contacts, p.ctx, p.system);
   ++p.residual_evals;

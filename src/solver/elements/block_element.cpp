@@ -4,6 +4,7 @@
 #include "kinematics/frames.hpp"
 #include "kinematics/rotating_inertia.hpp"
 #include "solver/configuration_update.hpp"
+#include "solver/rotation/treatment.hpp"
 
 namespace dda {
 namespace {
@@ -24,18 +25,18 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
   // Turned to the global frame at the step's start, where the step also holds the block's
   // stress (initial_stress_force below): a steady spin then balances with no shear in the
   // block frame (at the mid-step angle, half a step's turn, r0/2, would show as shear).
-  if (!ctx.spins.empty() && !b.rigid) {
+  if (!ctx.loop.spins.empty() && !b.rigid) {
     const RotationUpdate treatment = world.control.rotation_update;
-    const Spin& spin = ctx.spins[static_cast<std::size_t>(index)];
+    const Spin& spin = ctx.loop.spins[static_cast<std::size_t>(index)];
     f -= spatial_increments(treatment, b)
              ? spatial_rotating_inertia_force(b.material_inertia, b.rotation,
                                               stretch_strain(treatment, b), spin)
              : rotating_inertia_force(b.material_inertia, b.rotation, b.local_strain, spin);
   }
-  if (b.plastic && !ctx.material_terms.empty()) {
+  if (b.plastic && !ctx.loop.material_terms.empty()) {
     // Newton: the stress at increment de is taken as s + D_t (de - de_k) (the material
     // linearised at the last solution, solver/material_coupling.hpp).
-    const MaterialLinearization& l = ctx.material_terms[static_cast<std::size_t>(index)];
+    const MaterialLinearization& l = ctx.loop.material_terms[static_cast<std::size_t>(index)];
     const double area = stress_area(world.control.rotation_update, b);
     k.block<3, 3>(kEx, kEx) += area * l.tangent;
     f.segment<3>(kEx) -= area * (l.stress - l.tangent * l.strain_increment);
@@ -61,7 +62,7 @@ void assemble_blocks(const World& world, const StepContext& ctx, BlockSystem& sy
 // The initial stress of a block in the global frame now (the local-frame treatments hold it
 // in the block frame, where it turns with the block).
 Vec3 initial_stress_now(const World& world, const Block& b) {
-  return keeps_block_frame(world.control.rotation_update)
+  return treatment_of(world).keeps_frame()
              ? stress_from_turned_frame(b.initial_stress, b.rotation)
              : b.initial_stress;
 }
@@ -81,12 +82,12 @@ Vec4 stress4(const Block& b) { return Vec4(b.stress[0], b.stress[1], b.szz, b.st
 // block frame for the treatments that keep one (b.stress is global, turned by the block's
 // angle), else the global frame.
 Vec4 material_stress(const World& world, const Block& b) {
-  if (!keeps_block_frame(world.control.rotation_update)) return stress4(b);
+  if (!treatment_of(world).keeps_frame()) return stress4(b);
   const Vec3 s = stress_in_turned_frame(b.stress, b.rotation);
   return Vec4(s[0], s[1], b.szz, s[2]);
 }
 const Vec3& material_strain(const World& world, const Block& b) {
-  return keeps_block_frame(world.control.rotation_update) ? b.local_strain : b.strain;
+  return treatment_of(world).keeps_frame() ? b.local_strain : b.strain;
 }
 
 void book_blocks(const World& world, const Eigen::VectorXd& d, const StepContext& ctx,

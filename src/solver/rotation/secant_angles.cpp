@@ -1,4 +1,4 @@
-#include "solver/secant_angles.hpp"
+#include "solver/rotation/secant_angles.hpp"
 
 #include <algorithm>
 #include <cmath>
