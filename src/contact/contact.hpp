@@ -61,7 +61,7 @@ struct ContactState {
   // a sliding contact's friction in a step's first iteration uses the last step's.
   double normal_force = 0.0;
   // A change of mode the accepted solve asked for but did not wait for, because it was
-  // within the contact resolution (solver/open_close_modes.cpp, kDeferShare): the contact
+  // within the contact resolution (contact/open_close_decision.hpp, kDeferShare): the contact
   // starts the next step in this mode (carry_over), anchored there if it locks.
   std::optional<ModeChange> deferred;
   // The augmented-Lagrangian multiplier of the normal spring, as a length (m; lambda / p):

@@ -113,7 +113,7 @@ bool change_allowed(const Contact& c, const ContactDecision& next, int free_chan
 // locked one's shear spring (stiffness ks, N/m) is stretched past the friction limit by at
 // most that; a sliding one's slip reversed by at most that. A bond that forms or breaks is
 // never within it. Such a change need not hold up the open-close loop
-// (solver/open_close_modes.cpp, kDeferShare).
+// (contact/open_close_decision.hpp, kDeferShare).
 bool change_within_resolution(const Contact& c, const ContactDecision& next,
                               const ContactTrial& trial, const JointLaw& law, double ks,
                               double resolution);

@@ -3,43 +3,13 @@
 #include <algorithm>
 
 #include "contact/joint_law.hpp"
+#include "contact/open_close_decision.hpp"
 #include "solver/contact_assembly.hpp"
 
 namespace dda {
 namespace {
 
 Vec2 projection_point(const Contact& c) { return c.measure_point(); }
-
-// Slips below this share of the allowed penetration count as no slip (round-off), and a
-// closed contact opens only beyond kOpenToleranceShare of it (see
-// ContactTrial::open_tolerance). A coarser slip tolerance was tried and not kept
-// (docs/contacts.md, "Rules tried and not kept").
-constexpr double kSlipToleranceShare = 1e-6;
-constexpr double kOpenToleranceShare = 1e-6;
-// A contact that has changed mode this many times in one open-close loop may from then on
-// only tighten (open -> sliding -> locked; a lock past its strength still slides;
-// docs/contacts.md, "Chatter"): such a contact
-// chatters between states that differ by nanometres (a brick's side against its
-// neighbour), and the loop would otherwise be cut for nothing.
-constexpr int kFreeModeChanges = 2;
-// A contact held closed may end in tension by up to this share of the allowed penetration
-// (0.64 um in a 1.6 m scene): the nanometre chatter of a brick's side stays inside it, while
-// a spring that pulls a vertex back across a gap it started with (a box of tumbling blocks
-// gained 1.5 % of its energy scale so) is beyond it and cuts the step.
-constexpr double kHeldTensionShare = 1e-3;
-// The contact resolution, as a share of the allowed penetration: a change of mode that the
-// latest solve asks for by no more than this (a penetration, a gap, a spring's stretch past
-// the friction limit or a reversed slip this small) does not, on its own, make the
-// open-close loop go on. When every change a solve asks for is that small, the step is
-// accepted and those contacts start the next step in their new mode (ContactState::deferred;
-// Shi's code and ntdda go further and never iterate on a change of shear mode). Without it
-// the side contacts of a settled wall, which carry almost nothing, flip between open,
-// locked and sliding at nanometre scales every step. What the accepted step gets wrong is
-// bounded by the resolution delta: a contact left open that penetrates delta brings
-// p delta^2 / 2 into the next step, a sliding one that reverses by delta lets friction push
-// forward over delta, and a lock held past the friction limit stores at most (ks delta)^2 /
-// 2 ks more (conservatively); the energy account shows them.
-constexpr double kDeferShare = 1e-5;
 
 // Where a contact that locks again within the open-close loop anchors its shear spring
 // (docs/contacts.md, "Relocking"). What the accepted step will say is decided by the whole
@@ -71,17 +41,11 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
   const double kn = ctx.penalty;
   const double ks = shear_stiffness(ctx.penalty);
   ContactUpdate result;
-  const double tension_band = kHeldTensionShare * world.allowed_penetration;
-  const double resolution = kDeferShare * world.allowed_penetration;
-  // First every contact's decision on this solve, then (once it is known whether the loop
-  // goes on) the changes.
-  struct Pending {
-    ContactDecision next;
-    bool changes = false;
-    bool deferrable = false;
-    double lock_offset = 0.0;  // ModeChange::lock_offset
-  };
-  std::vector<Pending> pending(contacts.size());
+  const OpenClosePolicy policy = open_close_policy(world.allowed_penetration);
+  // First every contact's decision on this solve (measured here, decided by the pure rule of
+  // contact/open_close_decision.hpp), then (once it is known whether the loop goes on) the
+  // changes.
+  std::vector<OpenCloseDecision> pending(contacts.size());
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     Contact& c = contacts[i];
     const Vec2 p0 = projection_point(c);
@@ -93,8 +57,8 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     trial.normal_force = kn * std::max(0.0, -spring_gap);
     trial.tension = kn * std::max(0.0, spring_gap);
     trial.slip = evaluate(world, c, relative_along(world, ctx, c, p0, c.tangent), d);
-    trial.slip_tolerance = kSlipToleranceShare * world.allowed_penetration;
-    trial.open_tolerance = kOpenToleranceShare * world.allowed_penetration;
+    trial.slip_tolerance = policy.slip_tolerance;
+    trial.open_tolerance = policy.open_tolerance;
     const JointLaw& law = world.joint_laws[c.joint];
     if (c.state.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.state.t_lock);
@@ -106,30 +70,9 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     } else if (c.state.mode == ContactMode::Slide) {
       trial.shear_force = -c.state.slide_sign * sliding_resistance(c, law, c.state.normal_force);
     }
-    const auto differs = [&c](const ContactDecision& next) {
-      return next.mode != c.state.mode || next.slide_sign != c.state.slide_sign ||
-             next.bonded != c.state.bonded;
-    };
-    ContactDecision next = decide_contact_mode(c, trial, law);
-    bool changes = differs(next);
-    const bool wants_to_open = changes && next.mode == ContactMode::Open;
-    if (changes && !change_allowed(c, next, kFreeModeChanges) && wants_to_open) {
-      // Held closed although it would open: it must still obey the closed contact's rules
-      // (a sliding one whose slip reverses locks), else its friction pushes forward.
-      ContactTrial closed = trial;
-      closed.new_gap = std::min(trial.new_gap, 0.0);
-      next = decide_contact_mode(c, closed, law);
-      changes = differs(next);
-    }
-    Pending& p = pending[i];
-    p.next = next;
-    p.changes = changes && change_allowed(c, next, kFreeModeChanges);
-    if (!p.changes && wants_to_open && trial.new_gap > tension_band) ++result.held_in_tension;
-    p.deferrable = p.changes && change_within_resolution(c, next, trial, law, ks, resolution);
-    // A sliding contact that locks starts its shear spring at the friction it carried in
-    // this solve (trial.shear_force), not at zero: locked afresh, it would have to slip
-    // S / ks again before carrying it, a slip per relock (docs/contacts.md, "Relocking").
-    if (next.relock && c.state.mode == ContactMode::Slide) p.lock_offset = -trial.shear_force / ks;
+    const OpenCloseDecision decision = decide_open_close(c, trial, law, ks, policy);
+    if (decision.held_in_tension) ++result.held_in_tension;
+    pending[i] = decision;
     c.iterate.new_gap = trial.new_gap;
     c.iterate.slip = trial.slip;
     c.state.normal_force = trial.normal_force;
@@ -139,11 +82,11 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
   // changed, the step ends on this solve and those contacts start the next step in their
   // new mode; if the loop goes on anyway, they take it from the next iteration.
   int others = 0;
-  for (const Pending& p : pending) others += p.changes && !p.deferrable ? 1 : 0;
+  for (const OpenCloseDecision& p : pending) others += p.changes && !p.deferrable ? 1 : 0;
   const bool defer = others == 0;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     Contact& c = contacts[i];
-    const Pending& p = pending[i];
+    const OpenCloseDecision& p = pending[i];
     c.state.deferred.reset();
     if (p.changes && p.deferrable && defer) {
       c.state.deferred = ModeChange{p.next.mode, p.next.slide_sign, p.next.relock, p.lock_offset};

@@ -1,8 +1,8 @@
 // Shi's open-close loop (control.contact_solver "open_close", the reference path): after
-// each solve, every contact's next mode from where the solve put it, under the loop's policy
-// (the resolution below which a change does not hold the loop up, the chatter rule, the
-// tension a held contact may carry). The Newton solver (solver/contact_newton.hpp) decides
-// from the contact's response instead and shares only predicted_slip.
+// each solve, every contact is measured at the answer (its trial), decided by the pure rule
+// and policy of contact/open_close_decision.hpp, and then changed, once it is known whether
+// the loop goes on. The Newton solver (solver/contact_newton.hpp) decides from the contact's
+// response instead and shares only predicted_slip.
 #pragma once
 
 #include <Eigen/Dense>
