@@ -57,7 +57,7 @@ TEST_CASE("numbers that would overflow or vanish in double precision are refused
     edit(s);
     cases.push_back({name, s, place});
   };
-  // The issue's list: each is accepted by a plain "positive finite number" rule and then
+  // Each of these was accepted by a plain "positive finite number" rule and then
   // fails at the first solve with nan in history.csv.
   with("young", "materials.rock.young", [](json& s) { s["materials"]["rock"]["young"] = 1e308; });
   with("penalty", "control.penalty", [](json& s) { s["control"]["penalty"] = 1e300; });
@@ -107,7 +107,7 @@ TEST_CASE("coordinates whose double-precision spacing is coarser than the contac
   dda::test::TempDir dir("dda-limits-");
   // At 1e7 m doubles are 1.9e-9 m apart: a block there cannot fall by less, and that is
   // more than 1/1000 of the allowed penetration of a 0.1 mm block on a 1 mm floor (4e-4 x w0
-  // = 2e-7 m). (At 1e11 m and 1e15 m, the issue's cases, the coordinate bound of 1e8 m
+  // = 2e-7 m). (At 1e11 m and 1e15 m, the first cases reported, the coordinate bound of 1e8 m
   // refuses them first.)
   for (const double offset : {1e7, 1e11, 1e15}) {
     json far = base_scene();

@@ -295,8 +295,8 @@ TEST_CASE("local_frame: a spinning octagon keeps its area to 1e-12 over 10000 st
           "[rotation]") {
   const SpinRecord rec = spin(RotationUpdate::LocalFrame, kSpinSteps, 1.0, 1.0);
   // The vertices are rebuilt from the initial ones every step, so errors do not accumulate
-  // in the geometry: the area is A0 det(I + E^) with E^ the round-off strain (the issue's
-  // bound, 1e-12 relative).
+  // in the geometry: the area is A0 det(I + E^) with E^ the round-off strain (the bound
+  // asked for, 1e-12 relative).
   CHECK_THAT(rec.final_area, WithinRel(rec.initial_area, 1e-12));
   // Step to step only the shoelace sum's round-off over 8 vertices: a few ulps.
   CHECK(rec.worst_step_ratio_error <= 4e-15);

@@ -295,7 +295,7 @@ TEST_CASE("a static masonry arch collapses below its thrust-line limit and stand
   // 1.6 to 1.9 mm (measured); a folding one by centimetres within the 1500 steps (2.2 to
   // 3.5 cm measured at 0.103, starting slowly this close to the limit; 13 cm at 0.09). 1 cm
   // (R / 500) lies between. Shi's loop, whose contacts may hold tension within its
-  // resolution, let such arches stand down to t/R 0.10 (issue figures, a 50 m base).
+  // resolution, let such arches stand down to t/R 0.10 (measured on a 50 m base).
   const int n = GENERATE(16, 18, 20);
   INFO(n << " voussoirs");
   CHECK(static_arch_crown_drop(n, 0.103) > 0.01);

@@ -76,7 +76,7 @@ TEST_CASE("CHOLMOD and dense LDLT agree on assembled systems", "[solver]") {
     REQUIRE(dense);
     REQUIRE(sparse);
     // Both are backward-stable factorisations of the same SPD matrix (condition ~1e8 with
-    // the penalty springs): they agree to well within 1e-10 relative, as the issue asks.
+    // the penalty springs): they agree to well within 1e-10 relative, the agreement asked of them.
     CHECK((*dense - *sparse).norm() <= 1e-10 * dense->norm());
     // And the sparse answer satisfies the system (residual relative to K and x).
     const Eigen::MatrixXd k = sys.dense();

@@ -388,7 +388,7 @@ TEST_CASE("a non-associated Mohr-Coulomb block: Newton with the unsymmetric tang
 }
 
 TEST_CASE("KINSOL's Newton finds the step the hand-written Newton finds", "[plastic]") {
-  // The issue's alternative (KINSOL + sparse direct solve, verification/reference/kinsol_step.hpp) on one
+  // The alternative to a hand-written Newton (KINSOL + sparse direct solve, verification/reference/kinsol_step.hpp) on one
   // step of the non-associated platen test on its plateau, contacts in their carried
   // modes. Static mode makes the step's increments d = v dt / 2 of the hand-written step.
   // KINSOL stops at a residual of 1e-3 N (against forces of 6e6 N and stiffnesses of

@@ -418,7 +418,7 @@ TEST_CASE("the brittle bond fails progressively below the limit-equilibrium fact
           "[fos]") {
   // The same block with Shi's brittle bond: the upslope vertex, carrying less normal force,
   // reaches its share of the strength first and its bond breaks for good; the factor falls
-  // below 1.2 (this is the difference the issue asks to show; the size of the drop depends
+  // below 1.2 (the difference this case exists to show; the size of the drop depends
   // on how the normal force is shared, so only its sign and a sanity bound are checked).
   Planar planar;
   planar.law = "brittle_bond";

@@ -8,7 +8,7 @@ byte-level (a cut, a flipped byte, a deleted run). Some mutants are also run und
 file-size limit, SIGTERM or SIGINT at a random moment, /dev/full as an output, an output path
 that is a regular file where a directory is wanted, or a timeout.
 
-After every run the checks of the issue on faults and hostile inputs are applied:
+After every run the checks on faults and hostile inputs are applied:
   crash      exit by a signal not sent, an exit code outside the README's table, or a
              sanitizer report;
   silent     a non-zero exit with nothing on standard error;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Factor of safety of slopes cut by dda cut, over the time step and the penalty (issue on the
-# factor of safety): make_model.py writes a bedding slope whose planar factor is
+# Factor of safety of slopes cut by dda cut, over the time step and the penalty
+# (docs/factor-of-safety.md): make_model.py writes a bedding slope whose planar factor is
 # tan(40)/tan(35) = 1.1983 at any block size, dda cut cuts it, and dda fos runs on the scene as
 # cut and with dt 0.002 / 0.05 s and the penalty auto / 10 and auto x 10. summarise.py
 # writes OUT_DIR/report.md and report.json: each strength-reduction factor, its spread, the
