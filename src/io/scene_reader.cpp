@@ -83,11 +83,22 @@ void read_run_length(const Field& control, ControlSettings& c, bool staged) {
   if (has_end_time) c.end_time = duration(control.member("end_time"));
 }
 
-RotationUpdate read_rotation_update(const Field& f) {
+// The value a name stands for in `table`, or one error naming `what` and the known names.
+template <class E, std::size_t N>
+E named_value(const Field& f, const EnumName<E> (&table)[N], const std::string& what) {
   const std::string name = f.string();
-  if (const auto value = value_in(kRotationUpdateNames, name)) return *value;
-  f.fail("unknown rotation update " + input::quoted_text(name) + " (known: " +
-         quoted_names(kRotationUpdateNames) + ")");
+  if (const auto value = value_in(table, name)) return *value;
+  f.fail("unknown " + what + " " + input::quoted_text(name) + " (known: " + quoted_names(table) +
+         ")");
+}
+
+// The scene's names of two settings with two choices each (control.energy_losses,
+// control.linear_solver): the choice is the value.
+constexpr EnumName<bool> kEnergyLossNames[] = {{false, "report"}, {true, "stop"}};
+constexpr EnumName<bool> kLinearSolverNames[] = {{true, "reuse"}, {false, "factorise"}};
+
+RotationUpdate read_rotation_update(const Field& f) {
+  return named_value(f, kRotationUpdateNames, "rotation update");
 }
 
 // A positive number, or "auto" (nullopt); `unit` is shown in the message.
@@ -141,29 +152,13 @@ ControlSettings read_control(const Field& f, bool staged) {
   }
   if (auto g = f.optional_member("energy_tolerance")) c.energy_tolerance = positive_number(*g);
   if (auto g = f.optional_member("energy_losses")) {
-    const std::string name = g->string();
-    if (name != "report" && name != "stop") {
-      g->fail("unknown energy_losses " + input::quoted_text(name) +
-              " (known: \"report\", \"stop\")");
-    }
-    c.stop_on_energy_loss = name == "stop";
+    c.stop_on_energy_loss = named_value(*g, kEnergyLossNames, "energy_losses");
   }
   if (auto g = f.optional_member("linear_solver")) {
-    const std::string name = g->string();
-    if (name != "reuse" && name != "factorise") {
-      g->fail("unknown linear solver " + input::quoted_text(name) +
-              " (known: \"reuse\", \"factorise\")");
-    }
-    c.reuse_factor = name == "reuse";
+    c.reuse_factor = named_value(*g, kLinearSolverNames, "linear solver");
   }
   if (auto g = f.optional_member("contact_solver")) {
-    const std::string name = g->string();
-    const auto solver = value_in(kContactSolverNames, name);
-    if (!solver) {
-      g->fail("unknown contact solver " + input::quoted_text(name) + " (known: " +
-              quoted_names(kContactSolverNames) + ")");
-    }
-    c.contact_solver = *solver;
+    c.contact_solver = named_value(*g, kContactSolverNames, "contact solver");
   }
   if (auto g = f.optional_member("inertia")) {
     const std::string name = g->string();

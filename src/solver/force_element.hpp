@@ -20,7 +20,6 @@
 namespace dda {
 
 struct ForceElement {
-  const char* name;
   // Adds the element's stiffness and forces for the step to the system.
   void (*assemble)(const World& world, const StepContext& ctx, BlockSystem& system);
   // Books the work and the dissipation of the element's forces over an accepted step's

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "contact/narrow_phase.hpp"
+#include "solver/world.hpp"
 
 namespace dda {
 
@@ -139,6 +140,18 @@ std::vector<BlockForce> joint_water_forces(const WaterTable& water,
     flush(lo, hi);
   }
   return out;
+}
+
+std::vector<BlockForce> present_water_forces(const World& world) {
+  if (!world.water) return {};
+  std::vector<const Polygon*> polygons;
+  for (const Block& b : world.blocks) polygons.push_back(&b.vertices);
+  WaterTable water = *world.water;
+  if (!world.stages.stages.empty()) {
+    const double scene_g = world.stages.gravity.norm();
+    water.unit_weight *= scene_g > 0.0 ? world.gravity.norm() / scene_g : 0.0;
+  }
+  return joint_water_forces(water, polygons, world.contacts, world.search_distance);
 }
 
 }  // namespace dda

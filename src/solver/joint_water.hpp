@@ -12,6 +12,8 @@
 
 namespace dda {
 
+struct World;
+
 // The water table: a polyline with increasing x, extended flat beyond its ends.
 struct WaterTable {
   std::vector<Vec2> phreatic_line;  // at least 2 points, x strictly increasing
@@ -48,5 +50,13 @@ std::vector<BlockForce> joint_water_forces(const WaterTable& water,
                                            const std::vector<const Polygon*>& polygons,
                                            const std::vector<Contact>& contacts,
                                            double face_tolerance);
+
+// The water forces on the world's blocks in its present configuration, from its present
+// contacts (a step: those detected at its start) and faces up to the contact search distance
+// apart (an open joint's two sides are one face); empty without water. The water weighs what
+// gravity makes it weigh: a stage that ramps gravity up from zero ramps the pressure with it
+// (at full pressure and no weight, a block would be pushed off its joint and its bond broken
+// before the consolidation began).
+std::vector<BlockForce> present_water_forces(const World& world);
 
 }  // namespace dda

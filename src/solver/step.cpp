@@ -125,7 +125,10 @@ constexpr double kAcceptedInsideShare = 1e-5;
 constexpr int kHoldOpenRounds = 2;
 constexpr int kHeldOpenIterations = 5;
 
-StepContext make_step_context(const World& world, double dt) {
+// An attempt's settings; `water_forces` (the step's) and `terms` (the attempt's loop terms)
+// outlive it.
+StepContext make_step_context(const World& world, double dt,
+                              const std::vector<BlockForce>& water_forces, const LoopTerms& terms) {
   StepContext ctx;
   ctx.dt = dt;
   ctx.penalty = world.penalty;
@@ -133,6 +136,8 @@ StepContext make_step_context(const World& world, double dt) {
   if (world.base_motion) {
     ctx.base_acceleration = mean_base_acceleration(*world.base_motion, world.time, world.time + dt);
   }
+  ctx.water_forces = water_forces;
+  ctx.loop = &terms;
   return ctx;
 }
 
@@ -146,13 +151,13 @@ bool has_rotating_inertia(const World& world, const StepContext& ctx) {
   return world.pseudo_rigid && ctx.dynamic_coefficient > 0.0;
 }
 
-void start_spins(const World& world, StepContext& ctx) {
-  ctx.loop.spins.assign(world.blocks.size(), Spin{});
+void start_spins(const World& world, const StepContext& ctx, LoopTerms& terms) {
+  terms.spins.assign(world.blocks.size(), Spin{});
   const double k = ctx.dynamic_coefficient;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     const Block& b = world.blocks[i];
     if (b.fixed || b.rigid) continue;
-    ctx.loop.spins[i] = Spin{k * b.velocity[kR0], k * b.local_strain_rate};
+    terms.spins[i] = Spin{k * b.velocity[kR0], k * b.local_strain_rate};
   }
 }
 
@@ -271,13 +276,13 @@ struct LoopStart {
   bool spinning = false;
 };
 
-LoopStart start_loop(const World& world, StepContext& ctx) {
+LoopStart start_loop(const World& world, const StepContext& ctx, LoopTerms& terms) {
   LoopStart start;
-  treatment_of(world).start_step(world, ctx, start.rotation);
+  treatment_of(world).start_step(world, ctx, terms, start.rotation);
   start.plastic = has_plastic_blocks(world);
-  if (start.plastic) ctx.loop.material_terms = start_linearization(world);
+  if (start.plastic) terms.material_terms = start_linearization(world);
   start.spinning = has_rotating_inertia(world, ctx);
-  if (start.spinning) start_spins(world, ctx);
+  if (start.spinning) start_spins(world, ctx, terms);
   return start;
 }
 
@@ -307,6 +312,22 @@ std::optional<Eigen::VectorXd> assemble_and_solve(World& world, StepWorkspace& w
   clock.lap(stats.stage_times.solve);
   ++stats.iterations;
   if (solved && !solved->allFinite()) solved.reset();
+  return solved;
+}
+
+// Whether the step's system is unsymmetric: a plastic block's non-associated flow.
+bool unsymmetric_system(const LoopTerms& terms, bool plastic) {
+  return plastic && any_unsymmetric(terms.material_terms);
+}
+
+// One solve of either contact loop, counted in r; nullopt, with r marked unsolved, when the
+// system could not be solved.
+std::optional<Eigen::VectorXd> solve_iteration(World& world, StepWorkspace& ws,
+                                               const StepContext& ctx, bool unsymmetric,
+                                               LoopResult& r, RunStats& stats, StageClock& clock) {
+  std::optional<Eigen::VectorXd> solved = assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
+  ++r.iterations;
+  if (!solved) r.solved = false;
   return solved;
 }
 
@@ -344,11 +365,11 @@ struct OpenCloseIterate {
 //    iteration solves with the factor kept from earlier iterations and steps, updated by the
 //    springs of the contacts whose mode changed since it was made, and CG for the rest
 //    (CholmodSolver::solve_modified); it is refactorised when that costs less.
-LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, RunStats& stats,
-                            StageClock& clock) {
+LoopResult solve_open_close(World& world, StepWorkspace& ws, const StepContext& ctx,
+                            LoopTerms& terms, RunStats& stats, StageClock& clock) {
   StageTimes& times = stats.stage_times;
   const RotationTreatment& treatment = treatment_of(world);
-  LoopStart start = start_loop(world, ctx);
+  LoopStart start = start_loop(world, ctx, terms);
   const bool plastic = start.plastic, spinning = start.spinning;
   // (Each augmented-Lagrangian round used adds one more: the rounds are allowed beyond it.)
   const int iteration_limit = world.control.max_open_close + (plastic ? kExtraNewtonIterations : 0);
@@ -362,23 +383,18 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   OpenCloseIterate it;
   do {
     it = OpenCloseIterate{};
-    const bool unsymmetric = plastic && any_unsymmetric(ctx.loop.material_terms);
     const std::optional<Eigen::VectorXd> solved =
-        assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
-    ++r.iterations;
-    if (!solved) {
-      r.solved = false;
-      return r;
-    }
+        solve_iteration(world, ws, ctx, unsymmetric_system(terms, plastic), r, stats, clock);
+    if (!solved) return r;
     r.d = *solved;
     it.contacts = update_contact_modes(world, world.contacts, r.d, ctx);
     // T and the spins follow the answer where the treatment iterates them.
     it.rotation_moved =
-        treatment.follow_solve(world, r.d, ctx, start.rotation,
+        treatment.follow_solve(world, r.d, ctx, terms, start.rotation,
                                {spinning, plastic && followed_spins_assembled, nullptr})
             .moved;
     if (plastic) {
-      it.materials = follow_materials(world, r.d, ctx.loop.material_terms);
+      it.materials = follow_materials(world, r.d, terms.material_terms);
       if (it.materials.failed) {
         r.unsettled = CutReason::Material;
         r.material_fraction = it.materials.suggested_fraction;
@@ -402,79 +418,128 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, StepContext& ctx, R
   return r;
 }
 
-// 3'. The converged contact solver (control.contact_solver "newton"; solver/contact_newton.hpp):
-//    the modes read off the iterate, a solve with them, a line search towards its answer,
-//    until the contacts' responses at the answer agree with the modes it was solved with
-//    (and, as in the open-close loop, the secant angles and the plastic blocks' Newton have
-//    converged). Bonds break and multipliers grow only on a converged iterate.
-LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ctx,
-                                RunStats& stats, StageClock& clock) {
-  StageTimes& times = stats.stage_times;
-  const RotationTreatment& treatment = treatment_of(world);
-  LoopStart start = start_loop(world, ctx);
-  const bool plastic = start.plastic, spinning = start.spinning;
-  const int iteration_limit =
-      std::max(world.control.max_open_close, kNewtonIterations) + (plastic ? kExtraNewtonIterations : 0);
-
-  ContactNewton newton(world, world.contacts, ctx);
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(world.dof_count);  // six slots per free block
-  newton.start(world, world.contacts, d);
-  assemble(world, ctx, ws.block_terms);
-  clock.lap(times.contact_update);
-  LoopResult r;
-  int extra_rounds = 0;  // bond breaks and augmentations: each earns one more iteration
-  int holds = 0;         // times contacts were held open (hold_open_pulling)
+// The converged solver's iterate between two solves (as SapSolver::SolveWithGuess keeps
+// its own): the increments it stands at, and what the loop remembers of its solves to see
+// progress, a cycle and its limit.
+struct NewtonIterate {
+  Eigen::VectorXd d;  // six slots per free block
+  int limit = 0;      // solves before the step is cut; bond breaks, augmentations and holds add
+  int holds = 0;      // times contacts were held open (hold_open_pulling)
   int fewest_mismatched = std::numeric_limits<int>::max();
   // Whether the block terms hold spins followed from an iterate (solve_open_close says why).
   bool followed_spins_assembled = false;
   // The last solves' (mismatched, largest): a cycle of up to kCycleWindow solves is seen.
   std::array<std::pair<int, double>, kCycleWindow> recent{};
+
+  // Whether a solve's mismatch repeats one of the last kCycleWindow solves' (kCycleMatch).
+  bool cycling(const NewtonCheck& check) const {
+    const std::pair<int, double> signature{check.mismatched, check.largest_mismatch};
+    const auto same = [&signature](const std::pair<int, double>& seen) {
+      return seen.first == signature.first &&
+             std::abs(seen.second - signature.second) <= kCycleMatch * std::abs(signature.second);
+    };
+    return check.mismatched > 0 && std::find_if(recent.begin(), recent.end(), same) != recent.end();
+  }
+  void remember(int iteration, const NewtonCheck& check) {
+    recent[static_cast<std::size_t>(iteration) % recent.size()] = {check.mismatched,
+                                                                   check.largest_mismatch};
+  }
+  // Fewer contacts out of their mode than after any solve before (remembered).
+  bool progress(const NewtonCheck& check) {
+    const bool fewer = check.mismatched < fewest_mismatched;
+    fewest_mismatched = std::min(fewest_mismatched, check.mismatched);
+    return fewer;
+  }
+  // After contacts were held open the solves ahead see another system: cycles and progress
+  // start anew.
+  void forget_solves() {
+    recent.fill({});
+    fewest_mismatched = std::numeric_limits<int>::max();
+  }
+};
+
+// One solve's Newton direction: the answer d_hat of the system in the present modes, then
+// (the Newton step proper) the sliding contacts' friction following the normal force it is
+// proportional to (an unsymmetric low-rank term on the kept factor). Held at the iterate's
+// normal force instead (Shi's loop; here with KLU, for a non-associated plastic block), it
+// converges linearly, as a fixed point: three times the solves of a tumbling square's
+// landing. The correction is solved to kGmresTrialTolerance only (an inexact Newton step);
+// one that the check finds converged is refined to kGmresTolerance from there and checked
+// again, so the accepted answer is as exact as before. Returns the check at d_hat.
+NewtonCheck newton_direction(World& world, StepWorkspace& ws, ContactNewton& newton,
+                             bool unsymmetric, Eigen::VectorXd& d_hat, bool& friction_follows) {
+  friction_follows = false;
+  std::optional<Eigen::VectorXd> correction;
+  if (!unsymmetric &&
+      newton.friction_coupling(world, world.contacts, d_hat, ws.coupling_u,
+                               ws.coupling_v, ws.coupling_residual)) {
+    reduce_terms(ws.system, ws.coupling_u);
+    reduce_terms(ws.system, ws.coupling_v);
+    ws.coupling_residual = ws.system.reduce(ws.coupling_residual);
+    correction = ws.solver.solve_low_rank_coupled(ws.system, ws.coupling_residual,
+                                                  ws.coupling_u, ws.coupling_v,
+                                                  CholmodSolver::kGmresTrialTolerance);
+    friction_follows = correction.has_value();
+  }
+  const Eigen::VectorXd d_symmetric = d_hat;
+  if (friction_follows) d_hat += ws.system.expand(*correction);
+  NewtonCheck check = newton.check(world, world.contacts, d_hat, friction_follows);
+  if (friction_follows && check.mismatched == 0) {
+    const std::optional<Eigen::VectorXd> refined = ws.solver.solve_low_rank_coupled(
+        ws.system, ws.coupling_residual, ws.coupling_u, ws.coupling_v,
+        CholmodSolver::kGmresTolerance, &*correction);
+    if (refined) {
+      d_hat = d_symmetric + ws.system.expand(*refined);
+    } else {
+      d_hat = d_symmetric;
+      friction_follows = false;
+    }
+    check = newton.check(world, world.contacts, d_hat, friction_follows);
+  }
+  return check;
+}
+
+// What moving the iterate after a solve left out of agreement with the system it will be
+// solved from next.
+struct NewtonFollowUp {
+  int rotation_moved = 0;      // blocks whose T or spin is off the answer (follow_solve)
+  int points_moved = 0;        // sliding contacts whose measure point moved
+  MaterialFollowUp materials;  // plastic blocks whose Newton iteration has not converged
+
+  bool agrees() const {
+    return rotation_moved == 0 && points_moved == 0 && materials.unconverged == 0;
+  }
+};
+
+// 3'. The converged contact solver (control.contact_solver "newton"; solver/contact_newton.hpp):
+//    the modes read off the iterate, a solve with them, a line search towards its answer,
+//    until the contacts' responses at the answer agree with the modes it was solved with
+//    (and, as in the open-close loop, the secant angles and the plastic blocks' Newton have
+//    converged). Bonds break and multipliers grow only on a converged iterate.
+LoopResult solve_contact_newton(World& world, StepWorkspace& ws, const StepContext& ctx,
+                                LoopTerms& terms, RunStats& stats, StageClock& clock) {
+  StageTimes& times = stats.stage_times;
+  const RotationTreatment& treatment = treatment_of(world);
+  LoopStart start = start_loop(world, ctx, terms);
+  const bool plastic = start.plastic, spinning = start.spinning;
+
+  ContactNewton newton(world, world.contacts, ctx);
+  NewtonIterate it;
+  it.d = Eigen::VectorXd::Zero(world.dof_count);
+  it.limit = std::max(world.control.max_open_close, kNewtonIterations) +
+             (plastic ? kExtraNewtonIterations : 0);
+  newton.start(world, world.contacts, it.d);
+  assemble(world, ctx, ws.block_terms);
+  clock.lap(times.contact_update);
+  LoopResult r;
   for (;;) {
-    const bool unsymmetric = plastic && any_unsymmetric(ctx.loop.material_terms);
+    const bool unsymmetric = unsymmetric_system(terms, plastic);
     const std::optional<Eigen::VectorXd> solved =
-        assemble_and_solve(world, ws, ctx, unsymmetric, stats, clock);
-    ++r.iterations;
-    if (!solved) {
-      r.solved = false;
-      return r;
-    }
+        solve_iteration(world, ws, ctx, unsymmetric, r, stats, clock);
+    if (!solved) return r;
     Eigen::VectorXd d_hat = *solved;
-    // The Newton step proper: the sliding contacts' friction follows the normal force it is
-    // proportional to (an unsymmetric low-rank term on the kept factor). Held at the
-    // iterate's normal force instead (Shi's loop; here with KLU, for a non-associated
-    // plastic block), it converges linearly, as a fixed point: three times the solves of a
-    // tumbling square's landing.
-    // An iterate's correction is solved to kGmresTrialTolerance only (an inexact Newton
-    // step); one that the check finds converged is refined to kGmresTolerance from there and
-    // checked again, so the accepted answer is as exact as before.
     bool friction_follows = false;
-    std::optional<Eigen::VectorXd> correction;
-    if (!unsymmetric &&
-        newton.friction_coupling(world, world.contacts, d_hat, ws.coupling_u,
-                                 ws.coupling_v, ws.coupling_residual)) {
-      reduce_terms(ws.system, ws.coupling_u);
-      reduce_terms(ws.system, ws.coupling_v);
-      ws.coupling_residual = ws.system.reduce(ws.coupling_residual);
-      correction = ws.solver.solve_low_rank_coupled(ws.system, ws.coupling_residual,
-                                                    ws.coupling_u, ws.coupling_v,
-                                                    CholmodSolver::kGmresTrialTolerance);
-      friction_follows = correction.has_value();
-    }
-    const Eigen::VectorXd d_symmetric = d_hat;
-    if (friction_follows) d_hat += ws.system.expand(*correction);
-    NewtonCheck check = newton.check(world, world.contacts, d_hat, friction_follows);
-    if (friction_follows && check.mismatched == 0) {
-      const std::optional<Eigen::VectorXd> refined = ws.solver.solve_low_rank_coupled(
-          ws.system, ws.coupling_residual, ws.coupling_u, ws.coupling_v,
-          CholmodSolver::kGmresTolerance, &*correction);
-      if (refined) {
-        d_hat = d_symmetric + ws.system.expand(*refined);
-      } else {
-        d_hat = d_symmetric;
-        friction_follows = false;
-      }
-      check = newton.check(world, world.contacts, d_hat, friction_follows);
-    }
+    NewtonCheck check = newton_direction(world, ws, newton, unsymmetric, d_hat, friction_follows);
     // A cycle (the same mismatch as one of the last kCycleWindow solves) or the limit, with every
     // contact solved closed holding its normal force as solved: only shear modes are left
     // undecided, whose energy the account books as it acted, and contacts solved open that
@@ -483,15 +548,9 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
     // accepted as solved, as Shi's code accepts one after its loop's cap, and counted with
     // its residual. (A contact in the hopper flipping between a closed solve that ends in
     // tension and an open one that goes 3e3 resolutions in cut 20 steps for open-close.)
-    const std::pair<int, double> signature{check.mismatched, check.largest_mismatch};
-    const auto same = [&signature](const std::pair<int, double>& seen) {
-      return seen.first == signature.first &&
-             std::abs(seen.second - signature.second) <= kCycleMatch * std::abs(signature.second);
-    };
-    const bool cycling =
-        check.mismatched > 0 && std::find_if(recent.begin(), recent.end(), same) != recent.end();
-    recent[static_cast<std::size_t>(r.iterations) % recent.size()] = signature;
-    const bool at_limit = r.iterations >= iteration_limit + extra_rounds;
+    const bool cycling = it.cycling(check);
+    it.remember(r.iterations, check);
+    const bool at_limit = r.iterations >= it.limit;
     // Not while contacts solved open end inside their edge's block with springs holding more
     // than kAcceptedInsideShare of the run's energy scale: no force did work for that energy,
     // which the next step's springs would give back to the blocks. (A block thrown at a wall
@@ -505,7 +564,7 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
       ++stats.newton_accepted_unconverged;
       stats.newton_unconverged_mismatch =
           std::max(stats.newton_unconverged_mismatch, check.largest_mismatch);
-      d = d_hat;
+      it.d = d_hat;
       break;
     }
     // At the limit with contacts solved closed that pull: they are held open from here on
@@ -516,107 +575,102 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, StepContext& ct
     // tried.) Not at a mere cycle: the damped iterate leaves most cycles that pass through
     // a pulling contact, and holding there sent a 300-polygon hopper into 80 % more
     // overshoot cuts (vertices of held contacts ending inside their edges' blocks).
-    if (check.mismatched > 0 && at_limit && holds < kHoldOpenRounds) {
+    if (check.mismatched > 0 && at_limit && it.holds < kHoldOpenRounds) {
       const int held = newton.hold_open_pulling(world, world.contacts, d_hat);
       if (held > 0) {
-        ++holds;
+        ++it.holds;
         stats.newton_held_open += held;
-        extra_rounds += kHeldOpenIterations;
-        recent.fill({});
-        fewest_mismatched = std::numeric_limits<int>::max();
+        it.limit += kHeldOpenIterations;
+        it.forget_solves();
       }
     }
     // The contacts first, on the present T and material linearisation; once they agree with
     // the solve, the secant angles and the plastic blocks follow it (an outer fixed point:
     // moved with every line-searched iterate, a turning block's T kept a contact at its
     // kink flipping open and closed).
-    int rotation_moved = 0;
-    int points_moved = 0;  // sliding contacts whose measure point moved
-    MaterialFollowUp materials;
+    NewtonFollowUp follow;
     if (check.mismatched > 0) {
       // Whole steps while they make progress (fewer contacts out of their mode than after
       // the last solve: on a pile where many contacts change at once the line search's
       // one length for all of them would find the modes a few at a time), the line search
       // once they do not (a contact cycling between modes).
-      const bool progress = check.mismatched < fewest_mismatched;
-      fewest_mismatched = std::min(fewest_mismatched, check.mismatched);
+      const bool progress = it.progress(check);
       double step_length =
-          progress ? 1.0 : newton.line_search(world, world.contacts, ws.block_terms, d, d_hat);
+          progress ? 1.0 : newton.line_search(world, world.contacts, ws.block_terms, it.d, d_hat);
       // In a cycle the same modes come back whatever the line search says: half its step
       // puts the next iterate between the cycle's states (kCycleDamping).
       if (cycling) step_length *= kCycleDamping;
       if (step_length < 1.0) ++stats.line_searches_shortened;
-      d += step_length * (d_hat - d);
-      newton.respond(world, world.contacts, d);
+      it.d += step_length * (d_hat - it.d);
+      newton.respond(world, world.contacts, it.d);
     } else {
-      d = d_hat;
+      it.d = d_hat;
       // The modes at the answer, on the T it was solved with (they agree with the solve),
       // are kept while T and the materials follow it: read again on the new T, a contact
       // at its kink (a corner just landed) would flip open and cost two more solves.
-      newton.respond(world, world.contacts, d);
-      points_moved = newton.follow_measure_points(world, world.contacts, ctx, d);
+      newton.respond(world, world.contacts, it.d);
+      follow.points_moved = newton.follow_measure_points(world, world.contacts, ctx, it.d);
       // T and the spins follow the answer where the treatment iterates them. Blocks in
       // flight may settle block by block first (when no measure point moved and no block is
       // plastic); the contacts then see the new increments and T, and only a contact they
       // change takes the loop on. (The spins, which only the block terms read, follow before
       // the contacts are measured again on the new T.)
       const Followed followed = treatment.follow_solve(
-          world, d, ctx, start.rotation,
-          {spinning, plastic && followed_spins_assembled,
-           points_moved == 0 && !plastic ? &ws.block_terms : nullptr});
-      rotation_moved = followed.moved;
+          world, it.d, ctx, terms, start.rotation,
+          {spinning, plastic && it.followed_spins_assembled,
+           follow.points_moved == 0 && !plastic ? &ws.block_terms : nullptr});
+      follow.rotation_moved = followed.moved;
       if (followed.settled_free_blocks) {
-        followed_spins_assembled = spinning;
+        it.followed_spins_assembled = spinning;
         ++stats.local_secant_settles;
         newton.measure(world, world.contacts, ctx);
-        check = newton.check(world, world.contacts, d, friction_follows);
-        if (check.mismatched > 0) newton.respond(world, world.contacts, d);
+        check = newton.check(world, world.contacts, it.d, friction_follows);
+        if (check.mismatched > 0) newton.respond(world, world.contacts, it.d);
       }
       if (followed.columns_changed) newton.measure(world, world.contacts, ctx);
       if (plastic) {
-        materials = follow_materials(world, d, ctx.loop.material_terms);
-        if (materials.failed) {
-          r.d = d;
+        follow.materials = follow_materials(world, it.d, terms.material_terms);
+        if (follow.materials.failed) {
+          r.d = it.d;
           r.unsettled = CutReason::Material;
-          r.material_fraction = materials.suggested_fraction;
-          r.material_reason = materials.reason;
+          r.material_fraction = follow.materials.suggested_fraction;
+          r.material_reason = follow.materials.reason;
           return r;
         }
       }
-      if (rotation_moved > 0 || materials.unconverged > 0) {
+      if (follow.rotation_moved > 0 || follow.materials.unconverged > 0) {
         assemble(world, ctx, ws.block_terms);
-        followed_spins_assembled = spinning;
+        it.followed_spins_assembled = spinning;
       }
     }
     clock.lap(times.contact_update);
-    if (check.mismatched == 0 && rotation_moved == 0 && points_moved == 0 &&
-        materials.unconverged == 0) {
+    if (check.mismatched == 0 && follow.agrees()) {
       // Converged: bonds the answer breaks break now, and contacts deeper than allowed grow
       // their multipliers (penetration control, as in the open-close loop); either way the
       // step is solved again.
-      int more = newton.break_bonds(world, world.contacts, d);
+      int more = newton.break_bonds(world, world.contacts, it.d);
       if (more == 0 && r.augmentations < world.control.max_augmentations &&
           deepest_penetration_share(world.contacts) > 1.0) {
         more = augment_multipliers(world, world.contacts, kAugmentTargetShare, ctx);
         if (more > 0) ++r.augmentations;
       }
       if (more == 0) {
-        newton.finish(world, world.contacts, d);
+        newton.finish(world, world.contacts, it.d);
         break;
       }
-      ++extra_rounds;
-      newton.respond(world, world.contacts, d);
+      ++it.limit;
+      newton.respond(world, world.contacts, it.d);
     }
-    if (r.iterations >= iteration_limit + extra_rounds) {
-      newton.finish(world, world.contacts, d);
+    if (r.iterations >= it.limit) {
+      newton.finish(world, world.contacts, it.d);
       r.unsettled = CutReason::OpenClose;
       stats.newton_unconverged_mismatch =
           std::max(stats.newton_unconverged_mismatch, check.largest_mismatch);
       break;
     }
   }
-  treatment.finish_unknowns(world, d);
-  r.d = d;
+  treatment.finish_unknowns(world, it.d);
+  r.d = it.d;
   return r;
 }
 
@@ -803,22 +857,9 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
   stats.candidate_pairs_max =
       std::max(stats.candidate_pairs_max, static_cast<long>(ws.detection.close.size()));
   const std::vector<Contact> contacts_at_start = world.contacts;
-  // 2b. Joint water pressure on the faces those contacts share, constant over the step. The
-  //     water weighs what gravity makes it weigh: a stage that ramps gravity up from zero
-  //     ramps the pressure with it (at full pressure and no weight, a block would be pushed
-  //     off its joint and its bond broken before the consolidation began).
-  if (world.water) {
-    std::vector<const Polygon*> polygons;
-    for (const Block& b : world.blocks) polygons.push_back(&b.vertices);
-    WaterTable water = *world.water;
-    if (!world.stages.stages.empty()) {
-      const double scene_g = world.stages.gravity.norm();
-      water.unit_weight *= scene_g > 0.0 ? world.gravity.norm() / scene_g : 0.0;
-    }
-    // An open joint's two sides are one face up to the contact search distance.
-    world.water_forces =
-        joint_water_forces(water, polygons, world.contacts, world.search_distance);
-  }
+  // 2b. Joint water pressure on the faces those contacts share, constant over the step
+  //     (present_water_forces: weighing what the stage's gravity makes it weigh).
+  const std::vector<BlockForce> water_forces = present_water_forces(world);
   clock.lap(stats.stage_times.detect);
   int penetration_cuts = 0;
   bool was_cut = false;
@@ -838,12 +879,14 @@ StepOutcome advance_step(World& world, StepWorkspace& ws, RunStats& stats) {
       return {false, describe_failure(world, "time step cut below 1e-9 of the scheduled one; "
                                              "the contacts or the motion do not settle")};
     }
-    StepContext ctx = make_step_context(world, dt);
+    // The attempt's settings, fixed, and the terms its contact loop iterates, apart.
+    LoopTerms terms;
+    const StepContext ctx = make_step_context(world, dt, water_forces, terms);
     world.contacts = contacts_at_start;  // states as they entered the step, no changes counted
     // 3. The open-close loop.
     const LoopResult loop = world.control.contact_solver == ContactSolver::Newton
-                                ? solve_contact_newton(world, ws, ctx, stats, clock)
-                                : solve_open_close(world, ws, ctx, stats, clock);
+                                ? solve_contact_newton(world, ws, ctx, terms, stats, clock)
+                                : solve_open_close(world, ws, ctx, terms, stats, clock);
     stats.augmentations += loop.augmentations;
     if (!loop.solved) {
       return {false, describe_failure(world, "the global system could not be solved "

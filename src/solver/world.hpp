@@ -170,10 +170,9 @@ struct World {
   std::vector<Pin> pins;
   std::vector<PointLoad> loads;
   std::vector<Monitor> monitors;
-  // Joint water pressure (solver/joint_water.hpp): the table, and the forces it puts on the
-  // blocks in the present step (from the contacts detected at its start; empty without water).
+  // Joint water pressure (solver/joint_water.hpp); the forces it puts on the blocks are the
+  // step's (StepContext::water_forces, from present_water_forces).
   std::optional<WaterTable> water;
-  std::vector<BlockForce> water_forces;
   // Base shaking (solver/base_motion.hpp): the ground's acceleration history; the world is
   // advanced in the ground's frame.
   std::optional<BaseMotion> base_motion;

@@ -73,7 +73,9 @@ class Program {
       const Block& blk = world.blocks[b];
       dead_load(static_cast<int>(b), blk.moments.centroid, block_mass(world, blk) * world.gravity);
     }
-    for (const BlockForce& f : world.water_forces) dead_load(f.block, f.point, f.force);
+    // The joint water on the configuration analysed, from its contacts (those of the last
+    // step's detection) and its present faces.
+    for (const BlockForce& f : present_water_forces(world)) dead_load(f.block, f.point, f.force);
     for (const PointLoad& l : world.loads) dead_load(l.block, l.current, l.force);
   }
 

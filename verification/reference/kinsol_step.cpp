@@ -18,7 +18,8 @@ namespace {
 struct Problem {
   const World& world;
   std::vector<Contact> contacts;
-  StepContext ctx;
+  StepContext ctx;   // its loop points at `terms` (Problem is not copied)
+  LoopTerms terms;   // the plastic blocks' linearisation at the iterate
   BlockSystem system;
   long residual_evals = 0;
 };
@@ -26,8 +27,9 @@ struct Problem {
 // The step's system linearised at d: K d - f is then the residual at d (material_coupling.hpp:
 // the linearised stress equals the material's own at the point of linearisation).
 bool assemble_at(Problem& p, const Eigen::VectorXd& d) {
-  p.ctx.loop.material_terms = start_linearization(p.world);
-  if (follow_materials(p.world, d, p.ctx.loop.material_terms).failed) return false;
+  p.terms.material_terms = start_linearization(p.world);
+  if (follow_materials(p.world, d, p.terms.material_terms).failed) return false;
+  p.ctx.loop = &p.terms;
   assemble(p.world, p.ctx, p.system);
   add_contact_terms(p.world, p.contacts, p.ctx, p.system);
   ++p.residual_evals;
@@ -67,7 +69,7 @@ int jacobian(N_Vector u, N_Vector, SUNMatrix j, void* data, N_Vector, N_Vector) 
 KinsolStepResult solve_step_with_kinsol(const World& world, const std::vector<Contact>& contacts,
                                         const StepContext& ctx, double tolerance) {
   KinsolStepResult result;
-  Problem problem{world, contacts, ctx, {}, 0};
+  Problem problem{world, contacts, ctx, {}, {}, 0};
   problem.system.reset(rigid_rows(world));  // the dof map, for the number of unknowns
   const sunindextype n = problem.system.unknowns();
   SUNContext sunctx = nullptr;

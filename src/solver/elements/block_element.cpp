@@ -25,18 +25,20 @@ void add_block_terms(const World& world, int index, const StepContext& ctx, Mat6
   // Turned to the global frame at the step's start, where the step also holds the block's
   // stress (initial_stress_force below): a steady spin then balances with no shear in the
   // block frame (at the mid-step angle, half a step's turn, r0/2, would show as shear).
-  if (!ctx.loop.spins.empty() && !b.rigid) {
+  const std::vector<Spin>* spins = loop_spins(ctx);
+  if (spins != nullptr && !b.rigid) {
     const RotationUpdate treatment = world.control.rotation_update;
-    const Spin& spin = ctx.loop.spins[static_cast<std::size_t>(index)];
+    const Spin& spin = (*spins)[static_cast<std::size_t>(index)];
     f -= spatial_increments(treatment, b)
              ? spatial_rotating_inertia_force(b.material_inertia, b.rotation,
                                               stretch_strain(treatment, b), spin)
              : rotating_inertia_force(b.material_inertia, b.rotation, b.local_strain, spin);
   }
-  if (b.plastic && !ctx.loop.material_terms.empty()) {
+  const std::vector<MaterialLinearization>* material_terms = loop_material_terms(ctx);
+  if (b.plastic && material_terms != nullptr) {
     // Newton: the stress at increment de is taken as s + D_t (de - de_k) (the material
     // linearised at the last solution, solver/material_coupling.hpp).
-    const MaterialLinearization& l = ctx.loop.material_terms[static_cast<std::size_t>(index)];
+    const MaterialLinearization& l = (*material_terms)[static_cast<std::size_t>(index)];
     const double area = stress_area(world.control.rotation_update, b);
     k.block<3, 3>(kEx, kEx) += area * l.tangent;
     f.segment<3>(kEx) -= area * (l.stress - l.tangent * l.strain_increment);
@@ -126,7 +128,8 @@ void book_blocks(const World& world, const Eigen::VectorXd& d, const StepContext
 
 }  // namespace
 
-const ForceElement kBlockElement{"blocks", assemble_blocks, book_blocks, nullptr};
+// The blocks' own terms: inertia, elasticity, weight, initial stress.
+const ForceElement kBlockElement{assemble_blocks, book_blocks, nullptr};
 
 double block_strain_energy(const World& world, const Block& b) {
   // Over the area the stress acts over (stress_area: the initial one under

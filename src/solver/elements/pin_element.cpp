@@ -36,6 +36,7 @@ void add_pin_energy(const World& world, double penalty, double& e) {
 
 }  // namespace
 
-const ForceElement kPinElement{"pins", assemble_pins, book_pins, add_pin_energy};
+// Pins: a spring of the penalty's stiffness to each anchor.
+const ForceElement kPinElement{assemble_pins, book_pins, add_pin_energy};
 
 }  // namespace dda

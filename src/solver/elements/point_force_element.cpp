@@ -19,7 +19,7 @@ void assemble_point_forces(const World& world, const StepContext& ctx, BlockSyst
   for (const PointLoad& load : world.loads) {
     add_point_force(world, ctx, load.block, load.current, load.force, system);
   }
-  for (const BlockForce& w : world.water_forces) {
+  for (const BlockForce& w : ctx.water_forces) {
     add_point_force(world, ctx, w.block, w.point, w.force, system);
   }
 }
@@ -38,14 +38,14 @@ void book_point_forces(const World& world, const Eigen::VectorXd& d, const StepC
   for (const PointLoad& load : world.loads) {
     s.load_work += point_force_work(world, d, ctx, load.block, load.current, load.force);
   }
-  for (const BlockForce& w : world.water_forces) {
+  for (const BlockForce& w : ctx.water_forces) {
     s.load_work += point_force_work(world, d, ctx, w.block, w.point, w.force);
   }
 }
 
 }  // namespace
 
-const ForceElement kPointForceElement{"point loads and joint water", assemble_point_forces,
-                                      book_point_forces, nullptr};
+// Point loads and joint water.
+const ForceElement kPointForceElement{assemble_point_forces, book_point_forces, nullptr};
 
 }  // namespace dda

@@ -13,11 +13,11 @@ std::vector<double> last_rotation_increments(const World& world) {
 }
 
 void set_rotation_columns(const World& world, const std::vector<double>& angles,
-                          Mat2 (*column)(double), StepContext& ctx) {
-  ctx.loop.block_ts.assign(world.blocks.size(), shi_t());
+                          Mat2 (*column)(double), LoopTerms& terms) {
+  terms.block_ts.assign(world.blocks.size(), shi_t());
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
     if (world.blocks[i].fixed) continue;
-    ctx.loop.block_ts[i] = t_with_rotation_column(column(angles[i]));
+    terms.block_ts[i] = t_with_rotation_column(column(angles[i]));
   }
 }
 

@@ -15,9 +15,10 @@ constexpr int kLocalSecantRounds = 10;
 
 }  // namespace
 
-void SecantColumn::start_step(const World& world, StepContext& ctx, RotationIterate& it) const {
+void SecantColumn::start_step(const World& world, const StepContext& /*ctx*/, LoopTerms& terms,
+                              RotationIterate& it) const {
   it.angles = last_rotation_increments(world);
-  set_rotation_columns(world, it.angles, secant_rotation_column, ctx);
+  set_rotation_columns(world, it.angles, secant_rotation_column, terms);
 }
 
 // Block i's spin at the mean rates of its increments db over the step: r0 / dt and the
@@ -44,7 +45,8 @@ Spin SecantColumn::mean_spin(const World& world, const StepContext& ctx, std::si
 // their iterates differ by the contacts' modes only, and checking them too cost box150 a
 // tenth more solves (7220 against 6539) for rattling rock blocks whose stiffness, not their
 // inertia, sets their strain. Without `tolerance`, 0.
-int SecantColumn::follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx,
+int SecantColumn::follow_spins(const World& world, const Eigen::VectorXd& d,
+                               const StepContext& ctx, LoopTerms& terms,
                                const std::vector<double>* tolerance) const {
   int moved = 0;
   for (std::size_t i = 0; i < world.blocks.size(); ++i) {
@@ -52,10 +54,10 @@ int SecantColumn::follow_spins(const World& world, const Eigen::VectorXd& d, Ste
     if (b.fixed || b.rigid) continue;
     const Spin now = mean_spin(world, ctx, i, d.segment<6>(b.first_dof));
     if (tolerance != nullptr && b.plastic &&
-        spin_error(b, ctx.loop.spins[i], now, ctx.dt) > (*tolerance)[i]) {
+        spin_error(b, terms.spins[i], now, ctx.dt) > (*tolerance)[i]) {
       ++moved;
     }
-    ctx.loop.spins[i] = now;
+    terms.spins[i] = now;
   }
   return moved;
 }
@@ -64,10 +66,11 @@ int SecantColumn::follow_spins(const World& world, const Eigen::VectorXd& d, Ste
 // only then) when `check`, i.e. when the scene has plastic blocks and the block terms hold
 // spins followed from an iterate; otherwise the spins follow unchecked.
 int SecantColumn::follow_answer_spins(const World& world, const Eigen::VectorXd& d,
-                                      StepContext& ctx, bool check) const {
-  if (!check) return follow_spins(world, d, ctx);
+                                      const StepContext& ctx, LoopTerms& terms,
+                                      bool check) const {
+  if (!check) return follow_spins(world, d, ctx, terms);
   const std::vector<double> tolerance = secant_tolerances(world, world.contacts);
-  return follow_spins(world, d, ctx, &tolerance);
+  return follow_spins(world, d, ctx, terms, &tolerance);
 }
 
 // Once the contacts agree (the converged solver): when every block whose secant angle is off
@@ -76,14 +79,14 @@ int SecantColumn::follow_answer_spins(const World& world, const Eigen::VectorXd&
 // solved block by block (6 x 6, or 3 x 3 for a rigid block) until its angle agrees, with no
 // global solve (a third of the solves of the hopper's first 1.5 s were for tumbling blocks in
 // flight). The other blocks keep the angles they were solved with. On success `angles`,
-// ctx's T, the spins and `block_terms` are those of the increments in d. False when an off
+// the loop's T, the spins and `block_terms` are those of the increments in d. False when an off
 // block touches another (nothing changed), or after kLocalSecantRounds rounds: `angles` and
-// d are as they came, but ctx's T, the spins and `block_terms` are the last round's, for the
+// d are as they came, but the loop's T, the spins and `block_terms` are the last round's, for the
 // caller to set from its angles as it does after any secant change.
 bool SecantColumn::settle_free_secants(const World& world, const std::vector<int>& off,
                                        bool spinning, std::vector<double>& angles,
-                                       StepContext& ctx, BlockSystem& block_terms,
-                                       Eigen::VectorXd& d) const {
+                                       const StepContext& ctx, LoopTerms& terms,
+                                       BlockSystem& block_terms, Eigen::VectorXd& d) const {
   std::vector<unsigned char> touching(world.blocks.size(), 0);
   for (const Contact& c : world.contacts) {
     if (c.state.mode == ContactMode::Open) continue;
@@ -99,9 +102,9 @@ bool SecantColumn::settle_free_secants(const World& world, const std::vector<int
   }
   Eigen::VectorXd x = d;
   for (int round = 0; round < kLocalSecantRounds; ++round) {
-    set_rotation_columns(world, local, secant_rotation_column, ctx);
-    if (spinning) follow_spins(world, x, ctx);
-    assemble(world, ctx, block_terms);
+    set_rotation_columns(world, local, secant_rotation_column, terms);
+    if (spinning) follow_spins(world, x, ctx, terms);
+    assemble(world, ctx, block_terms);  // reads `terms` through ctx.loop
     bool agrees = true;
     std::vector<double> next = local;
     for (const int i : off) {
@@ -116,7 +119,7 @@ bool SecantColumn::settle_free_secants(const World& world, const std::vector<int
       // Its spins too, at the free blocks' tolerance (follow_spins holds plastic blocks to
       // theirs by global solves; here it costs 6 x 6 solves only).
       if (spinning && !b.rigid &&
-          spin_error(b, ctx.loop.spins[static_cast<std::size_t>(i)],
+          spin_error(b, terms.spins[static_cast<std::size_t>(i)],
                      mean_spin(world, ctx, static_cast<std::size_t>(i), xb),
                      ctx.dt) > kSecantDisplacementShare * world.w0) {
         agrees = false;
@@ -139,7 +142,8 @@ bool SecantColumn::settle_free_secants(const World& world, const std::vector<int
 // angles that moved, and, with the rotating inertia, the spins follow the answer's mean
 // rates: a spin off them counts as a secant angle off, both being the step's own answer fed
 // back into its equations.
-Followed SecantColumn::follow_solve(const World& world, Eigen::VectorXd& d, StepContext& ctx,
+Followed SecantColumn::follow_solve(const World& world, Eigen::VectorXd& d,
+                                    const StepContext& ctx, LoopTerms& terms,
                                     RotationIterate& it, const SolveFollow& how) const {
   Followed f;
   std::vector<int> off;  // blocks whose secant angle is off (follow_secant_angles)
@@ -148,7 +152,8 @@ Followed SecantColumn::follow_solve(const World& world, Eigen::VectorXd& d, Step
   f.moved = follow_secant_angles(world, world.contacts, d, it.angles,
                                  how.free_block_terms != nullptr ? &off : nullptr);
   if (f.moved > 0 && how.free_block_terms != nullptr &&
-      settle_free_secants(world, off, how.spinning, solved_angles, ctx, *how.free_block_terms, d)) {
+      settle_free_secants(world, off, how.spinning, solved_angles, ctx, terms,
+                          *how.free_block_terms, d)) {
     // Blocks in flight settled block by block: the contacts are then to see the new
     // increments and T.
     it.angles = std::move(solved_angles);
@@ -156,10 +161,10 @@ Followed SecantColumn::follow_solve(const World& world, Eigen::VectorXd& d, Step
     f.settled_free_blocks = true;
   }
   if (f.moved > 0) {
-    set_rotation_columns(world, it.angles, secant_rotation_column, ctx);
+    set_rotation_columns(world, it.angles, secant_rotation_column, terms);
     f.columns_changed = true;
   }
-  if (how.spinning) f.moved += follow_answer_spins(world, d, ctx, how.check_spins);
+  if (how.spinning) f.moved += follow_answer_spins(world, d, ctx, terms, how.check_spins);
   return f;
 }
 

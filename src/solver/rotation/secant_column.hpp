@@ -11,21 +11,23 @@ namespace dda {
 class SecantColumn : public KeptInBlockFrame {
  public:
   // The secant columns start from the last step's r0.
-  void start_step(const World& world, StepContext& ctx, RotationIterate& it) const override;
+  void start_step(const World& world, const StepContext& ctx, LoopTerms& terms,
+                  RotationIterate& it) const override;
   // Each block's secant angle moves to the r0 just solved, and the spins to the answer's mean
   // rates; a block off by more than its tolerance counts (follow_secant_angles, spin_error).
-  Followed follow_solve(const World& world, Eigen::VectorXd& d, StepContext& ctx,
-                        RotationIterate& it, const SolveFollow& how) const override;
+  Followed follow_solve(const World& world, Eigen::VectorXd& d, const StepContext& ctx,
+                        LoopTerms& terms, RotationIterate& it,
+                        const SolveFollow& how) const override;
 
  private:
   Spin mean_spin(const World& world, const StepContext& ctx, std::size_t i, const Vec6& db) const;
-  int follow_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx,
-                   const std::vector<double>* tolerance = nullptr) const;
-  int follow_answer_spins(const World& world, const Eigen::VectorXd& d, StepContext& ctx,
-                          bool check) const;
+  int follow_spins(const World& world, const Eigen::VectorXd& d, const StepContext& ctx,
+                   LoopTerms& terms, const std::vector<double>* tolerance = nullptr) const;
+  int follow_answer_spins(const World& world, const Eigen::VectorXd& d, const StepContext& ctx,
+                          LoopTerms& terms, bool check) const;
   bool settle_free_secants(const World& world, const std::vector<int>& off, bool spinning,
-                           std::vector<double>& angles, StepContext& ctx,
-                           BlockSystem& block_terms, Eigen::VectorXd& d) const;
+                           std::vector<double>& angles, const StepContext& ctx,
+                           LoopTerms& terms, BlockSystem& block_terms, Eigen::VectorXd& d) const;
 };
 
 }  // namespace dda

@@ -13,9 +13,10 @@ namespace {
 
 class SinVariable final : public MovedByIncrements {
  public:
-  void start_step(const World& world, StepContext& ctx, RotationIterate& it) const override {
+  void start_step(const World& world, const StepContext& /*ctx*/, LoopTerms& terms,
+                  RotationIterate& it) const override {
     it.angles = last_rotation_increments(world);
-    set_rotation_columns(world, it.angles, sine_rotation_column, ctx);
+    set_rotation_columns(world, it.angles, sine_rotation_column, terms);
   }
 
   // The loop solved for sin r0 in the rotation slot; the stages after it want r0.

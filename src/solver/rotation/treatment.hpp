@@ -34,7 +34,7 @@ struct RotationIterate {
 
 // What the contact loop tells a treatment about the solve it follows.
 struct SolveFollow {
-  bool spinning = false;     // ctx.loop.spins hold the rotating inertia's spins (they follow too)
+  bool spinning = false;     // the loop terms' spins hold the rotating inertia's spins (they follow too)
   bool check_spins = false;  // plastic blocks' spins are checked against their tolerance
   // Not null: blocks in flight whose angle is off may settle block by block with these
   // block terms (the converged solver, when no measure point moved and no block is plastic).
@@ -44,8 +44,8 @@ struct SolveFollow {
 // What following a solve did.
 struct Followed {
   int moved = 0;                 // blocks whose T or spin is off the answer: solve again
-  bool columns_changed = false;  // ctx's rotation columns were set anew
-  // Blocks in flight settled block by block: d, ctx's T and spins and the block terms are
+  bool columns_changed = false;  // the loop's rotation columns were set anew
+  // Blocks in flight settled block by block: d, the loop's T and spins and the block terms are
   // now those of the settled increments.
   bool settled_free_blocks = false;
 };
@@ -69,13 +69,16 @@ class RotationTreatment {
 
   // ---- the step (its contact loop, solver/step.cpp) ----
 
-  // An attempt's start: T's rotation columns (ctx.loop.block_ts) for the treatments that change
-  // T inside the step, and the angles inside them. Others leave Shi's T.
-  virtual void start_step(const World&, StepContext&, RotationIterate&) const {}
+  // An attempt's start: T's rotation columns (terms.block_ts) for the treatments that change
+  // T inside the step, and the angles inside them. Others leave Shi's T. (`terms` is the
+  // loop's, which ctx.loop shows to everything that assembles: StepContext.)
+  virtual void start_step(const World&, const StepContext&, LoopTerms& /*terms*/,
+                          RotationIterate&) const {}
   // After a solve whose answer is d: T (and the rotating inertia's spins) follow the answer
   // where the treatment iterates them with the loop. Returns how many blocks were off.
-  virtual Followed follow_solve(const World&, Eigen::VectorXd& /*d*/, StepContext&,
-                                RotationIterate&, const SolveFollow&) const {
+  virtual Followed follow_solve(const World&, Eigen::VectorXd& /*d*/, const StepContext&,
+                                LoopTerms& /*terms*/, RotationIterate&,
+                                const SolveFollow&) const {
     return {};
   }
   // After the loop: the unknowns in d turned into (u0, v0, r0, ex, ey, gxy) where the
