@@ -19,42 +19,22 @@
 
 namespace dda {
 
-// How the block configuration is moved at the end of a step (paper Sections 2 and 3; the
-// scene names are in kRotationUpdateNames). Each is a RotationTreatment in a file of its own
-// (solver/rotation/treatment.hpp), found through one table (treatment_table.cpp).
+// How the block configuration is moved at the end of a step: one value per line of
+// solver/rotation/treatments.def, which says what each is. Each is a RotationTreatment in a
+// file of its own (solver/rotation/treatment.hpp), found through one table (treatment_for).
 enum class RotationUpdate {
-  Original,             // Shi: x += T d, strains added globally (paper Eqs. 2, 13)
-  SecondOrder,          // MacLaughlin and Sitar: Eq. 8 with cos r = 1 - r^2/2, sin r = r
-  PostAdjustment,       // Ke; Koo and Chern: Eq. 8 with the exact cos r, sin r
-  SinVariable,          // Cheng and Zhang: T' with sin r0 as unknown (Eqs. 9-12)
-  LocalFrame,           // Jiang and Zheng Sections 3-4, x = xc + R(r)(I + E^)(X - Xc)
-  LocalFrameAsPrinted,  // the same with Eq. 19 as printed (global strain on X - Xc)
-  FiniteRotation,       // local frame plus the secant rotation column in T
-  // The default: finite_rotation's step, but each deformable block placed by the map the
-  // step's T applied, F' = (I + r0 a + dE) F, its rotation and block-frame Hencky strain
-  // ln U taken from the polar decomposition F' = R(r) U, and its stress Kirchhoff's over its
-  // initial area (docs/large-strain.md).
-  FiniteRotationPolar,
-  // The paper's method as printed (Sections 3-4): local_frame with each step's strain
-  // increment turned into the block frame by the end-of-step angle r + r0 (Eq. 17, its sign
-  // corrected) instead of the mid-step angle, and Shi's inertia unless control.inertia
-  // asks for another (the paper keeps Shi's mass matrix). For reproducing its tables.
-  Paper,
+#define DDA_TREATMENT(value, name, treatment) value,
+#include "solver/rotation/treatments.def"
+#undef DDA_TREATMENT
 };
 
 using RotationUpdateName = EnumName<RotationUpdate>;
 
 // The scene names of the treatments (the contract of control.rotation_update).
 inline constexpr RotationUpdateName kRotationUpdateNames[] = {
-    {RotationUpdate::Original, "original"},
-    {RotationUpdate::SecondOrder, "second_order"},
-    {RotationUpdate::PostAdjustment, "post_adjustment"},
-    {RotationUpdate::SinVariable, "sin_variable"},
-    {RotationUpdate::LocalFrame, "local_frame"},
-    {RotationUpdate::LocalFrameAsPrinted, "local_frame_as_printed"},
-    {RotationUpdate::FiniteRotation, "finite_rotation"},
-    {RotationUpdate::FiniteRotationPolar, "finite_rotation_polar"},
-    {RotationUpdate::Paper, "paper"},
+#define DDA_TREATMENT(value, name, treatment) {RotationUpdate::value, name},
+#include "solver/rotation/treatments.def"
+#undef DDA_TREATMENT
 };
 
 inline std::string_view rotation_update_name(RotationUpdate u) {

@@ -1,6 +1,6 @@
 // The rotation treatments (paper Sections 2-4; the scene's control.rotation_update): each
-// one is a RotationTreatment in a file of its own under solver/rotation/, found through one
-// table (treatment_for, treatment_table.cpp). The step and the configuration update ask a
+// one is a RotationTreatment in a file of its own under solver/rotation/ and one line of the
+// one table, treatments.def (its enum value, its scene name, the function that returns it). The step and the configuration update ask a
 // treatment only through the verbs below, never which treatment it is.
 //
 // Two families share their rules (each a base class with a file of its own):

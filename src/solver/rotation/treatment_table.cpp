@@ -1,6 +1,5 @@
-// The table of rotation treatments: one line per treatment, naming the function in its own
-// file that returns it. A new treatment is its file and its line here (and its scene name,
-// RotationUpdate and kRotationUpdateNames in solver/scene.hpp).
+// The table of rotation treatments, made from solver/rotation/treatments.def: each line there
+// names the function in the treatment's own file that returns it.
 #include "solver/rotation/treatment.hpp"
 
 #include <cassert>
@@ -9,15 +8,9 @@
 
 namespace dda {
 
-const RotationTreatment& original_treatment();
-const RotationTreatment& second_order_treatment();
-const RotationTreatment& post_adjustment_treatment();
-const RotationTreatment& sin_variable_treatment();
-const RotationTreatment& local_frame_treatment();
-const RotationTreatment& local_frame_as_printed_treatment();
-const RotationTreatment& finite_rotation_treatment();
-const RotationTreatment& finite_rotation_polar_treatment();
-const RotationTreatment& paper_treatment();
+#define DDA_TREATMENT(value, name, treatment) const RotationTreatment& treatment();
+#include "solver/rotation/treatments.def"
+#undef DDA_TREATMENT
 
 namespace {
 
@@ -27,15 +20,9 @@ struct TableRow {
 };
 
 constexpr TableRow kTreatments[] = {
-    {RotationUpdate::Original, original_treatment},
-    {RotationUpdate::SecondOrder, second_order_treatment},
-    {RotationUpdate::PostAdjustment, post_adjustment_treatment},
-    {RotationUpdate::SinVariable, sin_variable_treatment},
-    {RotationUpdate::LocalFrame, local_frame_treatment},
-    {RotationUpdate::LocalFrameAsPrinted, local_frame_as_printed_treatment},
-    {RotationUpdate::FiniteRotation, finite_rotation_treatment},
-    {RotationUpdate::FiniteRotationPolar, finite_rotation_polar_treatment},
-    {RotationUpdate::Paper, paper_treatment},
+#define DDA_TREATMENT(value, name, treatment) {RotationUpdate::value, treatment},
+#include "solver/rotation/treatments.def"
+#undef DDA_TREATMENT
 };
 
 }  // namespace
