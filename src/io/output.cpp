@@ -1,6 +1,7 @@
 #include "io/output.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <charconv>
 #include <cstdio>
 #include <stdexcept>
@@ -39,6 +40,7 @@ constexpr const char* kHistoryHeader =
 
 // A contract (docs/output-format.md): these names, in this order (extend, do not rename).
 constexpr const char* kMonitorsHeader = "step,time,monitor,x,y,ux,uy,vx,vy";
+constexpr const char* kBoltsHeader = "step,time,bolt,force,plastic_extension,broken,length";
 
 std::string num(double x) { return format_full_precision(x); }
 
@@ -286,8 +288,8 @@ void remove_earlier_run(const fs::path& dir) {
     }
     earlier.push_back(path);
   };
-  for (const char* name : {"summary.json", "history.csv", "monitors.csv", "blocks.pvd",
-                           "contacts.pvd"}) {
+  for (const char* name : {"summary.json", "history.csv", "monitors.csv", "bolts.csv",
+                           "blocks.pvd", "contacts.pvd"}) {
     take(dir / name);
   }
   if (fs::exists(fs::symlink_status(dir / "vtk", ec)) && !fs::is_directory(dir / "vtk", ec)) {
@@ -322,6 +324,7 @@ OutputWriter::OutputWriter(std::filesystem::path dir, const Scene& scene)
   if (!scene.monitors.empty()) {
     monitors_.emplace(dir_ / "monitors.csv", std::string(kMonitorsHeader) + "\n");
   }
+  if (!scene.bolts.empty()) bolts_.emplace(dir_ / "bolts.csv", std::string(kBoltsHeader) + "\n");
 }
 
 void OutputWriter::record(const World& world) {
@@ -353,6 +356,7 @@ void OutputWriter::record(const World& world) {
   // written so far, and a write that fails leaves the file at the end of the last one.
   history_->commit();
   if (!world.monitors.empty()) record_monitors(world);
+  if (!world.bolts.empty()) record_bolts(world);
 
   const std::string name = frame_name(world.step);
   write_text_file((dir_ / name).string(), vtp_text(world));
@@ -392,7 +396,46 @@ void OutputWriter::record_monitors(const World& world) {
   monitors_->commit();
 }
 
+// One row per bolt: its axial force (tension positive), the plastic extension it has
+// yielded, whether it has broken, and the distance between its ends now.
+void OutputWriter::record_bolts(const World& world) {
+  for (std::size_t i = 0; i < world.bolts.size(); ++i) {
+    const Bolt& bolt = world.bolts[i];
+    const double length = (world.bolt_ends[2 * i + 1].current - world.bolt_ends[2 * i].current).norm();
+    bolts_->append(std::to_string(world.step));
+    bolts_->append(',');
+    bolts_->append(num(world.time));
+    bolts_->append(',');
+    bolts_->append(bolt.name);
+    bolts_->append(',');
+    bolts_->append(num(bolt.force));
+    bolts_->append(',');
+    bolts_->append(num(bolt.plastic_extension));
+    bolts_->append(bolt.broken ? ",1," : ",0,");
+    bolts_->append(num(length));
+    bolts_->append('\n');
+  }
+  bolts_->commit();
+}
+
 namespace {
+// The bolts at the end (empty without bolts): each one's force, yield and rupture.
+json bolts_json(const World& world) {
+  json out = json::array();
+  for (std::size_t i = 0; i < world.bolts.size(); ++i) {
+    const Bolt& b = world.bolts[i];
+    json entry = {{"name", b.name},
+                  {"force", b.force},
+                  {"plastic_extension", b.plastic_extension},
+                  {"yielding", !b.broken && std::isfinite(b.law.yield_force) &&
+                                   std::abs(b.force) >= b.law.yield_force},
+                  {"broken", b.broken}};
+    if (b.broken) entry["broken_at"] = b.broken_at;
+    out.push_back(entry);
+  }
+  return out;
+}
+
 // The stages entered (empty without stages): where each began and the bonds it formed.
 json stages_run_json(const World& world) {
   const StagePlan& plan = world.stages;
@@ -456,7 +499,7 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
     laws[j.name] = joint_law_name(j.law);
   }
   settings["joint_laws"] = laws;
-  const json summary = {
+  json summary = {
       {"scene", scene_.source},
       {"settings", settings},
       {"wall_time_s", stats.wall_time_s},
@@ -500,6 +543,8 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
       {"interrupted", stats.interrupted},
       {"blocks", blocks},
   };
+  // The bolts' end state: only for a scene that has bolts (as bolts.csv).
+  if (!world.bolts.empty()) summary["bolts"] = bolts_json(world);
   // Replace rather than throw on invalid UTF-8 (a scene path or message from the system).
   write_text_file((dir_ / "summary.json").string(),
                   summary.dump(2, ' ', false, json::error_handler_t::replace) + "\n");

@@ -39,9 +39,11 @@ class OutputWriter {
   std::filesystem::path dir_;
   const Scene& scene_;
   void record_monitors(const World& world);
+  void record_bolts(const World& world);
 
   std::optional<StreamedFile> history_;
   std::optional<StreamedFile> monitors_;  // open when the scene has monitors
+  std::optional<StreamedFile> bolts_;     // open when the scene has bolts
   std::vector<std::pair<double, std::string>> frames_;  // (time, relative file name)
   std::vector<std::pair<double, std::string>> contact_frames_;  // the same for contacts
 };

@@ -653,6 +653,60 @@ MonitorSpec read_monitor(const Field& f, const std::vector<BlockSpec>& blocks,
   return m;
 }
 
+// A bolt: a unique name, two points in two different blocks, not both fixed, an axial
+// stiffness, and optionally a pretension, a yield force (at least the pretension) and a
+// plastic extension at which it breaks (docs/scene-format.md, "bolts").
+BoltSpec read_bolt(const Field& f, const std::vector<BlockSpec>& blocks,
+                   const std::vector<BoltSpec>& earlier) {
+  f.expect_keys({"name", "from", "to", "stiffness", "pretension", "yield_force",
+                 "rupture_extension"});
+  BoltSpec bolt;
+  const Field name = f.member("name");
+  bolt.name = name.string();
+  if (bolt.name.empty()) name.fail("is empty; give each bolt a name");
+  if (bolt.name.find_first_of(",\"\n\r") != std::string::npos) {
+    name.fail("contains a comma, quote or line break, which bolts.csv cannot hold");
+  }
+  for (const BoltSpec& e : earlier) {
+    if (e.name == bolt.name) {
+      name.fail(input::quoted_text(bolt.name) + " is already the name of another bolt");
+    }
+  }
+  const Field from = f.member("from");
+  const Field to = f.member("to");
+  bolt.from = within_limit(from, from.vec2("[x, y]"), input::kLargestCoordinate, "m");
+  bolt.to = within_limit(to, to.vec2("[x, y]"), input::kLargestCoordinate, "m");
+  if (!((bolt.to - bolt.from).norm() > 0.0)) to.fail("is the same point as \"from\": a bolt needs a length");
+  bolt.block_from = block_containing(from, bolt.from, blocks);
+  bolt.block_to = block_containing(to, bolt.to, blocks);
+  if (bolt.block_from == bolt.block_to) {
+    to.fail("lies in block " + std::to_string(bolt.block_to) + ", as \"from\" does: a bolt "
+            "must join two blocks (anchor it in a fixed block for the ground)");
+  }
+  if (blocks[static_cast<std::size_t>(bolt.block_from)].fixed &&
+      blocks[static_cast<std::size_t>(bolt.block_to)].fixed) {
+    f.fail("joins two fixed blocks (" + std::to_string(bolt.block_from) + " and " +
+           std::to_string(bolt.block_to) + "), which it cannot hold: put one end in a free block");
+  }
+  bolt.stiffness =
+      within_limit(f.member("stiffness"), positive_number(f.member("stiffness")),
+                   input::kLargestPenalty, "N/m");
+  if (auto g = f.optional_member("yield_force")) {
+    bolt.yield_force = within_limit(*g, positive_number(*g), input::kLargestForce, "N/m");
+  }
+  if (auto g = f.optional_member("pretension")) {
+    bolt.pretension = within_limit(*g, non_negative_number(*g), input::kLargestForce, "N/m");
+    if (bolt.pretension > bolt.yield_force) {
+      g->fail("is " + format_number(bolt.pretension) + " N/m, above the bolt's yield_force (" +
+              format_number(bolt.yield_force) + " N/m)");
+    }
+  }
+  if (auto g = f.optional_member("rupture_extension")) {
+    bolt.rupture_extension = within_limit(*g, positive_number(*g), input::kLargestCoordinate, "m");
+  }
+  return bolt;
+}
+
 // The water table: a phreatic line of at least two points with x strictly increasing (it is
 // a function of x), and the water's unit weight. Its points are coordinates (bounded as the
 // vertices are), and the pressure it can put on a joint, unit weight x (the line's highest
@@ -781,7 +835,7 @@ BaseMotion read_base_motion(const Field& f, const std::string& source) {
 Scene read_scene(const Field& root, const std::string& source) {
   root.expect_keys({"description", "gravity", "plane", "control", "materials",
                     "joint_materials", "blocks", "joints", "pins", "point_loads", "monitors",
-                    "stages", "water", "base_motion"});
+                    "bolts", "stages", "water", "base_motion"});
   Scene scene;
   scene.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
@@ -814,6 +868,11 @@ Scene read_scene(const Field& root, const std::string& source) {
   if (auto monitors = root.optional_member("monitors")) {
     for (const Field& m : monitors->elements(0, "")) {
       scene.monitors.push_back(read_monitor(m, scene.blocks, scene.monitors));
+    }
+  }
+  if (auto bolts = root.optional_member("bolts")) {
+    for (const Field& b : bolts->elements(0, "")) {
+      scene.bolts.push_back(read_bolt(b, scene.blocks, scene.bolts));
     }
   }
   if (auto water = root.optional_member("water")) scene.water = read_water(*water, scene.blocks);

@@ -57,6 +57,7 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
   led.damping_dissipation += step.damping_dissipation;
   led.friction_gain += step.friction_gain;
   book_plastic_blocks(world, step, led);
+  if (step.plastic_work != 0.0) led.plastic_dissipation += step.plastic_work;
   led.contact_energy = contact_energy(world, contacts, penalty);
   const EnergyTotals totals = scene_energy(world);
   led.remainder = totals.total() - led.initial_total - led.load_work - led.multiplier_work +

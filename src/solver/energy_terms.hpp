@@ -28,6 +28,9 @@ struct StepEnergy {
   double friction_dissipation = 0.0;  // sum over sliding contacts of max(0, -F . slip)
   double damping_dissipation = 0.0;   // implicit springs and strains, dynamic coefficient
   double friction_gain = 0.0;         // sum of max(0, F . slip): friction pushing forward
+  // Yielding bolts' plastic work, and the spring energy of a bolt that breaks (booked with
+  // the plastic blocks' plastic dissipation).
+  double plastic_work = 0.0;
   // Plastic blocks, before the step: their elastic energy, and their stress (xx, yy, zz,
   // xy) and total strain in the frame their material integrates in (the block frame for
   // the treatments that keep one, else global), for the plastic work.

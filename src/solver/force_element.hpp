@@ -29,10 +29,26 @@ struct ForceElement {
   // Adds the energy the element's springs hold now to `energy` (J/m); nullptr for an
   // element that stores none. (The blocks' strain energy is the account's own term.)
   void (*add_stored)(const World& world, double penalty, double& energy);
+  // An element whose stiffness depends on a mode the step's answer decides (a bolt that
+  // yields): its modes at an attempt's start, in the loop's terms; nullptr for none.
+  void (*start_modes)(const World& world, LoopTerms& terms);
+  // After a solve whose answer is d: the modes follow it; returns how many changed (the
+  // block terms are then assembled again and the step solved again); nullptr for none.
+  int (*follow_modes)(const World& world, const Eigen::VectorXd& d, const StepContext& ctx,
+                      LoopTerms& terms);
+  // An accepted step's change of the element's own state (before the configuration update,
+  // with the step's own T and modes); nullptr for an element with none.
+  void (*commit)(World& world, const Eigen::VectorXd& d, const StepContext& ctx);
 };
 
+// The verbs above over every element of the table.
+void start_element_modes(const World& world, LoopTerms& terms);
+int follow_element_modes(const World& world, const Eigen::VectorXd& d, const StepContext& ctx,
+                         LoopTerms& terms);
+void commit_elements(World& world, const Eigen::VectorXd& d, const StepContext& ctx);
+
 // The elements in the order the step assembles and books them: the blocks' own terms
-// (inertia, elasticity, weight, initial stress), pins, point loads and joint water.
+// (inertia, elasticity, weight, initial stress), pins, point loads and joint water, bolts.
 std::span<const ForceElement> force_elements();
 
 }  // namespace dda

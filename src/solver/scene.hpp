@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -157,6 +158,20 @@ struct PointLoadSpec {
   int block = -1;
 };
 
+// A rock bolt or cable (docs/scene-format.md, "bolts"): an axial bar from material point
+// `from` of one block to `to` of another (a fixed block is the ground it is anchored in).
+struct BoltSpec {
+  std::string name;
+  Vec2 from = Vec2::Zero();
+  Vec2 to = Vec2::Zero();
+  int block_from = -1;  // resolved by the reader: the blocks containing the points
+  int block_to = -1;
+  double stiffness = 0.0;   // N/m per metre of thickness
+  double pretension = 0.0;  // N/m, the force at installation
+  double yield_force = std::numeric_limits<double>::infinity();        // N/m
+  double rupture_extension = std::numeric_limits<double>::infinity();  // m of plastic extension
+};
+
 // Shi's usual allowed penetration, as a share of w0 (half the larger side of the bounding
 // box of all blocks at the start): ControlSettings::allowed_penetration's "auto".
 inline constexpr double kAutoPenetrationShare = 4e-4;
@@ -257,6 +272,7 @@ struct Scene {
   std::vector<PinSpec> pins;
   std::vector<PointLoadSpec> point_loads;
   std::vector<MonitorSpec> monitors;
+  std::vector<BoltSpec> bolts;
   // Joint water pressure from a phreatic line (docs/scene-format.md, "water"); none if unset.
   std::optional<WaterTable> water;
   // Base shaking: the fixed blocks' prescribed acceleration (docs/scene-format.md,

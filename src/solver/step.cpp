@@ -18,6 +18,7 @@
 #include "solver/contact_detection.hpp"
 #include "solver/contact_newton.hpp"
 #include "solver/energy.hpp"
+#include "solver/force_element.hpp"
 #include "solver/material_coupling.hpp"
 #include "solver/rotation/rotation_columns.hpp"
 #include "solver/rotation/treatment.hpp"
@@ -269,7 +270,7 @@ void follow_factor(const World& world, StepWorkspace& ws) {
 
 // What both contact solvers set up before their first solve: the treatment's start (the
 // rotation columns of the treatments that change T, and their angles), the plastic blocks'
-// elastic predictor, the rotating inertia's spins.
+// elastic predictor, the rotating inertia's spins, the force elements' modes (bolts).
 struct LoopStart {
   RotationIterate rotation;
   bool plastic = false;
@@ -283,6 +284,7 @@ LoopStart start_loop(const World& world, const StepContext& ctx, LoopTerms& term
   if (start.plastic) terms.material_terms = start_linearization(world);
   start.spinning = has_rotating_inertia(world, ctx);
   if (start.spinning) start_spins(world, ctx, terms);
+  start_element_modes(world, terms);
   return start;
 }
 
@@ -337,19 +339,21 @@ struct OpenCloseIterate {
   ContactUpdate contacts;      // modes changed; contacts held closed in tension
   int rotation_moved = 0;      // blocks whose T or spin is off the answer (follow_solve)
   MaterialFollowUp materials;  // plastic blocks whose Newton iteration has not converged
+  int element_modes = 0;       // force elements (bolts) whose mode changed
   int augmented = 0;           // contacts whose multiplier grew after this solve
 
   // The answer agrees with the system it was solved from: no contact changed mode or is held
-  // in tension, and T, the spins and the plastic blocks' linearisation follow it.
+  // in tension, and T, the spins, the plastic blocks' linearisation and the bolts' modes
+  // follow it.
   bool settled() const {
     return contacts.changed == 0 && contacts.held_in_tension == 0 && rotation_moved == 0 &&
-           materials.unconverged == 0;
+           materials.unconverged == 0 && element_modes == 0;
   }
   // The next solve would see another system. (A contact held in tension changes none: the
   // loop stops there, and its verdict cuts the step.)
   bool system_changed() const {
     return contacts.changed > 0 || rotation_moved > 0 || materials.unconverged > 0 ||
-           augmented > 0;
+           element_modes > 0 || augmented > 0;
   }
   // The verdict on the iterate the loop ended with: accepted when settled with no multiplier
   // grown after its solve, else cut.
@@ -402,7 +406,8 @@ LoopResult solve_open_close(World& world, StepWorkspace& ws, const StepContext& 
         return r;
       }
     }
-    if (it.rotation_moved > 0 || it.materials.unconverged > 0) {
+    it.element_modes = follow_element_modes(world, r.d, ctx, terms);
+    if (it.rotation_moved > 0 || it.materials.unconverged > 0 || it.element_modes > 0) {
       assemble(world, ctx, ws.block_terms);
       followed_spins_assembled = spinning;
     }
@@ -505,9 +510,11 @@ struct NewtonFollowUp {
   int rotation_moved = 0;      // blocks whose T or spin is off the answer (follow_solve)
   int points_moved = 0;        // sliding contacts whose measure point moved
   MaterialFollowUp materials;  // plastic blocks whose Newton iteration has not converged
+  int element_modes = 0;       // force elements (bolts) whose mode changed
 
   bool agrees() const {
-    return rotation_moved == 0 && points_moved == 0 && materials.unconverged == 0;
+    return rotation_moved == 0 && points_moved == 0 && materials.unconverged == 0 &&
+           element_modes == 0;
   }
 };
 
@@ -638,7 +645,9 @@ LoopResult solve_contact_newton(World& world, StepWorkspace& ws, const StepConte
           return r;
         }
       }
-      if (follow.rotation_moved > 0 || follow.materials.unconverged > 0) {
+      follow.element_modes = follow_element_modes(world, it.d, ctx, terms);
+      if (follow.rotation_moved > 0 || follow.materials.unconverged > 0 ||
+          follow.element_modes > 0) {
         assemble(world, ctx, ws.block_terms);
         it.followed_spins_assembled = spinning;
       }
@@ -775,6 +784,7 @@ void commit_step(World& world, const Eigen::VectorXd& d,
                  const StepContext& ctx, int iterations, RunStats& stats, StageClock& clock,
                  StepEnergy& energy_terms) {
   energy_terms = step_energy(world, world.contacts, d, ctx);
+  commit_elements(world, d, ctx);
   update_configuration(world, d, &ctx);
   update_stresses(world);
   update_velocities(world, d, ctx);

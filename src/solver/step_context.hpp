@@ -7,6 +7,7 @@
 
 #include "kinematics/block_matrices.hpp"
 #include "kinematics/rotating_inertia.hpp"
+#include "solver/elements/bolt_law.hpp"
 #include "solver/joint_water.hpp"
 
 namespace dda {
@@ -36,6 +37,9 @@ struct LoopTerms {
   // (by block index): the spin its quadratic velocity terms are taken at. Empty: no such
   // terms (Shi's inertia, or a static step).
   std::vector<Spin> spins;
+  // Each bolt's mode (by bolt index; solver/elements/bolt_law.hpp): elastic or yielding,
+  // followed after each solve like the plastic blocks' linearisation. Empty: no bolts.
+  std::vector<BoltMode> bolt_modes;
 };
 
 // The settings of one attempt of a step: fixed from its start to its end.

@@ -103,6 +103,16 @@ World make_world(const Scene& scene) {
   for (const PointLoadSpec& load : scene.point_loads) {
     world.loads.push_back(PointLoad{load.block, load.point, load.point, load.force});
   }
+  for (const BoltSpec& s : scene.bolts) {
+    Bolt bolt;
+    bolt.name = s.name;
+    bolt.law = BoltLaw{s.stiffness, s.yield_force};
+    bolt.rupture_extension = s.rupture_extension;
+    bolt.force = s.pretension;
+    world.bolts.push_back(bolt);
+    world.bolt_ends.push_back(BoltEnd{s.block_from, s.from, s.from});
+    world.bolt_ends.push_back(BoltEnd{s.block_to, s.to, s.to});
+  }
   world.water = scene.water;
   world.base_motion = scene.base_motion;
   for (const MonitorSpec& m : scene.monitors) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "kinematics/polygon.hpp"
 #include "kinematics/types.hpp"
 #include "materials/material_types.hpp"
+#include "solver/elements/bolt_law.hpp"
 #include "solver/joint_water.hpp"
 #include "solver/scene.hpp"
 #include "solver/stages.hpp"
@@ -124,6 +126,29 @@ struct Monitor {
   Vec2 current = Vec2::Zero();  // where it is now
 };
 
+// One end of a bolt (Bolt): a material point carried with its block like a load.
+struct BoltEnd {
+  int block = -1;
+  Vec2 initial = Vec2::Zero();  // the material point at the start
+  Vec2 current = Vec2::Zero();  // where it is now
+};
+
+// A rock bolt or cable (scene "bolts"; solver/elements/bolt_element.hpp): an axial bar
+// between two material points, World::bolt_ends[2 i] (end a) and [2 i + 1] (end b), with
+// the law of solver/elements/bolt_law.hpp. Its force acts along the line between its ends
+// at each step's start.
+struct Bolt {
+  std::string name;
+  BoltLaw law;
+  // The plastic extension (m, summed over the steps whatever its sign) at which the bar
+  // breaks; infinity: never.
+  double rupture_extension = std::numeric_limits<double>::infinity();
+  double force = 0.0;              // axial force now, N/m, tension positive
+  double plastic_extension = 0.0;  // summed |dl_p| so far, m
+  bool broken = false;             // broken bars carry nothing from the step they broke in
+  double broken_at = 0.0;          // s: the time of the step it broke in
+};
+
 // The energy account's running sums since the start of the run (J per metre of thickness;
 // solver/energy.hpp, docs/energy-balance.md).
 struct EnergyLedger {
@@ -132,7 +157,7 @@ struct EnergyLedger {
   // force p s each closed contact adds to its spring, on the contact's normal motion.
   double multiplier_work = 0.0;
   double friction_dissipation = 0.0;  // by sliding contacts (never negative)
-  double plastic_dissipation = 0.0;   // by plastic blocks' plastic strain
+  double plastic_dissipation = 0.0;   // by plastic blocks' plastic strain and yielding bolts
   double damping_dissipation = 0.0;   // by the implicit time integration and the dynamic coefficient
   double friction_gain = 0.0;         // friction work that pushed forward (part of the remainder)
   double contact_energy = 0.0;        // stored in contact and pin springs after the last step
@@ -170,6 +195,8 @@ struct World {
   std::vector<Pin> pins;
   std::vector<PointLoad> loads;
   std::vector<Monitor> monitors;
+  std::vector<Bolt> bolts;
+  std::vector<BoltEnd> bolt_ends;  // two per bolt: a, b
   // Joint water pressure (solver/joint_water.hpp); the forces it puts on the blocks are the
   // step's (StepContext::water_forces, from present_water_forces).
   std::optional<WaterTable> water;

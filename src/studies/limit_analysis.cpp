@@ -77,6 +77,23 @@ class Program {
     // step's detection) and its present faces.
     for (const BlockForce& f : present_water_forces(world)) dead_load(f.block, f.point, f.force);
     for (const PointLoad& l : world.loads) dead_load(l.block, l.current, l.force);
+    // Bolts: at collapse a bolt that yields carries its capacity, pulling its two ends
+    // towards each other along the line between them (the tension of limit-equilibrium
+    // support design); one without a yield force carries the force it has now; a broken one
+    // none. A mechanism that would shorten a bolt is thus credited with its capacity too:
+    // an upper bound on what the bolt gives.
+    for (std::size_t i = 0; i < world.bolts.size(); ++i) {
+      const Bolt& bolt = world.bolts[i];
+      if (bolt.broken) continue;
+      const BoltEnd& a = world.bolt_ends[2 * i];
+      const BoltEnd& b = world.bolt_ends[2 * i + 1];
+      const Vec2 axis = b.current - a.current;
+      if (!(axis.norm() > 0.0)) continue;
+      const double tension = std::isfinite(bolt.law.yield_force) ? bolt.law.yield_force : bolt.force;
+      const Vec2 pull = tension * axis / axis.norm();
+      dead_load(a.block, a.current, pull);
+      dead_load(b.block, b.current, -pull);
+    }
   }
 
   // Whether F is admissible: no violation left (the weights are scaled to at most 1, so the

@@ -20,15 +20,17 @@ double rad(double deg) { return deg * kPi / 180.0; }
 // resisting / driving ratio.
 double plane_factor(const PlaneBlock& b) {
   const double psi = rad(b.dip);
-  const double normal = b.weight * std::cos(psi) - b.uplift - b.crack_push * std::sin(psi);
-  const double driving = b.weight * std::sin(psi) + b.crack_push * std::cos(psi);
+  const double normal =
+      b.weight * std::cos(psi) - b.uplift - b.crack_push * std::sin(psi) + b.bolt_normal;
+  const double driving = b.weight * std::sin(psi) + b.crack_push * std::cos(psi) - b.bolt_along;
   return (b.cohesion * b.length + normal * std::tan(rad(b.friction_angle))) / driving;
 }
 
 double plane_out_of_balance(const PlaneBlock& b, double factor) {
   const double psi = rad(b.dip);
-  const double normal = b.weight * std::cos(psi) - b.uplift - b.crack_push * std::sin(psi);
-  const double driving = b.weight * std::sin(psi) + b.crack_push * std::cos(psi);
+  const double normal =
+      b.weight * std::cos(psi) - b.uplift - b.crack_push * std::sin(psi) + b.bolt_normal;
+  const double driving = b.weight * std::sin(psi) + b.crack_push * std::cos(psi) - b.bolt_along;
   return driving - (b.cohesion * b.length + normal * std::tan(rad(b.friction_angle))) / factor;
 }
 

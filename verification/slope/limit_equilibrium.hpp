@@ -22,8 +22,13 @@ struct PlaneBlock {
   double length = 0.0;         // A, m: the plane's length under the block
   double uplift = 0.0;         // U, kN/m, normal to the plane
   double crack_push = 0.0;     // V, kN/m, horizontal, towards the face
+  // A bolt's tension T (kN/m) as its two components: T_n pressing the block onto the plane,
+  // T_s up the plane (Hoek & Bray's T sin and T cos of the bolt's angle, written by the
+  // bolt's direction so that no convention for the angle is needed).
+  double bolt_normal = 0.0;
+  double bolt_along = 0.0;
 };
-// (c A + (W cos psi - U - V sin psi) tan phi) / (W sin psi + V cos psi).
+// (c A + (W cos psi - U - V sin psi + T_n) tan phi) / (W sin psi + V cos psi - T_s).
 double plane_factor(const PlaneBlock& b);
 // The force (kN/m) along the plane that the block lacks at reduced strengths F (driving minus
 // reduced resistance; > 0 beyond the factor of safety).

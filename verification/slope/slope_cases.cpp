@@ -1,6 +1,7 @@
 #include "slope_cases.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <numeric>
 
@@ -161,6 +162,53 @@ SlopeCase hoek_bray_case(const std::string& name, double water_depth, double pub
   return c;
 }
 
+// ---- case 2b: the dry tension-crack slope held by a tensioned bolt ----
+// One bolt (per metre of slope: a row of bolts at 1 m spacing) from the face into the rock
+// under the plane, dipping `bolt_dip` below the horizontal, whose tension T brings the limit-
+// equilibrium factor to `target`: F = (c A + (N + T_n) tan phi) / (D - T_s) solved for T.
+// The bolt is tensioned to T and yields at T (a cable anchor held at its working load), so
+// its force is T while the block slides: the limit-equilibrium free body's.
+SlopeCase bolted_hoek_bray_case(double target, double bolt_dip, double a_det) {
+  const TensionCrackSlope s = hoek_bray_slope(0.0);
+  PlaneBlock pb = tension_crack_block(s);
+  const double psi = rad(pb.dip), beta = rad(bolt_dip);
+  // The bolt's direction from the block to the anchor: into the slope (+x) and down.
+  const P e{std::cos(beta), -std::sin(beta)};
+  const double along = e.x * std::cos(psi) + e.y * std::sin(psi);   // up the plane
+  const double normal = e.x * std::sin(psi) - e.y * std::cos(psi);  // into the plane
+  const double tan_phi = std::tan(rad(pb.friction_angle));
+  const double n0 = pb.weight * std::cos(psi), d0 = pb.weight * std::sin(psi);
+  const double tension = (target * d0 - pb.cohesion * pb.length - n0 * tan_phi) /
+                         (normal * tan_phi + target * along);
+  pb.bolt_normal = tension * normal;
+  pb.bolt_along = tension * along;
+  SlopeCase c = hoek_bray_case("hoek_bray_bolted", 0.0, 0.0, a_det);
+  c.le_factor = plane_factor(pb);
+  c.resolution = resolution_of([&](double f) { return plane_out_of_balance(pb, f); }, c.le_factor,
+                               pb.weight, a_det);
+  json scene = json::parse(c.scene);
+  // From the middle of the face, 20 m along the bolt: through the plane into block 0.
+  const double h = s.height, xcrest = h / std::tan(rad(s.face_dip));
+  const P from{0.5 * xcrest + 0.5, 0.5 * h};
+  const P to{from.x + 20.0 * e.x, from.y + 20.0 * e.y};
+  const double t_newton = tension * 1e3;
+  scene["bolts"] = {{{"name", "row"},
+                     {"from", {from.x, from.y}},
+                     {"to", {to.x, to.y}},
+                     // 200 GPa steel, 5 cm^2 per metre of slope, 20 m free: E A / L.
+                     {"stiffness", 200e9 * 5e-4 / 20.0},
+                     {"pretension", t_newton},
+                     {"yield_force", t_newton}}};
+  c.scene = scene.dump();
+  char title[160];
+  std::snprintf(title, sizeof title,
+                "Hoek & Bray tension crack, dry, bolted: T = %.0f kN/m at %.0f deg below the "
+                "horizontal, for F = %.2f",
+                tension, bolt_dip, target);
+  c.title = title;
+  return c;
+}
+
 // ---- case 3: active-passive wedge (Wyllie & Mah 2004, ch. 7) ----
 // The kink K at the origin; the upper plane at 50 degrees, the lower at 10. The vertical
 // interface meets the upper plane 1 m above K (at K2), not at K: a rigid upper wedge whose
@@ -315,6 +363,8 @@ std::vector<SlopeCase> all_cases(double a_det) {
   cases.back().in_smoke = true;
   cases.push_back(hoek_bray_case("hoek_bray_half", 7.0, 1.128, a_det));
   cases.push_back(hoek_bray_case("hoek_bray_full", 14.0, 0.930, a_det));
+  // No published value: the closed form only.
+  cases.push_back(bolted_hoek_bray_case(1.5, 20.0, a_det));
   cases.push_back(wedge_case("wedge_smooth", 0.0, 1.000, a_det));
   cases.push_back(wedge_case("wedge_rough", 30.0, 1.147, a_det));
   cases.push_back(topple_case(a_det));

@@ -129,7 +129,8 @@ void book_blocks(const World& world, const Eigen::VectorXd& d, const StepContext
 }  // namespace
 
 // The blocks' own terms: inertia, elasticity, weight, initial stress.
-const ForceElement kBlockElement{assemble_blocks, book_blocks, nullptr};
+const ForceElement kBlockElement{assemble_blocks, book_blocks, nullptr, nullptr, nullptr,
+                                 nullptr};
 
 double block_strain_energy(const World& world, const Block& b) {
   // Over the area the stress acts over (stress_area: the initial one under

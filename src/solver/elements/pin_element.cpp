@@ -37,6 +37,7 @@ void add_pin_energy(const World& world, double penalty, double& e) {
 }  // namespace
 
 // Pins: a spring of the penalty's stiffness to each anchor.
-const ForceElement kPinElement{assemble_pins, book_pins, add_pin_energy};
+const ForceElement kPinElement{assemble_pins, book_pins, add_pin_energy, nullptr, nullptr,
+                               nullptr};
 
 }  // namespace dda

@@ -46,6 +46,7 @@ void book_point_forces(const World& world, const Eigen::VectorXd& d, const StepC
 }  // namespace
 
 // Point loads and joint water.
-const ForceElement kPointForceElement{assemble_point_forces, book_point_forces, nullptr};
+const ForceElement kPointForceElement{assemble_point_forces, book_point_forces, nullptr,
+                                      nullptr, nullptr, nullptr};
 
 }  // namespace dda

@@ -12,7 +12,7 @@ inline Vec6 increments_of(const Block& b, const Eigen::VectorXd& d) {
   return d.segment<6>(b.first_dof);
 }
 
-// The material points that ride on blocks (pins, point loads, monitors: each has `block`,
+// The material points that ride on blocks (pins, point loads, monitors, bolt ends: each has `block`,
 // `initial` and `current`): every one on a free block set to where(block, point).
 template <class Where>
 void move_carried_points(World& world, Where where) {
@@ -25,6 +25,7 @@ void move_carried_points(World& world, Where where) {
   move(world.pins);
   move(world.loads);
   move(world.monitors);
+  move(world.bolt_ends);
 }
 
 }  // namespace dda
