@@ -134,7 +134,8 @@ TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the plan
   // Each about 0.2 s in the release build (rigid blocks; 12 trials on 2 threads).
   const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
   for (const char* name : {"planar_c10", "planar_uplift", "planar_seismic", "hoek_bray_dry", "hoek_bray_half",
-                           "hoek_bray_full", "hoek_bray_bolted", "wedge_smooth", "wedge_rough"}) {
+                           "hoek_bray_full", "hoek_bray_bolted", "hoek_bray_passive_bolt",
+                           "wedge_smooth", "wedge_rough"}) {
     const SlopeCase& c = find_case(cases, name);
     const CaseResult r = run_case(c, RunOptions{}, {});
     INFO(name << ": DDA " << r.factor << " in [" << r.last_stable << ", " << r.first_failing
@@ -154,7 +155,8 @@ TEST_CASE("the limit-equilibrium cases' factors do not move with dt (/5, x5) or 
   // one step of the search's final bisection (a third of its 0.01 bracket): a verdict that
   // flipped at one trial would move the factor by that much, and no less.
   const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
-  for (const char* name : {"planar_c10", "hoek_bray_half", "hoek_bray_bolted", "wedge_rough"}) {
+  for (const char* name :
+       {"planar_c10", "hoek_bray_half", "hoek_bray_bolted", "hoek_bray_passive_bolt", "wedge_rough"}) {
     const SlopeCase& c = find_case(cases, name);
     const CaseResult own = run_case(c, RunOptions{}, {});
     REQUIRE(own.found);
