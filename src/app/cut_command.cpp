@@ -96,6 +96,7 @@ void print_statistics(const Model& model, const CutModel& cut, const CutScene& s
     std::cerr << "dda: cut: joint material \"" << name
               << "\" left out of the scene: no pair of blocks shares an edge of its joints\n";
   }
+  for (const std::string& line : scene.bolts_left_out) std::cerr << "dda: cut: bolt pattern " << line << "\n";
 }
 
 // SIGINT or SIGTERM before the cut or while the scene is written: it stops at the next
@@ -124,7 +125,7 @@ int cut_command(const std::string& model_path, const std::string& out_path) {
   // ends it at once.
   exit_at_once_on_interrupt("dda: cut interrupted while cutting; nothing written\n");
   const CutModel cut = cut_model(model.spec);
-  const CutScene scene = cut_scene(model, cut);
+  const CutScene scene = cut_scene(model, cut, out_path);
   const std::string text = scene_text(scene.scene);
   exit_at_once_on_interrupt(nullptr);
   write_text_file(out_path, text);
@@ -135,8 +136,20 @@ int cut_command(const std::string& model_path, const std::string& out_path) {
     const Scene check = parse_scene_text(text, out_path);
     if (!check.warnings.empty()) throw InputError(check.warnings.front());
   } catch (const InputError& e) {
+    // A key the model carries into the scene (a pin, a bolt, a phreatic line) that does not
+    // fit the cut's blocks is the model's error at the same place.
+    const std::string what = e.what();
+    const std::string prefix = out_path + ": ";
+    if (what.rfind(prefix, 0) == 0) {
+      const std::string place = what.substr(prefix.size());
+      for (std::string_view key : kKeysInBlocks) {
+        if (place.rfind(std::string(key), 0) == 0) {
+          throw InputError(model_path + ": " + place + " (on the blocks of the cut)");
+        }
+      }
+    }
     throw InputError(model_path + ": the cut gives a scene that dda run does not accept as it "
-                     "is (" + e.what() + "); a larger min_block_area may help");
+                     "is (" + what + "); a larger min_block_area may help");
   }
   print_statistics(model, cut, scene, out_path);
   if (!scene_is_file) {

@@ -1,11 +1,19 @@
 #include "io/cut_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <set>
+#include <string_view>
+
+#include "io/input_error.hpp"
+#include "io/json_input.hpp"
+#include "kinematics/polygon.hpp"
 
 namespace dda {
 namespace {
 
+namespace fs = std::filesystem;
 using ordered_json = nlohmann::ordered_json;
 
 ordered_json block_json(const Polygon& vertices, const std::string& material, bool fixed) {
@@ -54,9 +62,65 @@ std::string layout(const ordered_json& value, const std::string& indent) {
   return text + "\n" + indent + "]";
 }
 
+// The first block (in order) containing p, its boundary included, as the scene reader finds
+// it; -1 when none does.
+int block_at(const CutModel& cut, const Vec2& p) {
+  for (std::size_t i = 0; i < cut.cut.blocks.size(); ++i) {
+    if (contains_point(cut.cut.blocks[i], p)) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// The scene bolts of a model's bolt patterns: a head every spacing along each face (the first
+// at half a spacing), 1 mm inside the rock along the bolt (a head exactly on the face could
+// round to outside its block), the far end `length` beyond. A bolt whose two ends lie in one
+// block, or in two fixed blocks, holds nothing and is left out (counted in `left_out`); a far
+// end outside every block is the model's error.
+ordered_json pattern_bolts(const Model& model, const CutModel& cut, std::vector<std::string>& left_out) {
+  ordered_json bolts = ordered_json::array();
+  for (std::size_t k = 0; k < model.bolt_patterns.size(); ++k) {
+    const BoltPattern& p = model.bolt_patterns[k];
+    const Vec2 along = p.face_to - p.face_from;
+    const double face_length = along.norm();
+    const double inset = std::min(1e-3, 1e-3 * p.length);
+    int skipped = 0, made = 0;
+    for (double s = 0.5 * p.spacing; s <= face_length; s += p.spacing) {
+      const Vec2 head = p.face_from + (s / face_length) * along + inset * p.direction;
+      const Vec2 end = head + p.length * p.direction;
+      const int a = block_at(cut, head), b = block_at(cut, end);
+      const std::string name = p.name + " " + std::to_string(made + skipped + 1);
+      if (a < 0 || b < 0) {
+        throw InputError(model.source + ": bolt_patterns[" + std::to_string(k) + "]: bolt \"" +
+                         name + "\" has its " + (a < 0 ? "head" : "far end") + " outside every block of the cut (at " +
+                         input::format_number((a < 0 ? head : end).x()) + ", " +
+                         input::format_number((a < 0 ? head : end).y()) + "): shorten the bolts or move the face");
+      }
+      const auto fixed = [&cut](int i) { return cut.fixed[static_cast<std::size_t>(i)]; };
+      if (a == b || (fixed(a) && fixed(b))) {
+        ++skipped;
+        continue;
+      }
+      ++made;
+      ordered_json bolt = {{"name", name},
+                           {"from", {head.x(), head.y()}},
+                           {"to", {end.x(), end.y()}},
+                           {"stiffness", p.stiffness}};
+      if (p.pretension > 0.0) bolt["pretension"] = p.pretension;
+      if (p.yield_force) bolt["yield_force"] = *p.yield_force;
+      if (p.rupture_extension) bolt["rupture_extension"] = *p.rupture_extension;
+      bolts.push_back(bolt);
+    }
+    if (skipped > 0) {
+      left_out.push_back(p.name + ": " + std::to_string(skipped) + " of " + std::to_string(made + skipped) +
+                         " bolts left out (both ends in one block, or in fixed rock: nothing to hold)");
+    }
+  }
+  return bolts;
+}
+
 }  // namespace
 
-CutScene cut_scene(const Model& model, const CutModel& cut) {
+CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& scene_path) {
   CutScene out;
   const nlohmann::json& settings = model.scene_settings;
   ordered_json& scene = out.scene;
@@ -88,8 +152,34 @@ CutScene cut_scene(const Model& model, const CutModel& cut) {
     joints.push_back({{"blocks", {j.a, j.b}}, {"material", j.joint_material}});
   }
   if (!joints.empty()) scene["joints"] = joints;
-  // Stages (e.g. a static consolidation with gravity ramped up, for dda fos) are copied as
-  // the model gives them; the model reader has checked them as a scene's.
+  // What the study needs beside the blocks, as the model gives it: the keys that place
+  // something in the blocks are checked when dda cut reads the scene back, the others (base
+  // shaking, stages: e.g. the static consolidation dda fos starts from) were checked by the
+  // model reader as a scene's.
+  for (std::string_view key : kKeysInBlocks) {
+    const std::string name(key);
+    if (settings.contains(name)) scene[name] = ordered_json(settings.at(name));
+  }
+  if (!model.bolt_patterns.empty()) {
+    // The patterns' bolts after those the model lists one by one.
+    ordered_json bolts = scene.contains("bolts") ? scene["bolts"] : ordered_json::array();
+    for (const ordered_json& b : pattern_bolts(model, cut, out.bolts_left_out)) bolts.push_back(b);
+    if (!bolts.empty()) scene["bolts"] = bolts;
+  }
+  if (settings.contains("base_motion")) {
+    ordered_json motion = ordered_json(settings.at("base_motion"));
+    if (!scene_path.empty() && motion.contains("record") && motion["record"].is_string()) {
+      // The scene reader reads a record relative to the scene's directory, the model's
+      // relative to the model's: the same file, named from where the scene is.
+      const fs::path record(motion["record"].get<std::string>());
+      if (record.is_relative()) {
+        const fs::path file = fs::absolute(fs::path(model.source).parent_path() / record);
+        const fs::path scene_dir = fs::absolute(fs::path(scene_path)).parent_path();
+        motion["record"] = file.lexically_normal().lexically_relative(scene_dir.lexically_normal()).string();
+      }
+    }
+    scene["base_motion"] = motion;
+  }
   if (settings.contains("stages")) scene["stages"] = ordered_json(settings.at("stages"));
   return out;
 }

@@ -17,12 +17,18 @@ struct CutScene {
   // Joint materials of the model that no pair of blocks uses: left out of the scene, where
   // the scene reader would warn about them (docs/scene-format.md, joint_materials).
   std::vector<std::string> unused_joint_materials;
+  // Bolt patterns some of whose bolts hold nothing (both ends in one block or in fixed rock):
+  // one line each, for a note on stderr.
+  std::vector<std::string> bolts_left_out;
 };
 
 // The scene: description (the model's, or one naming the model), gravity, plane, control,
 // materials, joint_materials ("default" and those used), blocks (vertices, material, fixed
-// when fixed) and joints (the pairs of a non-default joint material).
-CutScene cut_scene(const Model& model, const CutModel& cut);
+// when fixed) and joints (the pairs of a non-default joint material), then what the model
+// carries of pins, point_loads, monitors, bolts, water, base_motion and stages, as given.
+// `scene_path`: where the scene will be written; a base_motion record the model names
+// relative to itself is named relative to it (empty: left as given).
+CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& scene_path = "");
 
 // The scene's text: objects indented by 2, one key a line; each block and each joint on
 // one line; numbers as the shortest text that reads back as the same double.

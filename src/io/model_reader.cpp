@@ -26,8 +26,9 @@ using input::non_negative_number;
 using input::positive_number;
 using input::read_polygon;
 
-constexpr std::string_view kSceneKeys[] = {"description", "gravity", "plane",    "control",
-                                           "materials",   "joint_materials", "stages"};
+constexpr std::string_view kSceneKeys[] = {"description",     "gravity", "plane",      "control",
+                                           "materials",       "joint_materials", "stages",
+                                           "base_motion"};
 
 // Caps on the traces a set may draw, so that a spacing or trace length given in the wrong
 // unit is an error at its key rather than a cut that runs out of memory. A cut of 100 000
@@ -63,7 +64,9 @@ double estimated_crossings(const std::vector<JointSetModel>& sets, double area) 
 
 // The model's scene keys as a one-block scene, read by the scene reader under the model's
 // name: an error in them is reported at its place in the model (the keys are top-level in
-// both). The block is a unit triangle of the first material; only the names are used.
+// both). The block is a unit triangle of the first material; only the names are used. The
+// keys that place things in the blocks (kKeysInBlocks) are kept too, for the cut's scene,
+// and checked there, on the cut's blocks (dda cut reads its scene back).
 Scene read_scene_settings(const Field& root, const std::string& source,
                           nlohmann::json& settings) {
   settings = nlohmann::json::object();
@@ -71,6 +74,9 @@ Scene read_scene_settings(const Field& root, const std::string& source,
     if (root.has(key)) settings[std::string(key)] = root.value().at(std::string(key));
   }
   nlohmann::json probe = settings;
+  for (std::string_view key : kKeysInBlocks) {
+    if (root.has(key)) settings[std::string(key)] = root.value().at(std::string(key));
+  }
   std::string first_material;
   if (root.has("materials") && root.member("materials").value().is_object() &&
       !root.member("materials").value().empty()) {
@@ -208,10 +214,90 @@ FixedModel read_fixed(const Field& f, std::size_t domain_edges) {
   return fixed;
 }
 
+// A bolt pattern: a name, a face (two points whose segment lies on the domain's boundary, the
+// rock on one side of it), a spacing that fits at least one bolt on it, a length, a dip in
+// [0, 90] degrees below the horizontal (90 on a horizontal face: straight down), and a
+// scene bolt's law.
+BoltPattern read_bolt_pattern(const Field& f, const Polygon& domain,
+                              const std::vector<BoltPattern>& earlier) {
+  f.expect_keys({"name", "face", "spacing", "length", "dip", "stiffness", "pretension",
+                 "yield_force", "rupture_extension"});
+  BoltPattern p;
+  const Field name = f.member("name");
+  p.name = name.string();
+  if (p.name.empty()) name.fail("is empty; give each bolt pattern a name");
+  if (p.name.find_first_of(",\"\n\r") != std::string::npos) {
+    name.fail("contains a comma, quote or line break, which bolts.csv cannot hold");
+  }
+  for (const BoltPattern& e : earlier) {
+    if (e.name == p.name) name.fail(input::quoted_text(p.name) + " is already the name of another bolt pattern");
+  }
+  const Field face = f.member("face");
+  const std::vector<Field> ends = face.elements(2, "give the face as two points [[x1, y1], [x2, y2]]");
+  if (ends.size() != 2) face.fail("give the face as two points [[x1, y1], [x2, y2]]");
+  p.face_from = input::within_limit(ends[0], ends[0].vec2("[x, y]"), input::kLargestCoordinate, "m");
+  p.face_to = input::within_limit(ends[1], ends[1].vec2("[x, y]"), input::kLargestCoordinate, "m");
+  const Vec2 along = p.face_to - p.face_from;
+  const double face_length = along.norm();
+  if (!(face_length > 0.0)) face.fail("its two points are the same: a face needs a length");
+  // The rock's side: the one of the face's two sides, at its middle, inside the domain.
+  const Vec2 middle = 0.5 * (p.face_from + p.face_to);
+  const Vec2 left = Vec2(-along.y(), along.x()) / face_length;
+  const double probe = 1e-6 * face_length;
+  const bool left_in = contains_point(domain, middle + probe * left);
+  const bool right_in = contains_point(domain, middle - probe * left);
+  if (left_in == right_in) {
+    face.fail("is not on the domain's boundary (the rock must lie on one side of its middle "
+              "and not on the other)");
+  }
+  const Vec2 into = left_in ? left : Vec2(-left);
+  p.spacing = positive_number(f.member("spacing"));
+  if (p.spacing > face_length) {
+    f.member("spacing").fail("is " + format_number(p.spacing) + " m, longer than the face (" +
+                             format_number(face_length) + " m): no bolt fits on it");
+  }
+  p.length = input::within_limit(f.member("length"), positive_number(f.member("length")),
+                                 input::kLargestCoordinate, "m");
+  const Field dip_field = f.member("dip");
+  const double dip = input::number_in_range(dip_field, 0.0, false, 90.0, false, "[0, 90] degrees");
+  const double d = dip * M_PI / 180.0;
+  if (into.x() == 0.0) {
+    if (dip != 90.0) {
+      dip_field.fail("must be 90 on a horizontal face (the rock lies straight " +
+                     std::string(into.y() < 0.0 ? "below" : "above") + " it)");
+    }
+    p.direction = Vec2(0.0, into.y() < 0.0 ? -1.0 : 1.0);
+  } else {
+    p.direction = Vec2((into.x() > 0.0 ? 1.0 : -1.0) * std::cos(d), -std::sin(d));
+  }
+  // (Along the face, to round-off, is not into it either.)
+  if (p.direction.dot(into) <= 1e-9) {
+    dip_field.fail("points the bolts out of the rock at this face (dip " + format_number(dip) +
+                   " degrees below the horizontal, away from the face): give a dip that enters it");
+  }
+  p.stiffness = input::within_limit(f.member("stiffness"), positive_number(f.member("stiffness")),
+                                    input::kLargestPenalty, "N/m");
+  if (auto g = f.optional_member("yield_force")) {
+    p.yield_force = input::within_limit(*g, positive_number(*g), input::kLargestForce, "N/m");
+  }
+  if (auto g = f.optional_member("pretension")) {
+    p.pretension = input::within_limit(*g, non_negative_number(*g), input::kLargestForce, "N/m");
+    if (p.yield_force && p.pretension > *p.yield_force) {
+      g->fail("is " + format_number(p.pretension) + " N/m, above the pattern's yield_force (" +
+              format_number(*p.yield_force) + " N/m)");
+    }
+  }
+  if (auto g = f.optional_member("rupture_extension")) {
+    p.rupture_extension = input::within_limit(*g, positive_number(*g), input::kLargestCoordinate, "m");
+  }
+  return p;
+}
+
 Model read_model(const Field& root, const std::string& source) {
   root.expect_keys({"description", "gravity", "plane", "control", "materials",
                     "joint_materials", "material", "domain", "joint_sets", "seed", "joints",
-                    "regions", "fixed", "min_block_area", "stages"});
+                    "regions", "fixed", "min_block_area", "stages", "base_motion", "pins",
+                    "point_loads", "monitors", "bolts", "water", "bolt_patterns"});
   Model model;
   model.source = source;
   const Scene settings = read_scene_settings(root, source, model.scene_settings);
@@ -253,6 +339,11 @@ Model read_model(const Field& root, const std::string& source) {
   if (auto g = root.optional_member("fixed")) spec.fixed = read_fixed(*g, spec.domain.size());
   if (auto g = root.optional_member("min_block_area")) {
     spec.min_block_area = non_negative_number(*g);
+  }
+  if (auto patterns = root.optional_member("bolt_patterns")) {
+    for (const Field& p : patterns->elements(0, "")) {
+      model.bolt_patterns.push_back(read_bolt_pattern(p, spec.domain, model.bolt_patterns));
+    }
   }
   return model;
 }
