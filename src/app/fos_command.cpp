@@ -11,12 +11,14 @@
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
 #include "io/block_picture.hpp"
+#include "io/bolt_force_report.hpp"
 #include "io/fos_report.hpp"
 #include "io/output_file.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/energy.hpp"
 #include "solver/run.hpp"
 #include "solver/sparse_cholesky.hpp"
+#include "studies/bolt_force_search.hpp"
 #include "studies/factor_cross_check.hpp"
 #include "studies/limit_analysis.hpp"
 #include "studies/settings_spread.hpp"
@@ -122,6 +124,36 @@ void write_limit_analysis_picture(const std::filesystem::path& path, const World
   write_block_picture(path.string(), blocks, options);
 }
 
+// --target-factor F: the bisection on the bolts' force, a trial at F each, the report in
+// DIR/bolt_force.json.
+int bolt_force_command(const Scene& scene, const std::string& scene_path, const std::string& out_dir,
+                       const FosSettings& settings, double target) {
+  prepare_output_directory(out_dir, {"bolt_force.json"});
+  const auto start = std::chrono::steady_clock::now();
+  std::cerr << "dda: the force each of the " << scene.bolts.size()
+            << " bolts must hold for F = " << target << ": one trial at F per force tried\n";
+  const BoltForceSearch search = find_bolt_force(scene, settings, target, [] { return interrupt_signal() != 0; });
+  for (const BoltForceTrial& t : search.trials) {
+    std::cerr << "dda: bolts at " << format(t.force, "%.6g") << " N/m: "
+              << (t.stable ? "stable" : "failing") << " (" << t.verdict << ")\n";
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_bolt_force_report(out_dir, scene_path, search, wall);
+  if (search.interrupted) {
+    std::cerr << "dda: interrupted (signal " << interrupt_signal() << "); report in " << out_dir << "\n";
+    return interrupted_exit_code();
+  }
+  if (!search.found) {
+    std::cerr << "dda: error: " << (search.message.empty() ? "no bolt force found" : search.message)
+              << "; report in " << out_dir << "\n";
+    return kExitNoFactor;
+  }
+  std::cout << "bolt force for F = " << target << ": " << format(search.force, "%.6g")
+            << " N/m each bolt (fails at " << format(search.failing_force, "%.6g") << ")\n";
+  std::cerr << "dda: report in " << out_dir << "/bolt_force.json\n";
+  return kExitOk;
+}
+
 }  // namespace
 
 int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,
@@ -151,7 +183,20 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     throw InputError(
         "fos: no scene given (dda fos SCENE.json --out DIR; see docs/factor-of-safety.md)");
   }
+  const bool target = options.target_factor > 0.0;
+  if (target && (method != "strength-reduction" || dynamic_check || options.spread)) {
+    throw InputError("fos: --target-factor searches the bolts' force with trials at one F; it "
+                     "runs no search of F, so --method limit-analysis, --dynamic-check and "
+                     "--spread do not apply");
+  }
   const Scene scene = with_seismic_coefficient(read_scene_file(scene_path), settings.seismic_coefficient);
+  if (target) {
+    if (scene.bolts.empty()) {
+      throw InputError(scene_path + ": bolts: --target-factor finds the force the scene's bolts "
+                       "must hold, and the scene has none");
+    }
+    return bolt_force_command(scene, scene_path, out_dir, settings, options.target_factor);
+  }
   for (const std::string& warning : scene.warnings) std::cerr << "dda: warning: " << warning << "\n";
   bool any_free = false;
   for (const BlockSpec& b : scene.blocks) any_free = any_free || !b.fixed;

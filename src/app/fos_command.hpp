@@ -22,6 +22,9 @@ struct FosCommandOptions {
   bool skip_limit_analysis = false;  // --skip-limit-analysis
   bool dynamic_check = false;        // --dynamic-check: dynamic trials at 0.95 F and 1.05 F
   bool spread = false;               // --spread: the search again at dt / 5, x 5, penalty / 10, x 10
+  // --target-factor F: instead of the search, the force each bolt must hold for the slope
+  // to stand at F (studies/bolt_force_search.hpp); 0: not asked.
+  double target_factor = 0.0;
 };
 
 int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,

@@ -276,6 +276,10 @@ int main(int argc, char** argv) {
                     "(five times the run)");
   fos_app->add_flag("--skip-limit-analysis", fos_options.skip_limit_analysis,
                     "Run the strength-reduction search without the limit analysis beside it");
+  fos_app->add_option("--target-factor", fos_options.target_factor,
+                      "Instead of the factor: the force every bolt must hold (pretension = yield "
+                      "force) for the slope to stand at this F")
+      ->check(finite_range(1e-3, 1e3));
   fos_app->add_option("--seismic-coefficient", fos.seismic_coefficient,
                       "Pseudo-static horizontal body force, as a share of the weight, along +x "
                       "(negative: along -x)")->capture_default_str()

@@ -281,6 +281,19 @@ std::string shown_text(std::string_view text) {
          " characters)";
 }
 
+std::string csv_name(const Field& f, std::string_view kind, std::string_view file,
+                     const std::vector<std::string>& taken) {
+  const std::string name = f.string();
+  if (name.empty()) f.fail("is empty; give each " + std::string(kind) + " a name");
+  if (name.find_first_of(",\"\n\r") != std::string::npos) {
+    f.fail("contains a comma, quote or line break, which " + std::string(file) + " cannot hold");
+  }
+  for (const std::string& t : taken) {
+    if (t == name) f.fail(quoted_text(name) + " is already the name of another " + std::string(kind));
+  }
+  return name;
+}
+
 std::string quoted_text(std::string_view text) {
   const auto [prefix, characters] = utf8_prefix(text, kShownCharacters);
   // Strings from a parsed document are valid UTF-8; other text (a line of a CSV record) may

@@ -119,6 +119,12 @@ double number_in_range(const Field& f, double lo, bool lo_open, double hi, bool 
                        std::string_view range);
 int integer_at_least(const Field& f, int lo);
 
+// A name written into a CSV file's rows (a monitor's, a bolt's): not empty, no comma, quote
+// or line break, and none of `taken`. `kind` ("monitor") and `file` ("monitors.csv") word
+// the messages.
+std::string csv_name(const Field& f, std::string_view kind, std::string_view file,
+                     const std::vector<std::string>& taken);
+
 // `"a", "b"` for the "known: ..." part of a message.
 std::string quoted_list(std::initializer_list<std::string_view> names);
 

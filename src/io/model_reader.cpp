@@ -223,15 +223,9 @@ BoltPattern read_bolt_pattern(const Field& f, const Polygon& domain,
   f.expect_keys({"name", "face", "spacing", "length", "dip", "stiffness", "pretension",
                  "yield_force", "rupture_extension"});
   BoltPattern p;
-  const Field name = f.member("name");
-  p.name = name.string();
-  if (p.name.empty()) name.fail("is empty; give each bolt pattern a name");
-  if (p.name.find_first_of(",\"\n\r") != std::string::npos) {
-    name.fail("contains a comma, quote or line break, which bolts.csv cannot hold");
-  }
-  for (const BoltPattern& e : earlier) {
-    if (e.name == p.name) name.fail(input::quoted_text(p.name) + " is already the name of another bolt pattern");
-  }
+  std::vector<std::string> taken;
+  for (const BoltPattern& e : earlier) taken.push_back(e.name);
+  p.name = input::csv_name(f.member("name"), "bolt pattern", "bolts.csv", taken);
   const Field face = f.member("face");
   const std::vector<Field> ends = face.elements(2, "give the face as two points [[x1, y1], [x2, y2]]");
   if (ends.size() != 2) face.fail("give the face as two points [[x1, y1], [x2, y2]]");

@@ -636,17 +636,9 @@ MonitorSpec read_monitor(const Field& f, const std::vector<BlockSpec>& blocks,
                          const std::vector<MonitorSpec>& earlier) {
   f.expect_keys({"name", "point"});
   MonitorSpec m;
-  const Field name = f.member("name");
-  m.name = name.string();
-  if (m.name.empty()) name.fail("is empty; give each monitor a name");
-  if (m.name.find_first_of(",\"\n\r") != std::string::npos) {
-    name.fail("contains a comma, quote or line break, which monitors.csv cannot hold");
-  }
-  for (const MonitorSpec& e : earlier) {
-    if (e.name == m.name) {
-      name.fail(input::quoted_text(m.name) + " is already the name of another monitor");
-    }
-  }
+  std::vector<std::string> taken;
+  for (const MonitorSpec& e : earlier) taken.push_back(e.name);
+  m.name = input::csv_name(f.member("name"), "monitor", "monitors.csv", taken);
   const Field point = f.member("point");
   m.point = within_limit(point, point.vec2("[x, y]"), input::kLargestCoordinate, "m");
   m.block = block_containing(point, m.point, blocks);
@@ -661,17 +653,9 @@ BoltSpec read_bolt(const Field& f, const std::vector<BlockSpec>& blocks,
   f.expect_keys({"name", "from", "to", "stiffness", "pretension", "yield_force",
                  "rupture_extension"});
   BoltSpec bolt;
-  const Field name = f.member("name");
-  bolt.name = name.string();
-  if (bolt.name.empty()) name.fail("is empty; give each bolt a name");
-  if (bolt.name.find_first_of(",\"\n\r") != std::string::npos) {
-    name.fail("contains a comma, quote or line break, which bolts.csv cannot hold");
-  }
-  for (const BoltSpec& e : earlier) {
-    if (e.name == bolt.name) {
-      name.fail(input::quoted_text(bolt.name) + " is already the name of another bolt");
-    }
-  }
+  std::vector<std::string> taken;
+  for (const BoltSpec& e : earlier) taken.push_back(e.name);
+  bolt.name = input::csv_name(f.member("name"), "bolt", "bolts.csv", taken);
   const Field from = f.member("from");
   const Field to = f.member("to");
   bolt.from = within_limit(from, from.vec2("[x, y]"), input::kLargestCoordinate, "m");
