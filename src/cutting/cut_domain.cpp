@@ -97,6 +97,42 @@ std::optional<std::pair<double, double>> part_near_domain(const Polygon& domain,
   return std::pair{t0, t1};
 }
 
+// The pieces of joint j that do not run along an edge of the domain. A joint on the line of a
+// domain edge (both of the edge's ends within `tolerance` m of the joint's line) adds nothing
+// there, where the boundary already is a free face, but rounded a hair off the edge (a trace
+// of dip 45 through the corner of a 45-degree face: cos and sin of pi/4 differ in the last
+// bit) it cut a sliver of no thickness between itself and the face, which merged into its
+// neighbour as a polygon crossing itself. So the stretch along the edge is left out, and
+// the joint's pieces beyond it end exactly at the edge's corners.
+std::vector<JointSegment> off_domain_edges(const Polygon& domain, const JointSegment& j,
+                                           double tolerance) {
+  std::vector<JointSegment> pieces{j}, done;
+  while (!pieces.empty()) {
+    const JointSegment piece = pieces.back();
+    pieces.pop_back();
+    const Vec2 ab = piece.to - piece.from;
+    const double length = ab.norm();
+    bool split = false;
+    for (std::size_t i = 0; i < domain.size() && length > 0.0 && !split; ++i) {
+      const Vec2& p = domain[i];
+      const Vec2& q = domain[(i + 1) % domain.size()];
+      const auto off_line = [&](const Vec2& x) { return std::abs(cross(ab, x - piece.from)) / length; };
+      if (off_line(p) > tolerance || off_line(q) > tolerance) continue;
+      const double tp = (p - piece.from).dot(ab) / (length * length);
+      const double tq = (q - piece.from).dot(ab) / (length * length);
+      const double s0 = std::max(0.0, std::min(tp, tq)), s1 = std::min(1.0, std::max(tp, tq));
+      if (!((s1 - s0) * length > tolerance)) continue;  // touches the edge's line only
+      const Vec2& first = tp < tq ? p : q;   // the corner at s0
+      const Vec2& second = tp < tq ? q : p;  // the corner at s1
+      if (s0 * length > tolerance) pieces.push_back({piece.from, first, piece.group});
+      if ((1.0 - s1) * length > tolerance) pieces.push_back({second, piece.to, piece.group});
+      split = true;
+    }
+    if (!split) done.push_back(piece);
+  }
+  return done;
+}
+
 // The joints with exact duplicates left out (the same two ends, in either order), each kept
 // where it first appears with the highest group of its copies, as the arrangement gives an
 // edge that overlapping segments make. Two sets of one dip, spacing and offset, or a joint
@@ -378,12 +414,16 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
     hi = hi.cwiseMax(p);
   }
   const double margin = 1e-6 * (hi - lo).norm() + 1e-9;
-  for (const JointSegment& j : distinct_segments(joints)) {
-    if (j.from == j.to) continue;
-    const auto part = part_near_domain(domain, j.from, j.to, margin);
-    if (!part) continue;
-    const Point a = exact(j.from), b = exact(j.to);
-    segments.push_back(segment(along(a, b, part->first), along(a, b, part->second), j.group));
+  // Along a domain edge: within the rounding the cut allows elsewhere (labels, fixed blocks).
+  const double along_edge = 1e-9 * (hi - lo).norm();
+  for (const JointSegment& whole : distinct_segments(joints)) {
+    for (const JointSegment& j : off_domain_edges(domain, whole, along_edge)) {
+      if (j.from == j.to) continue;
+      const auto part = part_near_domain(domain, j.from, j.to, margin);
+      if (!part) continue;
+      const Point a = exact(j.from), b = exact(j.to);
+      segments.push_back(segment(along(a, b, part->first), along(a, b, part->second), j.group));
+    }
   }
   Arrangement arr;
   CGAL::insert(arr, segments.begin(), segments.end());  // one sweep

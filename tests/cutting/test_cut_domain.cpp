@@ -260,3 +260,32 @@ TEST_CASE("a sliver below the smallest block area is merged into a neighbour", "
   for (const Polygon& b : merged.blocks) CHECK(b.size() == 4);  // no vertex left mid-side
   CHECK(total_area(merged.blocks) == Approx(100.0).epsilon(1e-12));
 }
+
+TEST_CASE("a joint along a domain edge, rounded a hair off it, cuts no sliver: its stretch "
+          "along the edge is left out and its pieces end at the edge's corners",
+          "[cutting]") {
+  // The small slope's profile: a 45-degree face from (3, 3) to (10, 10). A joint through the
+  // face's line drawn as a trace of dip 45 is, in doubles, a hair off y = x (cos and sin of
+  // pi/4 differ in the last bit): it runs inside the domain below the toe platform, from
+  // (0, 0) to the toe (3, 3), then along the face. Before, the stretch along the face cut a
+  // sliver of no thickness that merged into its neighbour as a polygon crossing itself.
+  const Polygon domain{{0, 0}, {20, 0}, {20, 10}, {10, 10}, {3, 3}, {0, 3}};
+  const double c = std::cos(M_PI / 4.0), s = std::sin(M_PI / 4.0);
+  REQUIRE(c != s);  // the hair
+  const std::vector<JointSegment> joints{{{-2.0 * c, -2.0 * s}, {20.0 * c, 20.0 * s}}};
+  for (const double min_area : {0.0, 0.05}) {
+    INFO("min_block_area " << min_area);
+    const CutResult cut = cut_domain(domain, joints, min_area);
+    // Two blocks: the triangle (0, 0), (3, 3), (0, 3) under the platform and the rest.
+    REQUIRE(cut.blocks.size() == 2);
+    CHECK(total_area(cut.blocks) == Approx(std::abs(signed_area(domain))).epsilon(1e-12));
+    check_blocks_valid(cut.blocks, 20.0);
+    const auto smaller = std::min_element(cut.blocks.begin(), cut.blocks.end(),
+                                          [](const Polygon& a, const Polygon& b) {
+                                            return signed_area(a) < signed_area(b);
+                                          });
+    // 4.5 m^2 to the joint's hair: the cut ends exactly at the face's corner (3, 3).
+    CHECK(signed_area(*smaller) == Approx(4.5).epsilon(1e-12));
+    CHECK(std::find(smaller->begin(), smaller->end(), Vec2(3.0, 3.0)) != smaller->end());
+  }
+}
