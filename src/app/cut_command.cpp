@@ -63,6 +63,38 @@ std::string counts_text(const std::map<std::string, int>& counts) {
   return text;
 }
 
+// A warning when the model has joint sets and faces (domain edges not fixed that look up and
+// sideways) but no set daylights in any face (daylights_in_face): planar sliding, the
+// mechanism most rock-slope studies look for, is then impossible along a set (a floor of
+// bedding at the toe's level, or bedding dipping into the slope, locked a slope at F 2.83).
+void print_daylighting_warning(const ModelSpec& spec) {
+  if (spec.joint_sets.empty()) return;
+  const Polygon& d = spec.domain;
+  std::vector<int> faces;
+  bool any = false;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (std::find(spec.fixed.edges.begin(), spec.fixed.edges.end(), static_cast<int>(i)) !=
+        spec.fixed.edges.end()) {
+      continue;
+    }
+    const Vec2& p = d[i];
+    const Vec2& q = d[(i + 1) % d.size()];
+    const Vec2 edge = q - p;
+    // Looking sideways, and up or level (outward normal (e_y, -e_x) of a counter-clockwise
+    // domain): the slope's faces, a vertical cliff among them; a flat top, a floor or an
+    // overhang is none.
+    if (edge.x() > 0.0 || edge.y() == 0.0) continue;
+    faces.push_back(static_cast<int>(i));
+    for (const JointSetModel& s : spec.joint_sets) any = any || daylights_in_face(s.traces.dip, p, q);
+  }
+  if (faces.empty() || any) return;
+  std::string list;
+  for (int f : faces) list += (list.empty() ? "" : ", ") + std::to_string(f);
+  std::cerr << "dda: cut: warning: no joint set daylights in the slope's faces (domain edges "
+            << list << "): none dips out of a face less steeply than the face, so no block can "
+               "slide out along a set's joints (docs/model-format.md, \"Daylighting\")\n";
+}
+
 void print_statistics(const Model& model, const CutModel& cut, const CutScene& scene,
                       const std::string& out_path) {
   const CutResult& c = cut.cut;
@@ -97,6 +129,7 @@ void print_statistics(const Model& model, const CutModel& cut, const CutScene& s
               << "\" left out of the scene: no pair of blocks shares an edge of its joints\n";
   }
   for (const std::string& line : scene.bolts_left_out) std::cerr << "dda: cut: bolt pattern " << line << "\n";
+  print_daylighting_warning(model.spec);
 }
 
 // SIGINT or SIGTERM before the cut or while the scene is written: it stops at the next

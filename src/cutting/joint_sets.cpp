@@ -109,4 +109,22 @@ std::vector<JointSegment> joint_set_traces(const JointSetSpec& set, const Vec2& 
   return out;
 }
 
+bool daylights_in_face(double dip, const Vec2& p, const Vec2& q) {
+  const Vec2 edge = q - p;
+  const double length = edge.norm();
+  if (!(length > 0.0)) return false;
+  const Vec2 outward(edge.y() / length, -edge.x() / length);  // the rock is on the left
+  constexpr double kFlat = 1e-9;
+  if (outward.y() < -kFlat || std::abs(outward.x()) <= kFlat) return false;
+  const double face_dip = std::atan2(std::abs(edge.y()), std::abs(edge.x()));
+  // The joint's line as an angle in [0, pi): rising to +x below pi/2 (it dips towards -x),
+  // to -x above (it dips towards +x).
+  double theta = std::fmod(dip * M_PI / 180.0, M_PI);
+  if (theta < 0.0) theta += M_PI;
+  const double joint_dip = theta <= 0.5 * M_PI ? theta : M_PI - theta;
+  if (!(joint_dip > kFlat) || joint_dip >= 0.5 * M_PI - kFlat) return false;  // flat or vertical
+  const double dips_towards = theta < 0.5 * M_PI ? -1.0 : 1.0;
+  return dips_towards * outward.x() > 0.0 && joint_dip < face_dip;
+}
+
 }  // namespace dda

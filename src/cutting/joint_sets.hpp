@@ -32,4 +32,13 @@ struct JointSetSpec {
 std::vector<JointSegment> joint_set_traces(const JointSetSpec& set, const Vec2& lo, const Vec2& hi,
                                            std::uint64_t seed);
 
+// Whether joints of direction `dip` (degrees from +x, as JointSetSpec::dip) daylight in the
+// face from p to q of a counter-clockwise domain (the rock on the face's left): they dip
+// out of the face, towards the side its outward normal faces, and less steeply than the
+// face, so that they outcrop on it and a block above one can slide out along it (the
+// kinematic condition of planar sliding; Hoek and Bray, ch. 7). A face must look sideways,
+// up or level (a vertical cliff counts; an overhang, a floor or a flat top has no
+// daylighting joint).
+bool daylights_in_face(double dip, const Vec2& p, const Vec2& q);
+
 }  // namespace dda

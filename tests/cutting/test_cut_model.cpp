@@ -380,3 +380,23 @@ TEST_CASE("the small example slope model cuts into tens of blocks", "[cut]") {
   const Scene scene = parse_scene_text(scene_text(cut_scene(model, cut).scene), "small.json");
   CHECK(scene.warnings.empty());
 }
+
+TEST_CASE("dda cut warns when no joint set daylights in the slope's faces", "[cut][cli][daylight]") {
+  TempDir dir;
+  const fs::path model = dir.path / "model.json", scene = dir.path / "scene.json";
+  const std::string small = test::read_file(fs::path(DDA_SOURCE_DIR) / "models" / "small-slope.json");
+  // As given, its bedding dips 25 degrees out of the 45-degree face: no warning.
+  test::write_file(model, small);
+  const test::CommandResult daylighting = run_cut(model, scene);
+  INFO(daylighting.output);
+  REQUIRE(daylighting.exit_code == 0);
+  CHECK_FALSE(test::contains(daylighting.output, "daylights"));
+  // Turned to dip 25 degrees into the slope (and the cross set steep into it): the warning,
+  // naming the face, and the scene is still written.
+  test::write_file(model, edit(small, "{\"dip\": 25.0,", "{\"dip\": 155.0,"));
+  const test::CommandResult into = run_cut(model, scene);
+  INFO(into.output);
+  CHECK(into.exit_code == 0);
+  CHECK(test::contains(into.output, "warning: no joint set daylights in the slope's faces "
+                                    "(domain edges 3)"));
+}

@@ -190,3 +190,23 @@ TEST_CASE("a 200 m x 100 m slope cut by two persistent sets tiles its domain", "
   CHECK(cut.blocks.size() > area / 12.0);
   CHECK(cut.blocks.size() < 1.3 * area / 12.0);
 }
+
+TEST_CASE("a set daylights in a face when it dips out of it less steeply than the face",
+          "[cutting][daylight]") {
+  // The small slope's 45-degree face, rock on the left from (10, 10) down to (3, 3): it
+  // faces -x and up.
+  const Vec2 top(10.0, 10.0), toe(3.0, 3.0);
+  CHECK(daylights_in_face(25.0, top, toe));    // rises to +x: dips 25 towards -x, out of it
+  CHECK(daylights_in_face(44.0, top, toe));
+  CHECK_FALSE(daylights_in_face(46.0, top, toe));   // steeper than the face: under its toe
+  CHECK_FALSE(daylights_in_face(155.0, top, toe));  // dips 25 towards +x: into the slope
+  CHECK_FALSE(daylights_in_face(0.0, top, toe));    // flat
+  CHECK_FALSE(daylights_in_face(90.0, top, toe));   // vertical
+  CHECK(daylights_in_face(25.0 + 180.0, top, toe)); // a direction and its opposite: one line
+  CHECK_FALSE(daylights_in_face(25.0, toe, top));   // the rock on the other side: an overhang
+  // A vertical cliff facing -x (rock on the left going down): any dip out of it below 90.
+  CHECK(daylights_in_face(80.0, Vec2(0.0, 10.0), Vec2(0.0, 0.0)));
+  CHECK_FALSE(daylights_in_face(100.0, Vec2(0.0, 10.0), Vec2(0.0, 0.0)));
+  // A flat top has no daylighting set.
+  CHECK_FALSE(daylights_in_face(10.0, Vec2(20.0, 10.0), Vec2(10.0, 10.0)));
+}
