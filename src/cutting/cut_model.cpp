@@ -1,6 +1,7 @@
 #include "cutting/model.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "cutting/block_labels.hpp"
 #include "kinematics/polygon.hpp"
@@ -25,11 +26,45 @@ std::string block_material(const ModelSpec& model, const Polygon& block, double 
   return model.material;
 }
 
+// The distance from point x to segment a-b.
+double point_segment_distance(const Vec2& x, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 0.0 ? std::clamp((x - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (x - (a + t * ab)).norm();
+}
+
+// How deep the block lies under the free surface: the least distance between its edges and
+// the domain's edges not fixed (segments that do not cross: the least of the distances from
+// each one's ends to the other).
+double depth_under_free_surface(const ModelSpec& model, const Polygon& block) {
+  const Polygon& d = model.domain;
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    if (std::find(model.fixed.edges.begin(), model.fixed.edges.end(), static_cast<int>(k)) !=
+        model.fixed.edges.end()) {
+      continue;
+    }
+    const Vec2& p = d[k];
+    const Vec2& q = d[(k + 1) % d.size()];
+    for (std::size_t i = 0; i < block.size(); ++i) {
+      const Vec2& a = block[i];
+      const Vec2& b = block[(i + 1) % block.size()];
+      least = std::min({least, point_segment_distance(a, p, q), point_segment_distance(p, a, b),
+                        point_segment_distance(q, a, b)});
+    }
+  }
+  return least;
+}
+
 bool block_fixed(const ModelSpec& model, const Polygon& block, double tol) {
   const Polygon& d = model.domain;
   for (int i : model.fixed.edges) {
     const std::size_t k = static_cast<std::size_t>(i);
     if (has_edge_along(block, d[k], d[(k + 1) % d.size()], tol)) return true;
+  }
+  if (model.fixed.depth && depth_under_free_surface(model, block) >= *model.fixed.depth - tol) {
+    return true;
   }
   return model.fixed.polygon && lies_within(block, *model.fixed.polygon, tol);
 }

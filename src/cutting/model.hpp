@@ -36,11 +36,13 @@ struct RegionModel {
 };
 
 // Blocks fixed in place: those with an edge on one of the domain's edges listed (edge i runs
-// from vertex i to vertex i + 1), and those lying wholly inside or on `polygon`. Both may be
-// given; a block that meets either rule is fixed.
+// from vertex i to vertex i + 1), those lying wholly inside or on `polygon`, and those lying
+// wholly deeper than `depth` (m) under the free surface (the domain's edges not listed).
+// Any may be given; a block that meets one rule is fixed.
 struct FixedModel {
   std::vector<int> edges;
   std::optional<Polygon> polygon;
+  std::optional<double> depth;
 };
 
 struct ModelSpec {

@@ -195,7 +195,7 @@ RegionModel read_region(const Field& f, const std::vector<std::string>& material
 }
 
 FixedModel read_fixed(const Field& f, std::size_t domain_edges) {
-  f.expect_keys({"edges", "polygon"});
+  f.expect_keys({"edges", "polygon", "depth"});
   FixedModel fixed;
   if (auto edges = f.optional_member("edges")) {
     std::set<int> seen;
@@ -211,6 +211,13 @@ FixedModel read_fixed(const Field& f, std::size_t domain_edges) {
     }
   }
   if (auto g = f.optional_member("polygon")) fixed.polygon = read_polygon(*g);
+  if (auto g = f.optional_member("depth")) {
+    fixed.depth = positive_number(*g);
+    if (fixed.edges.size() == domain_edges) {
+      g->fail("every domain edge is in \"edges\": there is no free surface to measure the "
+              "depth from");
+    }
+  }
   return fixed;
 }
 

@@ -400,3 +400,36 @@ TEST_CASE("dda cut warns when no joint set daylights in the slope's faces", "[cu
   CHECK(test::contains(into.output, "warning: no joint set daylights in the slope's faces "
                                     "(domain edges 3)"));
 }
+
+TEST_CASE("fixed.depth fixes the blocks lying wholly deeper than it under the free surface",
+          "[cut]") {
+  // A 10 m square cut into 1 m cells; edges 0, 1 and 3 (bottom, right, left) are fixed, so
+  // the top is the free surface. Depth 4: the six rows whose tops lie at y <= 6 are 4 m or
+  // more under it (60 cells), and the edges fix the bottom row and the side columns; in all
+  // 60 + the side columns' 8 cells above y = 6.
+  std::string text = R"({
+    "control": {"time_step": 0.001, "steps": 1},
+    "materials": {"rock": {"model": "elastic", "density": 2600, "young": 1e9, "poisson": 0.25}},
+    "joint_materials": {"default": {"friction_angle": 35, "cohesion": 0, "tensile_strength": 0}},
+    "material": "rock",
+    "domain": [[0, 0], [10, 0], [10, 10], [0, 10]],
+    "joint_sets": [{"dip": 0, "spacing": 1, "offset": 0}, {"dip": 90, "spacing": 1, "offset": 0}],
+    "fixed": {"edges": [0, 1, 3], "depth": 4}
+  })";
+  const Model model = parse_model_text(text, "model.json");
+  const CutModel cut = cut_model(model.spec);
+  REQUIRE(cut.cut.blocks.size() == 100);
+  int fixed = 0;
+  for (std::size_t i = 0; i < cut.cut.blocks.size(); ++i) {
+    const Box box = bounding_box(cut.cut.blocks[i]);
+    const bool deep = box.max.y() <= 6.0 + 1e-9;
+    const bool on_edge = box.min.y() < 1e-9 || box.min.x() < 1e-9 || box.max.x() > 10.0 - 1e-9;
+    INFO("block " << i << " from (" << box.min.x() << ", " << box.min.y() << ")");
+    CHECK(cut.fixed[i] == (deep || on_edge));
+    fixed += cut.fixed[i] ? 1 : 0;
+  }
+  CHECK(fixed == 68);
+  // With every edge fixed there is no free surface to measure from.
+  text = edit(text, "\"edges\": [0, 1, 3]", "\"edges\": [0, 1, 2, 3]");
+  CHECK(error_of(text).find("model.json: fixed.depth: every domain edge is in \"edges\"") == 0);
+}
