@@ -69,6 +69,7 @@ void write_mechanism_picture(const std::filesystem::path& path, const World& con
   const double x = largest > 0.0 ? shown / largest : 0.0;
   std::vector<PictureBlock> blocks;
   for (const Block& b : consolidated.blocks) {
+    if (b.excavated) continue;  // gone
     blocks.push_back({b.vertices, b.fixed ? Rgb{190, 190, 190} : Rgb{235, 235, 235}});
   }
   PictureOptions options;
@@ -108,6 +109,7 @@ void write_limit_analysis_picture(const std::filesystem::path& path, const World
   const double shown = 0.25 * std::sqrt(median_free_block_area(world));
   std::vector<PictureBlock> blocks;
   for (const Block& b : world.blocks) {
+    if (b.excavated) continue;  // gone
     blocks.push_back({b.vertices, b.fixed ? Rgb{190, 190, 190} : Rgb{235, 235, 235}});
   }
   for (auto it = la.mechanism.rbegin(); it != la.mechanism.rend(); ++it) {  // fastest on top

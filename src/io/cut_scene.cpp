@@ -8,6 +8,7 @@
 
 #include "io/input_error.hpp"
 #include "io/json_input.hpp"
+#include "cutting/block_labels.hpp"
 #include "kinematics/polygon.hpp"
 
 namespace dda {
@@ -180,7 +181,31 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
     }
     scene["base_motion"] = motion;
   }
-  if (settings.contains("stages")) scene["stages"] = ordered_json(settings.at("stages"));
+  if (settings.contains("stages")) {
+    ordered_json stages = ordered_json(settings.at("stages"));
+    // A stage's excavate_region: the blocks whose interior point (as regions place blocks)
+    // lies in it, not removed by an earlier stage, as the scene stage's "excavate".
+    std::vector<bool> removed(cut.cut.blocks.size(), false);
+    const Box box = bounding_box(model.spec.domain);
+    const double tol = 1e-9 * (box.max - box.min).norm();
+    for (std::size_t k = 0; k < model.stage_excavations.size() && k < stages.size(); ++k) {
+      if (!model.stage_excavations[k]) continue;
+      ordered_json list = ordered_json::array();
+      for (std::size_t i = 0; i < cut.cut.blocks.size(); ++i) {
+        if (removed[i]) continue;
+        if (contains_point(*model.stage_excavations[k], interior_point(cut.cut.blocks[i], tol))) {
+          removed[i] = true;
+          list.push_back(static_cast<int>(i));
+        }
+      }
+      if (list.empty()) {
+        throw InputError(model.source + ": stages[" + std::to_string(k) +
+                         "].excavate_region: holds no block of the cut (not removed by an earlier stage)");
+      }
+      stages[k]["excavate"] = list;
+    }
+    scene["stages"] = stages;
+  }
   return out;
 }
 

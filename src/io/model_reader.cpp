@@ -68,10 +68,31 @@ double estimated_crossings(const std::vector<JointSetModel>& sets, double area) 
 // keys that place things in the blocks (kKeysInBlocks) are kept too, for the cut's scene,
 // and checked there, on the cut's blocks (dda cut reads its scene back).
 Scene read_scene_settings(const Field& root, const std::string& source,
-                          nlohmann::json& settings) {
+                          nlohmann::json& settings,
+                          std::vector<std::optional<Polygon>>& stage_excavations) {
   settings = nlohmann::json::object();
   for (std::string_view key : kSceneKeys) {
     if (root.has(key)) settings[std::string(key)] = root.value().at(std::string(key));
+  }
+  // A model's stage removes blocks by region ("excavate_region"), since no block exists
+  // before the cut: read here, left out of what the scene reader checks, and turned into
+  // the scene stage's "excavate" by the cut (cut_scene).
+  if (root.has("stages") && root.member("stages").value().is_array()) {
+    const std::vector<Field> stages = root.member("stages").elements(0, "");
+    for (std::size_t k = 0; k < stages.size(); ++k) {
+      std::optional<Polygon> region;
+      if (stages[k].value().is_object()) {
+        if (stages[k].has("excavate")) {
+          stages[k].place("excavate").fail("a model names no block (the cut numbers them); give "
+                                           "\"excavate_region\": the polygon whose blocks the stage removes");
+        }
+        if (auto g = stages[k].optional_member("excavate_region")) {
+          region = read_polygon(*g);
+          settings["stages"][k].erase("excavate_region");
+        }
+      }
+      stage_excavations.push_back(region);
+    }
   }
   nlohmann::json probe = settings;
   for (std::string_view key : kKeysInBlocks) {
@@ -301,7 +322,8 @@ Model read_model(const Field& root, const std::string& source) {
                     "point_loads", "monitors", "bolts", "water", "bolt_patterns"});
   Model model;
   model.source = source;
-  const Scene settings = read_scene_settings(root, source, model.scene_settings);
+  const Scene settings =
+      read_scene_settings(root, source, model.scene_settings, model.stage_excavations);
   check_default_joint(root);
   const std::vector<std::string> materials = names_of(settings.materials);
   const std::vector<std::string> joint_materials = names_of(settings.joint_materials);

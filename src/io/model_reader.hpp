@@ -39,6 +39,9 @@ struct BoltPattern {
 struct Model {
   ModelSpec spec;
   std::vector<BoltPattern> bolt_patterns;
+  // Per stage of the model (empty without stages): the region whose blocks the stage
+  // removes (its "excavate_region"), turned into the scene stage's "excavate" by the cut.
+  std::vector<std::optional<Polygon>> stage_excavations;
   // The keys copied into the cut scene as given (each checked by the scene's own rules):
   // description, gravity, plane, control, materials, joint_materials, stages, base_motion,
   // and those checked on the cut's blocks, kKeysInBlocks.

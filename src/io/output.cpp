@@ -15,6 +15,7 @@
 #include "io/text_file.hpp"
 #include "kinematics/block_matrices.hpp"
 #include "solver/energy.hpp"
+#include "solver/excavation.hpp"
 
 namespace dda {
 
@@ -117,6 +118,12 @@ void write_cell_data(std::string& s, const World& w) {
   cell_array(s, w, "UInt8", "fixed", {"fixed"}, [](const Block& b, int) {
     return std::vector<std::string>{b.fixed ? "1" : "0"};
   });
+  // A scene with excavation stages: 1 for a block removed (threshold it away in ParaView).
+  if (world_excavates(w)) {
+    cell_array(s, w, "UInt8", "excavated", {"excavated"}, [](const Block& b, int) {
+      return std::vector<std::string>{b.excavated ? "1" : "0"};
+    });
+  }
   cell_array(s, w, "Float64", "area", {"area"},
              [](const Block& b, int) { return nums({b.moments.area}); });
   cell_array(s, w, "Float64", "rotation", {"rotation"},
@@ -263,6 +270,7 @@ json block_json(const Block& b, int index) {
                                                       b.material_state.plastic_strain[3]})},
                       {"branch", branch_name(b.branch)}};
   }
+  if (b.excavated) out["excavated"] = true;  // removed by an excavation stage
   return out;
 }
 
@@ -453,7 +461,7 @@ json stages_run_json(const World& world) {
 json energy_json(const World& world) {
   const EnergyTotals e = scene_energy(world);
   const EnergyLedger& led = world.energy;
-  return {{"scale", led.scale},
+  json out = {{"scale", led.scale},
           {"initial_total", led.initial_total},
           {"kinetic", e.kinetic},
           {"potential", e.potential},
@@ -473,6 +481,9 @@ json energy_json(const World& world) {
           {"remainder_min_step", led.remainder_min_step},
           {"remainder_min_share", led.scale > 0.0 ? led.remainder_min / led.scale : 0.0},
           {"losses_beyond_tolerance", energy_lost_beyond(led, world.control.energy_tolerance)}};
+  // What excavated blocks took away (a scene with excavation stages only).
+  if (world_excavates(world)) out["excavation"] = led.excavation;
+  return out;
 }
 }  // namespace
 

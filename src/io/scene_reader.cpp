@@ -402,10 +402,12 @@ std::vector<StageJoint> read_stage_joints(const Field& f,
 }
 
 // One stage; what it leaves out is control's (`control`), or the scene's gravity (factor 1).
+// `excavated`: per block, whether an earlier stage removed it (this stage's are added).
 StageSpec read_stage(const Field& f, const ControlSettings& control,
-                     const std::vector<JointMaterial>& joint_materials) {
+                     const std::vector<JointMaterial>& joint_materials,
+                     std::vector<bool>& excavated) {
   f.expect_keys({"duration", "dynamic_coefficient", "gravity_factor", "gravity_ramp",
-                 "time_step", "joint_materials", "bond_closed_contacts"});
+                 "time_step", "joint_materials", "bond_closed_contacts", "excavate"});
   StageSpec s;
   s.duration = duration(f.member("duration"));
   s.dynamic_coefficient = control.dynamic_coefficient;
@@ -437,6 +439,21 @@ StageSpec read_stage(const Field& f, const ControlSettings& control,
     s.joint_materials = read_stage_joints(*g, joint_materials);
   }
   if (auto g = f.optional_member("bond_closed_contacts")) s.bond_closed_contacts = g->boolean();
+  if (auto g = f.optional_member("excavate")) {
+    const int blocks = static_cast<int>(excavated.size());
+    for (const Field& e : g->elements(1, "list the indices of the blocks to remove")) {
+      const int i = e.integer();
+      if (i < 0 || i >= blocks) {
+        e.fail("block " + std::to_string(i) + " is out of range (the scene has " +
+               std::to_string(blocks) + " blocks, numbered from 0)");
+      }
+      if (excavated[static_cast<std::size_t>(i)]) {
+        e.fail("block " + std::to_string(i) + " is excavated already (by this stage or an earlier one)");
+      }
+      excavated[static_cast<std::size_t>(i)] = true;
+      s.excavate.push_back(i);
+    }
+  }
   return s;
 }
 
@@ -463,10 +480,12 @@ void check_staged_run_length(const Field& control, const std::vector<StageSpec>&
 }
 
 std::vector<StageSpec> read_stages(const Field& f, const ControlSettings& control,
-                                   const std::vector<JointMaterial>& joint_materials) {
+                                   const std::vector<JointMaterial>& joint_materials,
+                                   std::size_t block_count) {
   std::vector<StageSpec> stages;
+  std::vector<bool> excavated(block_count, false);
   for (const Field& stage : f.elements(1, "list at least one stage, or leave \"stages\" out")) {
-    stages.push_back(read_stage(stage, control, joint_materials));
+    stages.push_back(read_stage(stage, control, joint_materials, excavated));
   }
   return stages;
 }
@@ -864,7 +883,8 @@ Scene read_scene(const Field& root, const std::string& source) {
     scene.base_motion = read_base_motion(*motion, source);
   }
   if (staged) {
-    scene.stages = read_stages(root.member("stages"), scene.control, scene.joint_materials);
+    scene.stages = read_stages(root.member("stages"), scene.control, scene.joint_materials,
+                               scene.blocks.size());
     check_staged_run_length(root.member("control"), scene.stages, scene.control);
   }
   scene.warnings = unused_joint_material_warnings(scene, source);

@@ -63,6 +63,11 @@ bool both_fixed(const World& world, int i, int j) {
   return world.blocks[i].fixed && world.blocks[j].fixed;  // nothing can move
 }
 
+// An excavated block is gone: it touches nothing and covers no face.
+bool either_excavated(const World& world, int i, int j) {
+  return world.blocks[i].excavated || world.blocks[j].excavated;
+}
+
 }  // namespace
 
 void detect_contacts_full(const World& world, std::vector<Contact>& contacts) {
@@ -72,7 +77,7 @@ void detect_contacts_full(const World& world, std::vector<Contact>& contacts) {
 
   std::vector<ContactCandidate> candidates;
   for (const auto& [i, j] : overlapping_pairs(boxes)) {
-    if (both_fixed(world, i, j)) continue;
+    if (both_fixed(world, i, j) || either_excavated(world, i, j)) continue;
     find_contacts(world.blocks[i].vertices, i, world.blocks[j].vertices, j,
                   pair_search_distance(world, i, j), candidates);
   }
@@ -103,6 +108,7 @@ void detect_contacts(const World& world, std::vector<Contact>& contacts, Detecti
   // free blocks in contact (within their allowed penetration) the cover only steers the
   // vertex-pair rule, since the two may part (docs/contacts.md, "Covered faces").
   for (const auto& [i, j] : cache.close) {
+    if (either_excavated(world, i, j)) continue;
     const bool firm = both_fixed(world, i, j);
     mark_covered_edges(cache.features[i], i, cache.features[j], j,
                        firm ? 0.0 : contact_allowance(world, i, j), firm);
@@ -110,7 +116,7 @@ void detect_contacts(const World& world, std::vector<Contact>& contacts, Detecti
 
   cache.candidates.clear();
   for (const auto& [i, j] : cache.close) {
-    if (both_fixed(world, i, j)) continue;
+    if (both_fixed(world, i, j) || either_excavated(world, i, j)) continue;
     find_contacts(world.blocks[i].vertices, cache.features[i], i, world.blocks[j].vertices,
                   cache.features[j], j, pair_search_distance(world, i, j), cache.candidates);
   }

@@ -62,7 +62,7 @@ void commit_step_energy(World& world, const StepEnergy& step, const std::vector<
   const EnergyTotals totals = scene_energy(world);
   led.remainder = totals.total() - led.initial_total - led.load_work - led.multiplier_work +
                   led.friction_dissipation +
-                  led.plastic_dissipation + led.damping_dissipation;
+                  led.plastic_dissipation + led.damping_dissipation + led.excavation;
   led.scale = std::max({led.scale, totals.kinetic, std::abs(led.load_work)});
   if (led.remainder > led.remainder_max) {
     led.remainder_max = led.remainder;

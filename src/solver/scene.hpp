@@ -257,6 +257,9 @@ struct StageSpec {
   // At the stage's start, every closed contact whose joint (as this stage has it) has
   // cohesion or tensile strength becomes bonded (contact/bonding.hpp).
   bool bond_closed_contacts = false;
+  // Blocks removed at the stage's start (indices into Scene::blocks; each removed once in a
+  // run): an excavation lift (solver/excavation.hpp).
+  std::vector<int> excavate;
 };
 
 struct Scene {

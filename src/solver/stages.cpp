@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "contact/bonding.hpp"
+#include "solver/excavation.hpp"
 #include "solver/schedule.hpp"
 #include "solver/step.hpp"
 #include "solver/world.hpp"
@@ -29,8 +30,8 @@ void change_gravity(World& world, const Vec2& g) {
   world.gravity = g;
 }
 
-// The stage's settings into the world fields the step reads.
-void enter_stage(World& world, int stage) {
+// The stage's settings into the world fields the step reads, and its excavation.
+void enter_stage(World& world, int stage, std::vector<Contact>& contacts) {
   StagePlan& plan = world.stages;
   const StageSpec& s = plan.stages[static_cast<std::size_t>(stage)];
   assert(s.duration > 0.0 && !s.time_steps.empty());  // resolved by the reader
@@ -47,6 +48,7 @@ void enter_stage(World& world, int stage) {
     world.joint_laws[static_cast<std::size_t>(o.joint)] = joint_law_of(o.material);
   }
   change_gravity(world, stage_gravity_factor(plan, stage, stage_start(plan, stage)) * plan.gravity);
+  excavate_blocks(world, contacts, s.excavate);
 }
 
 }  // namespace
@@ -66,7 +68,7 @@ void start_stages(World& world, const Scene& scene) {
   plan.gravity = world.gravity;
   plan.control = world.control;
   plan.joint_laws = world.joint_laws;
-  enter_stage(world, 0);
+  enter_stage(world, 0, world.contacts);
 }
 
 bool enter_next_stage(World& world, std::vector<Contact>& contacts) {
@@ -74,7 +76,7 @@ bool enter_next_stage(World& world, std::vector<Contact>& contacts) {
   if (plan.stages.empty() || !is_finished(world)) return false;
   const int next = plan.current + 1;
   if (static_cast<std::size_t>(next) >= plan.stages.size()) return false;
-  enter_stage(world, next);
+  enter_stage(world, next, contacts);
   if (plan.stages[static_cast<std::size_t>(next)].bond_closed_contacts) {
     plan.bonds_formed.back() = bond_closed_contacts(contacts, world.joint_laws);
   }

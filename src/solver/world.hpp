@@ -46,6 +46,9 @@ struct Block {
   // material inertia behind the rotating-frame terms (kinematics/rotating_inertia.hpp).
   Mat2 material_inertia = Mat2::Zero();
   int first_dof = -1;  // index of u0 in the global system; -1 for fixed blocks
+  // Removed by an excavation stage (solver/excavation.hpp): fixed from then on, in no
+  // contact and in no energy term, kept in place only so that block indices stay the same.
+  bool excavated = false;
   // The most any of its vertices may move in one step (m): max_displacement_ratio x half the
   // larger side of the block's own bounding box at the start; 0 for a fixed block, which does
   // not move. Shi's g2 measured against the block, not the scene: a small block next to a
@@ -161,6 +164,9 @@ struct EnergyLedger {
   double damping_dissipation = 0.0;   // by the implicit time integration and the dynamic coefficient
   double friction_gain = 0.0;         // friction work that pushed forward (part of the remainder)
   double contact_energy = 0.0;        // stored in contact and pin springs after the last step
+  // What excavated blocks took out of the scene as they went (solver/excavation.hpp): their
+  // kinetic, potential and strain energy and their contacts' and bolts' spring energy.
+  double excavation = 0.0;
   double initial_total = 0.0;         // kinetic + potential + strain + contact at the start
   double remainder = 0.0;             // unexplained: now - start - work + dissipations
   double remainder_max = 0.0;         // the largest remainder so far (gain)

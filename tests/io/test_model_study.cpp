@@ -16,6 +16,7 @@
 #include "io/input_error.hpp"
 #include "io/model_reader.hpp"
 #include "io/scene_reader.hpp"
+#include "kinematics/polygon.hpp"
 
 using namespace dda;
 namespace fs = std::filesystem;
@@ -160,4 +161,35 @@ TEST_CASE("dda cut: a carried key that does not fit the cut's blocks is the mode
   const nlohmann::json scene = nlohmann::json::parse(std::ifstream(scene_path));
   CHECK(scene["base_motion"]["record"] == "../quake.csv");
   CHECK(read_scene_file(scene_path.string()).base_motion.has_value());
+}
+
+TEST_CASE("a model's stage removes the blocks of its excavate_region: the cut's scene lists them",
+          "[cut][model][excavation]") {
+  nlohmann::json model = study_model();
+  // The right column's cell between y = 6.25 and 8.75 (its interior point at (7.5, 7.5)).
+  model["stages"].push_back({{"duration", 0.005},
+                             {"dynamic_coefficient", 0},
+                             {"excavate_region", {{5.5, 6.5}, {9.5, 6.5}, {9.5, 8.5}, {5.5, 8.5}}}});
+  const Model m = parse_model_text(model.dump(), "model.json");
+  const CutModel cut = cut_model(m.spec);
+  const CutScene out = cut_scene(m, cut);
+  REQUIRE(out.scene["stages"].size() == 2);
+  CHECK_FALSE(out.scene["stages"][0].contains("excavate"));
+  REQUIRE(out.scene["stages"][1]["excavate"].size() == 1);
+  const int removed = out.scene["stages"][1]["excavate"][0].get<int>();
+  const Polygon& block = cut.cut.blocks[static_cast<std::size_t>(removed)];
+  const Vec2 c = polygon_moments(block).centroid;
+  CHECK(c.x() == Approx(7.5));
+  CHECK(c.y() == Approx(7.5));
+  CHECK_FALSE(out.scene["stages"][1].contains("excavate_region"));
+  const Scene scene = parse_scene_text(scene_text(out.scene), "cut.json");
+  CHECK(scene.stages[1].excavate == std::vector<int>{removed});
+
+  // A model names no block; a region holding none is refused at its place.
+  nlohmann::json bad = model;
+  bad["stages"][1]["excavate"] = {1};
+  CHECK(model_error(bad).find("model.json: stages[1].excavate: a model names no block") == 0);
+  bad = model;
+  bad["stages"][1]["excavate_region"] = {{50, 50}, {60, 50}, {60, 60}};
+  CHECK(model_error(bad).find("model.json: stages[1].excavate_region: holds no block of the cut") == 0);
 }
