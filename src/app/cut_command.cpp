@@ -30,7 +30,8 @@ std::string picture_path(const std::string& scene_path) {
 
 // The cut as a picture next to the scene (SCENE.png for SCENE.json): blocks coloured by
 // material (in order of first appearance), fixed blocks grey, a legend of both.
-std::string write_cut_picture(const CutModel& cut, const std::string& scene_path) {
+std::string write_cut_picture(const CutModel& cut, const CutScene& scene,
+                              const std::string& scene_path) {
   std::vector<std::string> names;
   std::vector<PictureBlock> blocks;
   constexpr Rgb kFixedGrey{190, 190, 190};
@@ -49,6 +50,8 @@ std::string write_cut_picture(const CutModel& cut, const std::string& scene_path
   if (std::find(cut.fixed.begin(), cut.fixed.end(), true) != cut.fixed.end()) {
     options.legend.push_back({"fixed", kFixedGrey});
   }
+  for (const auto& [from, to] : scene.bolt_lines) options.lines.push_back({from, to});
+  if (!scene.bolt_lines.empty()) options.legend.push_back({"bolts", PictureLine{}.colour});
   const std::string png = picture_path(scene_path);
   write_block_picture(png, blocks, options);
   return png;
@@ -191,7 +194,7 @@ int cut_command(const std::string& model_path, const std::string& out_path) {
     return 0;
   }
   if (interrupt_signal() != 0) return stopped("the scene is in " + out_path + ", no picture drawn");
-  const std::string picture = write_cut_picture(cut, out_path);
+  const std::string picture = write_cut_picture(cut, scene, out_path);
   std::cerr << "dda: cut: picture of the blocks in " << picture << "\n";
   return 0;
 }

@@ -61,6 +61,14 @@ constexpr std::size_t kNumbersDrawn = 25;
 // move a quarter of a typical block's size (p + X (u + theta x (p - c))), coloured by |u|;
 // an arrow from its centroid along u (the 60 largest); and its block number (the 25
 // largest), as report.json numbers blocks.
+// The bolts not broken, as lines between their ends where `world` has them.
+void add_bolt_lines(const World& world, PictureOptions& options) {
+  for (std::size_t i = 0; i < world.bolts.size(); ++i) {
+    if (world.bolts[i].broken) continue;
+    options.lines.push_back({world.bolt_ends[2 * i].current, world.bolt_ends[2 * i + 1].current});
+  }
+}
+
 void write_mechanism_picture(const std::filesystem::path& path, const World& consolidated,
                              const TrialResult& t, const std::string& what) {
   const std::vector<BlockMotion> moved = moved_blocks(consolidated, t.world);
@@ -73,6 +81,7 @@ void write_mechanism_picture(const std::filesystem::path& path, const World& con
     blocks.push_back({b.vertices, b.fixed ? Rgb{190, 190, 190} : Rgb{235, 235, 235}});
   }
   PictureOptions options;
+  add_bolt_lines(t.world, options);
   for (auto it = moved.rbegin(); it != moved.rend(); ++it) {  // the largest on top
     const Block& b = consolidated.blocks[static_cast<std::size_t>(it->block)];
     blocks.push_back({moved_rigidly(b, x * it->displacement, x * it->rotation),
@@ -118,6 +127,7 @@ void write_limit_analysis_picture(const std::filesystem::path& path, const World
                       sequential_colour(it->velocity.norm())});
   }
   PictureOptions options;
+  add_bolt_lines(world, options);
   options.width_px = 1600;
   options.title = "limit-analysis mechanism at F = " + format(la.upper, "%.4f") +
                   " (rigid motion exaggerated: the fastest block moved " + format(shown, "%.3g") +

@@ -199,6 +199,12 @@ Image draw_blocks(const std::vector<PictureBlock>& blocks, const PictureOptions&
     for (std::size_t i = 0; i < n; ++i)
       draw_line(image, L.frame.to_pixel(b.polygon[i]), L.frame.to_pixel(b.polygon[(i + 1) % n]), o.edge);
   }
+  // Lines (bolts) over the blocks, two pixels wide so that they read over the outlines.
+  for (const PictureLine& line : o.lines) {
+    const Vec2 from = L.frame.to_pixel(line.from), to = L.frame.to_pixel(line.to);
+    draw_line(image, from, to, line.colour);
+    draw_line(image, from + Vec2(0.0, 1.0), to + Vec2(0.0, 1.0), line.colour);
+  }
 
   const int label_scale = std::max(1, m.text_scale - 1);
   for (const PictureLabel& label : o.labels) {

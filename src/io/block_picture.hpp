@@ -45,6 +45,13 @@ struct PictureArrow {
   Rgb colour = {200, 0, 0};
 };
 
+// A straight line between two world points (a rock bolt), drawn over the blocks.
+struct PictureLine {
+  Vec2 from = Vec2::Zero();
+  Vec2 to = Vec2::Zero();
+  Rgb colour = {230, 120, 0};  // orange: apart from the materials' and the arrows' colours
+};
+
 // A short text (a block number) centred on a world point, on a white box so it reads over
 // any fill.
 struct PictureLabel {
@@ -58,6 +65,7 @@ struct PictureOptions {
   std::string title;    // drawn centred at the top; may be empty
   std::vector<LegendEntry> legend;      // drawn under the blocks; may be empty
   std::optional<ColourBar> colour_bar;  // drawn under the legend
+  std::vector<PictureLine> lines;       // over the blocks, under the labels (bolts)
   std::vector<PictureLabel> labels;     // over the blocks; text at the title's scale - 1
   std::vector<PictureArrow> arrows;     // over the labels, in order
   Rgb edge = {40, 40, 40};              // block outlines, 1 px

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string_view>
 
@@ -166,6 +167,18 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
     ordered_json bolts = scene.contains("bolts") ? scene["bolts"] : ordered_json::array();
     for (const ordered_json& b : pattern_bolts(model, cut, out.bolts_left_out)) bolts.push_back(b);
     if (!bolts.empty()) scene["bolts"] = bolts;
+  }
+  if (scene.contains("bolts") && scene["bolts"].is_array()) {
+    const auto point = [](const ordered_json& p) {
+      return p.is_array() && p.size() == 2 && p[0].is_number() && p[1].is_number()
+                 ? std::optional<Vec2>(Vec2(p[0].get<double>(), p[1].get<double>()))
+                 : std::nullopt;
+    };
+    for (const ordered_json& b : scene["bolts"]) {
+      if (!b.is_object() || !b.contains("from") || !b.contains("to")) continue;  // the read-back says why
+      const std::optional<Vec2> from = point(b["from"]), to = point(b["to"]);
+      if (from && to) out.bolt_lines.emplace_back(*from, *to);
+    }
   }
   if (settings.contains("base_motion")) {
     ordered_json motion = ordered_json(settings.at("base_motion"));

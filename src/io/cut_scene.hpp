@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -20,6 +21,9 @@ struct CutScene {
   // Bolt patterns some of whose bolts hold nothing (both ends in one block or in fixed rock):
   // one line each, for a note on stderr.
   std::vector<std::string> bolts_left_out;
+  // Every bolt of the scene (the model's own and the patterns'), from head to far end: for
+  // the cut's picture.
+  std::vector<std::pair<Vec2, Vec2>> bolt_lines;
 };
 
 // The scene: description (the model's, or one naming the model), gravity, plane, control,

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/bolt_output.hpp"
 #include "io/contact_output.hpp"
 #include "io/text_file.hpp"
 #include "kinematics/block_matrices.hpp"
@@ -297,7 +298,7 @@ void remove_earlier_run(const fs::path& dir) {
     earlier.push_back(path);
   };
   for (const char* name : {"summary.json", "history.csv", "monitors.csv", "bolts.csv",
-                           "blocks.pvd", "contacts.pvd"}) {
+                           "blocks.pvd", "contacts.pvd", "bolts.pvd"}) {
     take(dir / name);
   }
   if (fs::exists(fs::symlink_status(dir / "vtk", ec)) && !fs::is_directory(dir / "vtk", ec)) {
@@ -307,7 +308,8 @@ void remove_earlier_run(const fs::path& dir) {
   if (fs::is_directory(dir / "vtk", ec)) {
     for (const fs::directory_entry& entry : fs::directory_iterator(dir / "vtk", ec)) {
       const std::string name = entry.path().filename().string();
-      const bool frame = (name.rfind("step_", 0) == 0 || name.rfind("contacts_", 0) == 0) &&
+      const bool frame = (name.rfind("step_", 0) == 0 || name.rfind("contacts_", 0) == 0 ||
+                          name.rfind("bolts_", 0) == 0) &&
                          entry.path().extension() == ".vtp";
       if (frame) take(entry.path());
     }
@@ -379,6 +381,15 @@ void OutputWriter::record(const World& world) {
     contact_frames_.emplace_back(world.time, contacts);
   }
   write_text_file((dir_ / "contacts.pvd").string(), pvd_text(contact_frames_));
+
+  if (!world.bolts.empty()) {
+    const std::string bolts = bolt_frame_name(world.step);
+    write_text_file((dir_ / bolts).string(), bolts_vtp_text(world));
+    if (bolt_frames_.empty() || bolt_frames_.back().second != bolts) {
+      bolt_frames_.emplace_back(world.time, bolts);
+    }
+    write_text_file((dir_ / "bolts.pvd").string(), pvd_text(bolt_frames_));
+  }
 }
 
 // One row per monitor: where its material point is, how far it has moved since the start,
@@ -490,6 +501,7 @@ json energy_json(const World& world) {
 void OutputWriter::finish(const World& world, const RunStats& stats) {
   write_text_file((dir_ / "blocks.pvd").string(), pvd_text(frames_));
   write_text_file((dir_ / "contacts.pvd").string(), pvd_text(contact_frames_));
+  if (!world.bolts.empty()) write_text_file((dir_ / "bolts.pvd").string(), pvd_text(bolt_frames_));
   json modes = json::object();
   const std::vector<ContactModeCounts> counts =
       contact_modes_by_joint(world, scene_.joint_materials.size());

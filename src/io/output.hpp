@@ -46,6 +46,7 @@ class OutputWriter {
   std::optional<StreamedFile> bolts_;     // open when the scene has bolts
   std::vector<std::pair<double, std::string>> frames_;  // (time, relative file name)
   std::vector<std::pair<double, std::string>> contact_frames_;  // the same for contacts
+  std::vector<std::pair<double, std::string>> bolt_frames_;     // and for bolts (with bolts)
 };
 
 }  // namespace dda
