@@ -76,10 +76,7 @@ void print_daylighting_warning(const ModelSpec& spec) {
   std::vector<int> faces;
   bool any = false;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    if (std::find(spec.fixed.edges.begin(), spec.fixed.edges.end(), static_cast<int>(i)) !=
-        spec.fixed.edges.end()) {
-      continue;
-    }
+    if (is_fixed_edge(spec, i)) continue;
     const Vec2& p = d[i];
     const Vec2& q = d[(i + 1) % d.size()];
     const Vec2 edge = q - p;

@@ -41,10 +41,7 @@ double depth_under_free_surface(const ModelSpec& model, const Polygon& block) {
   const Polygon& d = model.domain;
   double least = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < d.size(); ++k) {
-    if (std::find(model.fixed.edges.begin(), model.fixed.edges.end(), static_cast<int>(k)) !=
-        model.fixed.edges.end()) {
-      continue;
-    }
+    if (is_fixed_edge(model, k)) continue;
     const Vec2& p = d[k];
     const Vec2& q = d[(k + 1) % d.size()];
     for (std::size_t i = 0; i < block.size(); ++i) {
@@ -79,6 +76,11 @@ const std::string& group_joint_material(const ModelSpec& model, int group) {
 }
 
 }  // namespace
+
+bool is_fixed_edge(const ModelSpec& model, std::size_t k) {
+  return std::find(model.fixed.edges.begin(), model.fixed.edges.end(), static_cast<int>(k)) !=
+         model.fixed.edges.end();
+}
 
 // splitmix64 (Steele, Lea and Flood 2014) of the seed advanced by k golden-ratio steps: one
 // well-mixed 64-bit value per set, the same on every platform.

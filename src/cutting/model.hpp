@@ -56,6 +56,10 @@ struct ModelSpec {
   double min_block_area = 0.0;  // m^2
 };
 
+// Whether domain edge k (from vertex k to vertex k + 1) is listed in fixed.edges: a support,
+// not part of the free surface.
+bool is_fixed_edge(const ModelSpec& model, std::size_t k);
+
 // A pair of neighbouring blocks whose contacts use a joint material other than "default".
 struct CutJoint {
   int a = 0;

@@ -25,21 +25,11 @@ void cell_array(std::string& s, const World& w, const char* type, const char* na
 
 }  // namespace
 
-std::string bolt_frame_name(int step) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "vtk/bolts_%06d.vtp", step);
-  return buf;
-}
+std::string bolt_frame_name(int step) { return vtk_frame_name("bolts", step); }
 
 std::string bolts_vtp_text(const World& w) {
   const std::size_t n = w.bolts.size();
-  std::string s =
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "  <PolyData>\n";
-  s += "    <Piece NumberOfPoints=\"" + std::to_string(2 * n) +
-       "\" NumberOfVerts=\"0\" NumberOfLines=\"" + std::to_string(n) +
-       "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
+  std::string s = vtp_opening(2 * n, 0, n, 0);
   s += "      <Points>\n";
   s += "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (const BoltEnd& e : w.bolt_ends) {

@@ -33,20 +33,11 @@ std::string num(double x) { return format_full_precision(x); }
 
 }  // namespace
 
-std::string contact_frame_name(int step) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "vtk/contacts_%06d.vtp", step);
-  return buf;
-}
+std::string contact_frame_name(int step) { return vtk_frame_name("contacts", step); }
 
 std::string contacts_vtp_text(const World& w) {
   const std::size_t n = w.contacts.size();
-  std::string s =
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "  <PolyData>\n";
-  s += "    <Piece NumberOfPoints=\"" + std::to_string(n) + "\" NumberOfVerts=\"" +
-       std::to_string(n) + "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
+  std::string s = vtp_opening(n, n, 0, 0);
   s += "      <Points>\n";
   s += "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (const Contact& c : w.contacts) {

@@ -29,6 +29,21 @@ std::string format_full_precision(double x) {
   return std::string(buf, r.ptr);
 }
 
+std::string vtp_opening(std::size_t points, std::size_t verts, std::size_t lines, std::size_t polys) {
+  return "<?xml version=\"1.0\"?>\n"
+         "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+         "  <PolyData>\n"
+         "    <Piece NumberOfPoints=\"" + std::to_string(points) + "\" NumberOfVerts=\"" +
+         std::to_string(verts) + "\" NumberOfLines=\"" + std::to_string(lines) +
+         "\" NumberOfStrips=\"0\" NumberOfPolys=\"" + std::to_string(polys) + "\">\n";
+}
+
+std::string vtk_frame_name(const char* prefix, int step) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "vtk/%s_%06d.vtp", prefix, step);
+  return buf;
+}
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -50,11 +65,7 @@ std::string num(double x) { return format_full_precision(x); }
   throw std::runtime_error("output: " + what + " " + path.string());
 }
 
-std::string frame_name(int step) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "vtk/step_%06d.vtp", step);
-  return buf;
-}
+std::string frame_name(int step) { return vtk_frame_name("step", step); }
 
 // ---- VTK XML PolyData ----
 
@@ -144,13 +155,7 @@ void write_cell_data(std::string& s, const World& w) {
 std::string vtp_text(const World& w) {
   std::size_t points = 0;
   for (const Block& b : w.blocks) points += b.vertices.size();
-  std::string s =
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "  <PolyData>\n";
-  s += "    <Piece NumberOfPoints=\"" + std::to_string(points) +
-       "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"" +
-       std::to_string(w.blocks.size()) + "\">\n";
+  std::string s = vtp_opening(points, 0, 0, w.blocks.size());
   write_points_and_polys(s, w);
   write_cell_data(s, w);
   s += "    </Piece>\n  </PolyData>\n</VTKFile>\n";

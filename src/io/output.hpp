@@ -18,6 +18,13 @@ namespace dda {
 // double.
 std::string format_full_precision(double x);
 
+// The opening of a VTK XML PolyData file with one piece of these counts (every series of
+// the run: blocks, contacts, bolts).
+std::string vtp_opening(std::size_t points, std::size_t verts, std::size_t lines, std::size_t polys);
+
+// A series' frame file name: "vtk/PREFIX_000120.vtp" for step 120.
+std::string vtk_frame_name(const char* prefix, int step);
+
 class OutputWriter {
  public:
   // Creates `dir` (and dir/vtk) if needed, removes an earlier run's files and opens

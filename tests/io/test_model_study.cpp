@@ -13,7 +13,7 @@
 #include "support/cli_helpers.hpp"
 #include "cutting/model.hpp"
 #include "io/cut_scene.hpp"
-#include "io/input_error.hpp"
+#include "support/input_refusal.hpp"
 #include "io/model_reader.hpp"
 #include "io/scene_reader.hpp"
 #include "kinematics/polygon.hpp"
@@ -51,13 +51,10 @@ nlohmann::json study_model() {
 }
 
 std::string model_error(const nlohmann::json& model) {
-  try {
+  return test::refusal_of([&] {
     const Model m = parse_model_text(model.dump(), "model.json");
     cut_scene(m, cut_model(m.spec));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  });
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.hpp"
+#include "support/input_refusal.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/elements/bolt_law.hpp"
 #include "solver/run.hpp"
@@ -47,12 +47,7 @@ World world_of(const nlohmann::json& scene) {
 }
 
 std::string refusal(const nlohmann::json& scene) {
-  try {
-    parse_scene_text(scene.dump(), "scene.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::refusal_of([&] { parse_scene_text(scene.dump(), "scene.json"); });
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "io/input_error.hpp"
+#include "support/input_refusal.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/energy.hpp"
 #include "solver/run.hpp"
@@ -51,12 +51,7 @@ World run_scene(const nlohmann::json& scene) {
 }
 
 std::string refusal(const nlohmann::json& scene) {
-  try {
-    parse_scene_text(scene.dump(), "stack.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::refusal_of([&] { parse_scene_text(scene.dump(), "stack.json"); });
 }
 
 }  // namespace
