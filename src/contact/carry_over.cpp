@@ -53,6 +53,7 @@ void hand_over_bonds(const std::vector<Contact>& previous, const std::vector<cha
       taken[it->second] = 1;
       ContactState& s = c->state;
       s = ContactState{};
+      s.slip_sum = old.state.slip_sum;  // the joint's weakening goes with it
       s.bonded = true;
       s.mode = ContactMode::Lock;
       s.normal_force = old.state.normal_force;

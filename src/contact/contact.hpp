@@ -77,6 +77,9 @@ struct ContactState {
   // spring in series with the slider, so that the friction it carries when it relocks
   // (anchored S / ks behind the vertex) is energy it already held (solver/energy.cpp).
   double spring_energy = 0.0;
+  // How far the contact has slid in accepted steps (m, summed whatever the direction): a
+  // slip-weakening joint's strength follows it (law_at_slip, contact/joint_law.hpp).
+  double slip_sum = 0.0;
 };
 
 // Results of the latest open-close iteration (mode_changes: counted over the loop), written

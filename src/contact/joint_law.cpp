@@ -1,5 +1,6 @@
 #include "contact/joint_law.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dda {
@@ -49,6 +50,15 @@ bool coulomb_slip_bond(const Contact& c, const JointLaw& law) {
 }
 
 }  // namespace
+
+JointLaw law_at_slip(const JointLaw& law, double slip_sum) {
+  if (!(law.residual_slip > 0.0) || !(slip_sum > 0.0)) return law;
+  const double share = std::min(1.0, slip_sum / law.residual_slip);
+  JointLaw at = law;
+  at.tan_phi = law.tan_phi + share * (law.residual_tan_phi - law.tan_phi);
+  at.cohesion = law.cohesion + share * (law.residual_cohesion - law.cohesion);
+  return at;
+}
 
 const char* joint_law_name(JointLawKind kind) {
   return kind == JointLawKind::CoulombSlip ? "coulomb_slip" : "brittle_bond";

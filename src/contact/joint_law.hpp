@@ -36,7 +36,17 @@ struct JointLaw {
   double cohesion = 0.0;          // Pa
   double tensile_strength = 0.0;  // Pa
   JointLawKind kind = JointLawKind::BrittleBond;
+  // Peak to residual (slip weakening): over the first `residual_slip` metres a contact
+  // slides, tan(phi) and the cohesion fall linearly to these; 0: no weakening.
+  double residual_tan_phi = 0.0;
+  double residual_cohesion = 0.0;  // Pa
+  double residual_slip = 0.0;      // m
 };
+
+// The law a contact that has slid `slip_sum` metres (ContactState::slip_sum) acts with: the
+// law itself without weakening, else tan(phi) and the cohesion that far from peak towards
+// residual (linear in the slip, residual from residual_slip on).
+JointLaw law_at_slip(const JointLaw& law, double slip_sum);
 
 // The law's name in scenes, summaries and reports: "brittle_bond" or "coulomb_slip".
 const char* joint_law_name(JointLawKind kind);

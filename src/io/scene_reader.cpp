@@ -213,7 +213,8 @@ int material_index(const Field& f, const std::vector<Material>& materials) {
 constexpr std::string_view kDefaultJoint = "default";
 
 JointMaterial read_joint_material(const std::string& name, const Field& f) {
-  f.expect_keys({"friction_angle", "cohesion", "tensile_strength", "law"});
+  f.expect_keys({"friction_angle", "cohesion", "tensile_strength", "law", "residual_friction_angle",
+                 "residual_cohesion", "residual_slip"});
   JointMaterial j;
   j.name = name;
   if (auto g = f.optional_member("law")) {
@@ -233,6 +234,25 @@ JointMaterial read_joint_material(const std::string& name, const Field& f) {
   j.tensile_strength =
       within_limit(f.member("tensile_strength"), non_negative_number(f.member("tensile_strength")),
                    input::kLargestStress, "Pa");
+  // Slip weakening: residual_slip (m) turns it on; the residual friction angle defaults to
+  // the peak's and the residual cohesion to 0; neither may exceed its peak.
+  const bool residual = f.has("residual_friction_angle") || f.has("residual_cohesion");
+  if (residual && !f.has("residual_slip")) {
+    f.place("residual_slip").fail("required key is missing: the slip (m) over which the joint "
+                                  "falls from peak to residual");
+  }
+  if (auto g = f.optional_member("residual_slip")) {
+    j.residual_slip = within_limit(*g, positive_number(*g), input::kLargestCoordinate, "m");
+    j.residual_friction_angle = j.friction_angle;
+    if (auto r = f.optional_member("residual_friction_angle")) {
+      j.residual_friction_angle = number_in_range(*r, 0.0, false, j.friction_angle, false,
+                                                  "at least 0 and at most the peak friction_angle (degrees)");
+    }
+    if (auto r = f.optional_member("residual_cohesion")) {
+      j.residual_cohesion = number_in_range(*r, 0.0, false, j.cohesion, false,
+                                            "at least 0 and at most the peak cohesion (Pa)");
+    }
+  }
   return j;
 }
 

@@ -148,7 +148,7 @@ void add_contact_terms(const World& world, std::vector<Contact>& contacts,
       // Sliding: friction tan(phi) N (and a Coulomb slip bond's cohesion) on the vertex,
       // against its slip direction.
       const double friction =
-          sliding_resistance(c, world.joint_laws[c.joint], c.state.normal_force);
+          sliding_resistance(c, contact_law(world, c), c.state.normal_force);
       assembler.add_force(c, relative_along(world, ctx, c, projection_point(c), c.tangent),
                           -c.state.slide_sign * friction);
     }
@@ -234,6 +234,12 @@ void add_contact_spring_energy(const std::vector<Contact>& contacts, double pena
 void record_spring_energies(std::vector<Contact>& contacts, double penalty) {
   const double ks = shear_stiffness(penalty);
   for (Contact& c : contacts) c.state.spring_energy = shear_spring_energy(c, ks);
+}
+
+void record_slips(std::vector<Contact>& contacts) {
+  for (Contact& c : contacts) {
+    if (c.state.mode == ContactMode::Slide) c.state.slip_sum += std::abs(c.iterate.slip);
+  }
 }
 
 double deepest_penetration_share(const std::vector<Contact>& contacts) {

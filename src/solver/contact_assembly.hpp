@@ -68,6 +68,9 @@ void add_contact_spring_energy(const std::vector<Contact>& contacts, double pena
 // After an accepted step: each contact keeps its shear spring's energy for the next step's
 // account (ContactState::spring_energy).
 void record_spring_energies(std::vector<Contact>& contacts, double penalty);
+// After an accepted step: each sliding contact's slip added to its slip_sum (what a
+// slip-weakening joint's strength follows).
+void record_slips(std::vector<Contact>& contacts);
 
 // The deepest penetration of any contact after the step, as a share of that contact's
 // allowed penetration (> 1: deeper than allowed); 0 if none.

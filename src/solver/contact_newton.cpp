@@ -81,7 +81,7 @@ ContactNewton::Trial ContactNewton::trial_at(const World& world, const Contact& 
   const Measures& m = measures_[i];
   t.gap = c.gap + evaluate(world, c, m.normal, d);
   t.stretch = c.stretch_from(start_[i].anchor) + evaluate(world, c, m.shear, d);
-  t.response = contact_response(world.joint_laws[c.joint], springs_of(c), t.gap, t.stretch);
+  t.response = contact_response(contact_law(world, c), springs_of(c), t.gap, t.stretch);
   return t;
 }
 
@@ -134,7 +134,7 @@ void ContactNewton::start(const World& world, std::vector<Contact>& contacts,
     c.state.mode = ContactMode::Slide;
     c.state.slide_sign = slid[i];
     c.iterate.shear_force =
-        -c.state.slide_sign * sliding_resistance(c, world.joint_laws[c.joint], c.state.normal_force);
+        -c.state.slide_sign * sliding_resistance(c, contact_law(world, c), c.state.normal_force);
   }
 }
 
@@ -194,7 +194,7 @@ NewtonCheck ContactNewton::check(const World& world, const std::vector<Contact>&
     if (c.state.mode == ContactMode::Slide) {
       const double held = friction_follows ? std::max(0.0, kn_ * (c.state.rest_shift - t.gap))
                                            : c.state.normal_force;
-      solved_strength_[i] = sliding_resistance(c, world.joint_laws[c.joint], held);
+      solved_strength_[i] = sliding_resistance(c, contact_law(world, c), held);
       shear = -c.state.slide_sign * solved_strength_[i];
     }
     solved_mode_[i] = {c.state.mode, c.state.slide_sign};
@@ -258,7 +258,7 @@ bool ContactNewton::friction_coupling(const World& world, const std::vector<Cont
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& c = contacts[i];
     if (c.state.mode != ContactMode::Slide) continue;
-    const JointLaw& law = world.joint_laws[c.joint];
+    const JointLaw law = contact_law(world, c);
     if (law.tan_phi == 0.0) continue;
     const Measure& mn = measures_[i].normal;
     const Measure& mt = measures_[i].tangent;
@@ -287,7 +287,7 @@ double ContactNewton::line_search(const World& world, const std::vector<Contact>
   struct Line {
     double gap = 0.0, dgap = 0.0, stretch = 0.0, dstretch = 0.0;
     ContactSprings springs;
-    const JointLaw* law = nullptr;
+    JointLaw law;
   };
   std::vector<Line> lines;
   lines.reserve(contacts.size());
@@ -304,14 +304,14 @@ double ContactNewton::line_search(const World& world, const std::vector<Contact>
     l.dstretch = evaluate(world, c, ms, step);
     if (l.dgap == 0.0 && l.dstretch == 0.0) continue;
     l.springs = springs_of(c);
-    l.law = &world.joint_laws[c.joint];
+    l.law = contact_law(world, c);
     lines.push_back(l);
   }
   const auto rate = [&](double a) {
     double r = lin + a * quad;
     for (const Line& l : lines) {
       const ContactResponse resp =
-          contact_response(*l.law, l.springs, l.gap + a * l.dgap, l.stretch + a * l.dstretch);
+          contact_response(l.law, l.springs, l.gap + a * l.dgap, l.stretch + a * l.dstretch);
       r -= resp.normal_force * l.dgap + resp.shear_force * l.dstretch;
     }
     return r;

@@ -27,7 +27,7 @@ double relock_anchor(const World& world, const Contact& c, double slide_offset, 
     case ContactMode::Lock: {
       const double stretch = c.stretch_from(c.iterate.start_t_lock);
       const double strength =
-          shear_strength(c, world.joint_laws[c.joint], c.state.normal_force);
+          shear_strength(c, contact_law(world, c), c.state.normal_force);
       return c.t_behind(std::clamp(ks * stretch, -strength, strength) / ks);
     }
   }
@@ -59,7 +59,7 @@ ContactUpdate update_contact_modes(const World& world, std::vector<Contact>& con
     trial.slip = evaluate(world, c, relative_along(world, ctx, c, p0, c.tangent), d);
     trial.slip_tolerance = policy.slip_tolerance;
     trial.open_tolerance = policy.open_tolerance;
-    const JointLaw& law = world.joint_laws[c.joint];
+    const JointLaw law = contact_law(world, c);
     if (c.state.mode == ContactMode::Lock) {
       const Vec2 anchor = c.edge_point(c.state.t_lock);
       const double shear = c.tangent.dot(c.vertex - anchor) +

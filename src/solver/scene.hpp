@@ -111,6 +111,10 @@ struct JointMaterial {
   double cohesion = 0.0;          // Pa, >= 0
   double tensile_strength = 0.0;  // Pa, >= 0
   JointLawKind law = JointLawKind::BrittleBond;
+  // Slip weakening (docs/scene-format.md, joint_materials): residual_slip 0 is none.
+  double residual_friction_angle = 0.0;  // degrees
+  double residual_cohesion = 0.0;        // Pa
+  double residual_slip = 0.0;            // m
 };
 
 // The joint used when a scene of one block names none: frictionless, no strength.

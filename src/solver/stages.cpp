@@ -54,7 +54,13 @@ void enter_stage(World& world, int stage, std::vector<Contact>& contacts) {
 }  // namespace
 
 JointLaw joint_law_of(const JointMaterial& j) {
-  return JointLaw{std::tan(j.friction_angle * M_PI / 180.0), j.cohesion, j.tensile_strength, j.law};
+  JointLaw law{std::tan(j.friction_angle * M_PI / 180.0), j.cohesion, j.tensile_strength, j.law};
+  if (j.residual_slip > 0.0) {
+    law.residual_tan_phi = std::tan(j.residual_friction_angle * M_PI / 180.0);
+    law.residual_cohesion = j.residual_cohesion;
+    law.residual_slip = j.residual_slip;
+  }
+  return law;
 }
 
 void start_stages(World& world, const Scene& scene) {

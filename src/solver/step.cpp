@@ -793,6 +793,7 @@ void commit_step(World& world, const Eigen::VectorXd& d,
   ++world.step;
   commit_step_energy(world, energy_terms, world.contacts, ctx.penalty);
   record_spring_energies(world.contacts, ctx.penalty);
+  record_slips(world.contacts);
   count_step(world, iterations, stats);
 }
 

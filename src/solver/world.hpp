@@ -246,6 +246,12 @@ struct World {
 // A free block's row of 6 x 6 blocks in the global system (BlockSystem): its first slot / 6.
 inline int block_row(const Block& b) { return b.first_dof / 6; }
 
+// The joint law contact c acts with in this step: its joint material's, at the slip it has
+// accumulated (law_at_slip: a slip-weakening joint's strength falls with it).
+inline JointLaw contact_law(const World& world, const Contact& c) {
+  return law_at_slip(world.joint_laws[static_cast<std::size_t>(c.joint)], c.state.slip_sum);
+}
+
 // The block's material parameters.
 inline const MaterialParameters& material_of(const World& world, const Block& b) {
   return world.materials[static_cast<std::size_t>(b.material)].parameters;

@@ -17,6 +17,9 @@ Scene with_bolt_force(Scene scene, double force) {
 
 namespace {
 
+// The first force tried above zero, as a share of the free blocks' weight.
+constexpr double kFirstForceShare = 1e-3;
+
 // The free blocks' weight, N/m: the largest bolt force searched.
 double free_weight(const Scene& scene) {
   double weight = 0.0;
@@ -67,15 +70,26 @@ BoltForceSearch find_bolt_force(const Scene& scene, const FosSettings& settings,
     out.force = 0.0;
     return out;
   }
-  const std::optional<bool> at_largest = stands(largest);
-  if (!at_largest) return out;
-  if (!*at_largest) {
-    out.message = "no bolt force up to the free blocks' weight (" + std::to_string(largest) +
-                  " N/m each bolt) holds the slope at F = " + std::to_string(target_factor);
-    out.failing_force = largest;
-    return out;
+  // Up from a thousandth of the weight, doubling, to the first force that stands: a
+  // pretension far beyond what the slope needs can itself move the blocks it joins (bolts
+  // between free blocks at a million newtons a metre pushed them past the speed limit), so
+  // the bracket is sought from below rather than from the largest force down.
+  double lo = 0.0, hi = kFirstForceShare * largest;  // lo fails, hi is tried
+  for (;;) {
+    const std::optional<bool> s = stands(hi);
+    if (!s) return out;
+    if (*s) break;
+    lo = hi;
+    if (hi >= largest) {
+      out.message = "no bolt force up to the free blocks' weight (" + std::to_string(largest) +
+                    " N/m each bolt) holds the slope at F = " + std::to_string(target_factor) +
+                    ": its mechanism there does not pull on the bolts enough (it passes behind "
+                    "or beside them); longer bolts, or bolts where it moves, may";
+      out.failing_force = lo;
+      return out;
+    }
+    hi = std::min(2.0 * hi, largest);
   }
-  double lo = 0.0, hi = largest;  // lo fails, hi stands
   while (hi - lo > kBoltForceTolerance * hi) {
     const double mid = 0.5 * (lo + hi);
     const std::optional<bool> s = stands(mid);

@@ -72,6 +72,8 @@ JointLaw reduced_joint_law(const JointLaw& law, double factor) {
   r.tan_phi = law.tan_phi / factor;
   r.cohesion = law.cohesion / factor;
   r.tensile_strength = law.tensile_strength / factor;
+  r.residual_tan_phi = law.residual_tan_phi / factor;
+  r.residual_cohesion = law.residual_cohesion / factor;
   return r;
 }
 
