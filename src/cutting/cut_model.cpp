@@ -1,7 +1,9 @@
 #include "cutting/model.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <optional>
 
 #include "cutting/block_labels.hpp"
 #include "kinematics/polygon.hpp"
@@ -21,7 +23,7 @@ double label_tolerance(const Polygon& domain) {
 std::string block_material(const ModelSpec& model, const Polygon& block, double tol) {
   const Vec2 p = interior_point(block, tol);
   for (const RegionModel& region : model.regions) {
-    if (contains_point(region.polygon, p)) return region.material;
+    if (!region.material.empty() && contains_point(region.polygon, p)) return region.material;
   }
   return model.material;
 }
@@ -64,6 +66,34 @@ bool block_fixed(const ModelSpec& model, const Polygon& block, double tol) {
     return true;
   }
   return model.fixed.polygon && lies_within(block, *model.fixed.polygon, tol);
+}
+
+// Where two blocks meet: the middle of the longest stretch of boundary they share (edges of
+// the one on edges of the other, within `tol` of each other's line). nullopt: no stretch.
+std::optional<Vec2> shared_middle(const Polygon& a, const Polygon& b, double tol) {
+  std::optional<Vec2> best;
+  double longest = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Vec2& p = a[i];
+    const Vec2 pq = a[(i + 1) % a.size()] - p;
+    const double l2 = pq.squaredNorm();
+    if (!(l2 > 0.0)) continue;
+    const double length = std::sqrt(l2);
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const Vec2& r = b[j];
+      const Vec2& s = b[(j + 1) % b.size()];
+      if (std::abs(cross(pq, r - p)) > tol * length || std::abs(cross(pq, s - p)) > tol * length) {
+        continue;  // not on this edge's line
+      }
+      const double t0 = std::max(0.0, std::min((r - p).dot(pq), (s - p).dot(pq)) / l2);
+      const double t1 = std::min(1.0, std::max((r - p).dot(pq), (s - p).dot(pq)) / l2);
+      if ((t1 - t0) * length > longest) {
+        longest = (t1 - t0) * length;
+        best = p + 0.5 * (t0 + t1) * pq;
+      }
+    }
+  }
+  return best;
 }
 
 // The joint material of the segments of group `group` (model_segments' numbering).
@@ -116,7 +146,22 @@ CutModel cut_model(const ModelSpec& model) {
     out.fixed.push_back(block_fixed(model, block, tol));
   }
   for (const BlockAdjacency& pair : out.cut.adjacency) {
-    const std::string& name = group_joint_material(model, pair.group);
+    std::string name = group_joint_material(model, pair.group);
+    // A region with a joint material gives it to the pairs whose shared boundary's middle
+    // lies in it (the first such region in list order), whatever joints made the boundary.
+    if (std::any_of(model.regions.begin(), model.regions.end(),
+                    [](const RegionModel& r) { return !r.joint_material.empty(); })) {
+      const std::optional<Vec2> middle =
+          shared_middle(out.cut.blocks[static_cast<std::size_t>(pair.a)],
+                        out.cut.blocks[static_cast<std::size_t>(pair.b)], tol);
+      for (const RegionModel& region : model.regions) {
+        if (region.joint_material.empty() || !middle) continue;
+        if (contains_point(region.polygon, *middle)) {
+          name = region.joint_material;
+          break;
+        }
+      }
+    }
     if (name != kDefaultJointMaterial) out.joints.push_back({pair.a, pair.b, name});
   }
   return out;

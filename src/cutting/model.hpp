@@ -30,9 +30,12 @@ struct SingleJointModel {
   std::string joint_material = kDefaultJointMaterial;
 };
 
+// A zone of the model: the material of the blocks in it (empty: not this region's to say),
+// and the joint material of the joints in it (empty: the sets' and single joints' own).
 struct RegionModel {
   Polygon polygon;
   std::string material;
+  std::string joint_material;
 };
 
 // Blocks fixed in place: those with an edge on one of the domain's edges listed (edge i runs

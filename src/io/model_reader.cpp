@@ -207,11 +207,21 @@ SingleJointModel read_single_joint(const Field& f, const std::vector<std::string
   return joint;
 }
 
-RegionModel read_region(const Field& f, const std::vector<std::string>& materials) {
-  f.expect_keys({"polygon", "material"});
+// A region: a polygon and a material for its blocks, a joint material for its joints, or
+// both.
+RegionModel read_region(const Field& f, const std::vector<std::string>& materials,
+                        const std::vector<std::string>& joint_materials) {
+  f.expect_keys({"polygon", "material", "joint_material"});
   RegionModel region;
   region.polygon = read_polygon(f.member("polygon"));
-  region.material = known_name(f.member("material"), materials, "material");
+  if (!f.has("material") && !f.has("joint_material")) {
+    f.fail("give \"material\" (of the blocks in the region), \"joint_material\" (of the joints "
+           "in it), or both");
+  }
+  if (auto g = f.optional_member("material")) region.material = known_name(*g, materials, "material");
+  if (auto g = f.optional_member("joint_material")) {
+    region.joint_material = known_name(*g, joint_materials, "joint material");
+  }
   return region;
 }
 
@@ -356,7 +366,7 @@ Model read_model(const Field& root, const std::string& source) {
   }
   if (auto regions = root.optional_member("regions")) {
     for (const Field& r : regions->elements(0, "")) {
-      spec.regions.push_back(read_region(r, materials));
+      spec.regions.push_back(read_region(r, materials, joint_materials));
     }
   }
   if (auto g = root.optional_member("fixed")) spec.fixed = read_fixed(*g, spec.domain.size());

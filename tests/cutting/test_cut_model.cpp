@@ -433,3 +433,36 @@ TEST_CASE("fixed.depth fixes the blocks lying wholly deeper than it under the fr
   text = edit(text, "\"edges\": [0, 1, 3]", "\"edges\": [0, 1, 2, 3]");
   CHECK(error_of(text).find("model.json: fixed.depth: every domain edge is in \"edges\"") == 0);
 }
+
+TEST_CASE("a region's joint material goes to the pairs whose shared boundary lies in it",
+          "[cut]") {
+  // The test model's right column below y = 5: its bedding joints at y = 1.25 and 3.75 (the
+  // middles of the shared edges at x = 7.5) become "spare"; the fault at x = 5 is outside
+  // (x >= 5.5), and so is every other joint.
+  const std::string text =
+      edit(kModel, "\"regions\": [{\"polygon\": [[-1, -1], [5, -1], [5, 11], [-1, 11]], \"material\": \"weak\"}]",
+           "\"regions\": [{\"polygon\": [[-1, -1], [5, -1], [5, 11], [-1, 11]], \"material\": \"weak\"}, "
+           "{\"polygon\": [[5.5, -1], [11, -1], [11, 5], [5.5, 5]], \"joint_material\": \"spare\"}]");
+  const Model model = parse_model_text(text, "model.json");
+  const CutModel cut = cut_model(model.spec);
+  int bedding = 0, fault = 0, spare = 0;
+  for (const CutJoint& j : cut.joints) {
+    if (j.joint_material == "spare") {
+      ++spare;
+      const Vec2 a = polygon_moments(cut.cut.blocks[static_cast<std::size_t>(j.a)]).centroid;
+      const Vec2 b = polygon_moments(cut.cut.blocks[static_cast<std::size_t>(j.b)]).centroid;
+      CHECK(std::min(a.x(), b.x()) > 5.0);                // both in the right column
+      CHECK(0.5 * (a.y() + b.y()) < 5.0);                  // below y = 5
+    }
+    bedding += j.joint_material == "bedding" ? 1 : 0;
+    fault += j.joint_material == "fault" ? 1 : 0;
+  }
+  CHECK(spare == 2);
+  CHECK(bedding == 6);
+  CHECK(fault == 5);
+  // The blocks' materials are the first region's alone (the second gives none).
+  CHECK(std::count(cut.materials.begin(), cut.materials.end(), "weak") == 5);
+  // A region with neither key is refused at its place.
+  CHECK(error_of(edit(kModel, ", \"material\": \"weak\"}]", "}]"))
+            .find("model.json: regions[0]: give \"material\"") == 0);
+}
