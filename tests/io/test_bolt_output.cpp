@@ -4,9 +4,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 
 #include "support/cli_helpers.hpp"
@@ -15,17 +13,6 @@
 namespace fs = std::filesystem;
 using dda::test::run_command;
 using dda::test::shell_quote;
-
-namespace {
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-}  // namespace
 
 TEST_CASE("a run with bolts writes bolts.csv, the bolts' VTK series and their end state, and one "
           "without writes none",
@@ -39,17 +26,17 @@ TEST_CASE("a run with bolts writes bolts.csv, the bolts' VTK series and their en
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   // The scene runs 500 steps with output every 50: 11 output steps, one bolt.
-  const std::string csv = read(out / "bolts.csv");
+  const std::string csv = dda::test::read_file(out / "bolts.csv");
   CHECK(csv.rfind("step,time,bolt,force,plastic_extension,broken,length\n", 0) == 0);
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 11);
-  const std::string frame = read(out / "vtk" / "bolts_000500.vtp");
+  const std::string frame = dda::test::read_file(out / "vtk" / "bolts_000500.vtp");
   CHECK(frame.find("NumberOfPoints=\"2\"") != std::string::npos);
   CHECK(frame.find("NumberOfLines=\"1\"") != std::string::npos);
   CHECK(frame.find("Name=\"force\"") != std::string::npos);
-  const std::string pvd = read(out / "bolts.pvd");
+  const std::string pvd = dda::test::read_file(out / "bolts.pvd");
   CHECK(std::count(pvd.begin(), pvd.end(), '\n') > 11);
   CHECK(pvd.find("vtk/bolts_000500.vtp") != std::string::npos);
-  const nlohmann::json summary = nlohmann::json::parse(read(out / "summary.json"));
+  const nlohmann::json summary = nlohmann::json::parse(dda::test::read_file(out / "summary.json"));
   REQUIRE(summary["bolts"].size() == 1);
   CHECK(summary["bolts"][0]["name"] == "B1");
   // The bolt holds the block: its force is what the last bolts.csv row says.
@@ -67,5 +54,5 @@ TEST_CASE("a run with bolts writes bolts.csv, the bolts' VTK series and their en
   CHECK_FALSE(fs::exists(plain / "bolts.csv"));
   CHECK_FALSE(fs::exists(plain / "bolts.pvd"));
   CHECK_FALSE(fs::exists(plain / "vtk" / "bolts_000000.vtp"));
-  CHECK_FALSE(nlohmann::json::parse(read(plain / "summary.json")).contains("bolts"));
+  CHECK_FALSE(nlohmann::json::parse(dda::test::read_file(plain / "summary.json")).contains("bolts"));
 }
