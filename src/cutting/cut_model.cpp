@@ -11,29 +11,12 @@
 namespace dda {
 namespace {
 
-// Tolerance of the geometric labels (fixed by an edge or a polygon, a centroid on a block's
-// boundary): 1e-9 of the domain's bounding-box diagonal. The blocks' corners are exact
-// intersections rounded to doubles once (~1e-16 relative), so a block edge on the domain's
-// boundary is on it to far better than this, and no real block is this thin.
-double label_tolerance(const Polygon& domain) {
-  const Box box = bounding_box(domain);
-  return 1e-9 * (box.max - box.min).norm();
-}
-
 std::string block_material(const ModelSpec& model, const Polygon& block, double tol) {
   const Vec2 p = interior_point(block, tol);
   for (const RegionModel& region : model.regions) {
     if (!region.material.empty() && contains_point(region.polygon, p)) return region.material;
   }
   return model.material;
-}
-
-// The distance from point x to segment a-b.
-double point_segment_distance(const Vec2& x, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0.0 ? std::clamp((x - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (x - (a + t * ab)).norm();
 }
 
 // How deep the block lies under the free surface: the least distance between its edges and
@@ -49,8 +32,8 @@ double depth_under_free_surface(const ModelSpec& model, const Polygon& block) {
     for (std::size_t i = 0; i < block.size(); ++i) {
       const Vec2& a = block[i];
       const Vec2& b = block[(i + 1) % block.size()];
-      least = std::min({least, point_segment_distance(a, p, q), point_segment_distance(p, a, b),
-                        point_segment_distance(q, a, b)});
+      least = std::min({least, distance_to_segment(a, p, q), distance_to_segment(p, a, b),
+                        distance_to_segment(q, a, b)});
     }
   }
   return least;
@@ -107,6 +90,11 @@ const std::string& group_joint_material(const ModelSpec& model, int group) {
 
 }  // namespace
 
+double label_tolerance(const Polygon& domain) {
+  const Box box = bounding_box(domain);
+  return 1e-9 * (box.max - box.min).norm();
+}
+
 bool is_fixed_edge(const ModelSpec& model, std::size_t k) {
   return std::find(model.fixed.edges.begin(), model.fixed.edges.end(), static_cast<int>(k)) !=
          model.fixed.edges.end();
@@ -145,12 +133,13 @@ CutModel cut_model(const ModelSpec& model) {
     out.materials.push_back(block_material(model, block, tol));
     out.fixed.push_back(block_fixed(model, block, tol));
   }
+  // A region with a joint material gives it to the pairs whose shared boundary's middle
+  // lies in it (the first such region in list order), whatever joints made the boundary.
+  const bool joint_regions = std::any_of(model.regions.begin(), model.regions.end(),
+                                         [](const RegionModel& r) { return !r.joint_material.empty(); });
   for (const BlockAdjacency& pair : out.cut.adjacency) {
     std::string name = group_joint_material(model, pair.group);
-    // A region with a joint material gives it to the pairs whose shared boundary's middle
-    // lies in it (the first such region in list order), whatever joints made the boundary.
-    if (std::any_of(model.regions.begin(), model.regions.end(),
-                    [](const RegionModel& r) { return !r.joint_material.empty(); })) {
+    if (joint_regions) {
       const std::optional<Vec2> middle =
           shared_middle(out.cut.blocks[static_cast<std::size_t>(pair.a)],
                         out.cut.blocks[static_cast<std::size_t>(pair.b)], tol);

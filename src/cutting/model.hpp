@@ -59,6 +59,13 @@ struct ModelSpec {
   double min_block_area = 0.0;  // m^2
 };
 
+// Tolerance of the geometric labels (fixed by an edge or a polygon, a centroid on a block's
+// boundary, the block a region or an excavation holds): 1e-9 of the domain's bounding-box
+// diagonal. The blocks' corners are exact intersections rounded to doubles once (~1e-16
+// relative), so a block edge on the domain's boundary is on it to far better than this, and
+// no real block is this thin.
+double label_tolerance(const Polygon& domain);
+
 // Whether domain edge k (from vertex k to vertex k + 1) is listed in fixed.edges: a support,
 // not part of the free surface.
 bool is_fixed_edge(const ModelSpec& model, std::size_t k);

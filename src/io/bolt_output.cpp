@@ -1,6 +1,5 @@
 #include "io/bolt_output.hpp"
 
-#include <cmath>
 #include <cstdio>
 #include <functional>
 
@@ -54,13 +53,8 @@ std::string bolts_vtp_text(const World& w) {
   cell_array(s, w, "Float64", "force", [&w](std::size_t i) { return num(w.bolts[i].force); });
   cell_array(s, w, "Float64", "plastic_extension",
              [&w](std::size_t i) { return num(w.bolts[i].plastic_extension); });
-  cell_array(s, w, "Int32", "yielding", [&w](std::size_t i) {
-    const Bolt& b = w.bolts[i];
-    return std::string(!b.broken && std::isfinite(b.law.yield_force) &&
-                               std::abs(b.force) >= b.law.yield_force
-                           ? "1"
-                           : "0");
-  });
+  cell_array(s, w, "Int32", "yielding",
+             [&w](std::size_t i) { return std::string(bolt_yielding(w.bolts[i]) ? "1" : "0"); });
   cell_array(s, w, "Int32", "broken", [&w](std::size_t i) { return std::string(w.bolts[i].broken ? "1" : "0"); });
   s += "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
   return s;

@@ -199,8 +199,7 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
     // A stage's excavate_region: the blocks whose interior point (as regions place blocks)
     // lies in it, not removed by an earlier stage, as the scene stage's "excavate".
     std::vector<bool> removed(cut.cut.blocks.size(), false);
-    const Box box = bounding_box(model.spec.domain);
-    const double tol = 1e-9 * (box.max - box.min).norm();
+    const double tol = label_tolerance(model.spec.domain);
     for (std::size_t k = 0; k < model.stage_excavations.size() && k < stages.size(); ++k) {
       if (!model.stage_excavations[k]) continue;
       ordered_json list = ordered_json::array();

@@ -1,7 +1,6 @@
 #include "io/output.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <charconv>
 #include <cstdio>
 #include <stdexcept>
@@ -451,8 +450,7 @@ json bolts_json(const World& world) {
     json entry = {{"name", b.name},
                   {"force", b.force},
                   {"plastic_extension", b.plastic_extension},
-                  {"yielding", !b.broken && std::isfinite(b.law.yield_force) &&
-                                   std::abs(b.force) >= b.law.yield_force},
+                  {"yielding", bolt_yielding(b)},
                   {"broken", b.broken}};
     if (b.broken) entry["broken_at"] = b.broken_at;
     out.push_back(entry);

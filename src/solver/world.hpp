@@ -152,6 +152,12 @@ struct Bolt {
   double broken_at = 0.0;          // s: the time of the step it broke in
 };
 
+// Whether bolt b, not broken, holds its capacity now (the mode its next step starts in is
+// yielding): what the outputs call "yielding".
+inline bool bolt_yielding(const Bolt& b) {
+  return !b.broken && start_bolt_mode(b.law, b.force) != BoltMode::Elastic;
+}
+
 // The energy account's running sums since the start of the run (J per metre of thickness;
 // solver/energy.hpp, docs/energy-balance.md).
 struct EnergyLedger {

@@ -158,12 +158,6 @@ void commit_bolts(World& world, const Eigen::VectorXd& d, const StepContext& ctx
 
 }  // namespace
 
-double bolt_extension(const World& world, const StepContext& ctx, std::size_t i,
-                      const Eigen::VectorXd& d) {
-  const BoltGradient g = bolt_gradient(world, ctx, i);
-  return g.defined ? extension_of(world, i, g, d) : 0.0;
-}
-
 const ForceElement kBoltElement{assemble_bolts,   book_bolts,        add_bolt_energy,
                                 start_bolt_modes, follow_bolt_modes, commit_bolts};
 

@@ -15,9 +15,4 @@ namespace dda {
 
 extern const ForceElement kBoltElement;
 
-// Bolt i's extension over the step for the increments d (m; positive lengthening), with the
-// step's T.
-double bolt_extension(const World& world, const StepContext& ctx, std::size_t i,
-                      const Eigen::VectorXd& d);
-
 }  // namespace dda
