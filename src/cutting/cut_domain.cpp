@@ -180,23 +180,52 @@ Point along(const Point& a, const Point& b, double t) {
   return a + Kernel::FT(t) * (b - a);
 }
 
-// The vertices of a boundary cycle, those between two collinear edges dropped (exactly).
-template <class Circulator>
-std::vector<Arrangement::Vertex_const_handle> cycle_vertices(Circulator first) {
-  std::vector<Arrangement::Vertex_const_handle> all;
-  Circulator c = first;
-  do {
-    all.push_back(c->source());
-  } while (++c != first);
-  std::vector<Arrangement::Vertex_const_handle> kept;
-  const std::size_t n = all.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!CGAL::collinear(all[(i + n - 1) % n]->point(), all[i]->point(),
-                         all[(i + 1) % n]->point())) {
-      kept.push_back(all[i]);
+// A corner of a boundary cycle (a vertex between two edges that are not collinear, decided
+// exactly) and the lengths, by joint group, of the halfedges from it to the next corner: one
+// edge of the block, which may be several halfedges where other traces end on it.
+struct Corner {
+  Arrangement::Vertex_const_handle vertex;
+  std::map<int, double> lengths;  // group -> length of the span's halfedges
+};
+
+// The group of an edge: that of its longest part (the lower group on a tie), -1 if none.
+int longest_group(const std::map<int, double>& lengths) {
+  int group = kNoGroup;
+  double longest = -1.0;
+  for (const auto& [g, length] : lengths) {  // groups in increasing order
+    if (length > longest) {
+      longest = length;
+      group = g;
     }
   }
-  return kept;
+  return group;
+}
+
+// The corners of a boundary cycle in its order, from the first corner at or after `first`.
+template <class Circulator>
+std::vector<Corner> cycle_corners(Circulator first) {
+  std::vector<Circulator> all;
+  Circulator c = first;
+  do {
+    all.push_back(c);
+  } while (++c != first);
+  const std::size_t n = all.size();
+  const auto kept = [&](std::size_t i) {
+    return !CGAL::collinear(all[(i + n - 1) % n]->source()->point(), all[i]->source()->point(),
+                            all[(i + 1) % n]->source()->point());
+  };
+  std::size_t start = 0;
+  while (start < n && !kept(start)) ++start;
+  std::vector<Corner> corners;
+  if (start == n) return corners;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = (start + k) % n;
+    if (kept(i)) corners.push_back({all[i]->source(), {}});
+    const double length =
+        (approximate(all[i]->target()->point()) - approximate(all[i]->source()->point())).norm();
+    corners.back().lengths[all[i]->curve().data()] += length;
+  }
+  return corners;
 }
 
 // The nearest point where the ray from `from` in direction `d` meets an edge, other than
@@ -481,11 +510,21 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
     if (f->is_unbounded()) continue;
     Polygon block;
-    for (const auto v : cycle_vertices(f->outer_ccb())) {
-      const Vec2& p = corner.at(&*v);
-      if (block.empty() || block.back() != p) block.push_back(p);
+    std::vector<std::map<int, double>> edge_lengths;  // per edge of `block`: group -> length
+    for (const Corner& k : cycle_corners(f->outer_ccb())) {
+      const Vec2& p = corner.at(&*k.vertex);
+      if (block.empty() || block.back() != p) {
+        block.push_back(p);
+        edge_lengths.emplace_back();
+      }
+      // A corner rounded onto the one before it adds its edge's span to that one's.
+      for (const auto& [g, length] : k.lengths) edge_lengths.back()[g] += length;
     }
-    while (block.size() > 1 && block.back() == block.front()) block.pop_back();
+    while (block.size() > 1 && block.back() == block.front()) {
+      block.pop_back();
+      for (const auto& [g, length] : edge_lengths.back()) edge_lengths[edge_lengths.size() - 2][g] += length;
+      edge_lengths.pop_back();
+    }
     // A face that is no more than a line once rounded (narrower than 1e-11 of its size, so
     // that the scene reader, at 1e-12, would find no area) is left out: nothing is lost.
     const Box b = bounding_box(block);
@@ -496,6 +535,9 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
     }
     block_of[&*f] = static_cast<int>(result.blocks.size());
     result.blocks.push_back(std::move(block));
+    std::vector<int> groups;
+    for (const auto& lengths : edge_lengths) groups.push_back(longest_group(lengths));
+    result.edge_groups.push_back(std::move(groups));
   }
   result.adjacency = adjacency(arr, block_of);
   return result;

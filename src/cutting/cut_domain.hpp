@@ -47,6 +47,10 @@ struct CutResult {
   int collapsed_faces = 0;
   // Every pair of blocks sharing an edge of positive length, sorted by (a, b).
   std::vector<BlockAdjacency> adjacency;
+  // Per block, per edge (edge k from vertex k to vertex k + 1): the group of the joint the
+  // edge lies on (where several segments make one edge, the group of its longest part), -1
+  // for the domain's boundary and hole bridges.
+  std::vector<std::vector<int>> edge_groups;
 };
 
 // Cuts the counter-clockwise simple polygon `domain` by the segments `joints` (which may

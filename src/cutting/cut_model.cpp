@@ -137,21 +137,39 @@ CutModel cut_model(const ModelSpec& model) {
   // lies in it (the first such region in list order), whatever joints made the boundary.
   const bool joint_regions = std::any_of(model.regions.begin(), model.regions.end(),
                                          [](const RegionModel& r) { return !r.joint_material.empty(); });
+  const auto region_joint_material = [&](const Vec2& p) -> const std::string* {
+    for (const RegionModel& region : model.regions) {
+      if (!region.joint_material.empty() && contains_point(region.polygon, p)) {
+        return &region.joint_material;
+      }
+    }
+    return nullptr;
+  };
   for (const BlockAdjacency& pair : out.cut.adjacency) {
     std::string name = group_joint_material(model, pair.group);
     if (joint_regions) {
       const std::optional<Vec2> middle =
           shared_middle(out.cut.blocks[static_cast<std::size_t>(pair.a)],
                         out.cut.blocks[static_cast<std::size_t>(pair.b)], tol);
-      for (const RegionModel& region : model.regions) {
-        if (region.joint_material.empty() || !middle) continue;
-        if (contains_point(region.polygon, *middle)) {
-          name = region.joint_material;
-          break;
-        }
-      }
+      if (const std::string* r = middle ? region_joint_material(*middle) : nullptr) name = *r;
     }
     if (name != kDefaultJointMaterial) out.joints.push_back({pair.a, pair.b, name});
+  }
+  // Each edge on a joint: that joint's material, or the region's its middle lies in.
+  for (std::size_t i = 0; i < out.cut.blocks.size(); ++i) {
+    const Polygon& block = out.cut.blocks[i];
+    std::vector<std::string> names;
+    for (std::size_t k = 0; k < block.size(); ++k) {
+      const int group = out.cut.edge_groups[i][k];
+      if (group < 0) {
+        names.emplace_back();
+        continue;
+      }
+      const Vec2 middle = 0.5 * (block[k] + block[(k + 1) % block.size()]);
+      const std::string* r = joint_regions ? region_joint_material(middle) : nullptr;
+      names.push_back(r != nullptr ? *r : group_joint_material(model, group));
+    }
+    out.edge_joint_materials.push_back(std::move(names));
   }
   return out;
 }

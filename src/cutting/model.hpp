@@ -82,6 +82,11 @@ struct CutModel {
   std::vector<std::string> materials;   // per block
   std::vector<bool> fixed;              // per block
   std::vector<CutJoint> joints;         // pairs of a non-default joint material, by (a, b)
+  // Per block, per edge: the joint material of the joint the edge lies on (by its set or
+  // single joint, or the region its middle lies in); empty for an edge on no joint (the
+  // domain's boundary, a hole bridge), whose contacts take their pair's. A contact takes the
+  // material of the edge it lies on (docs/model-format.md, "Joint materials").
+  std::vector<std::vector<std::string>> edge_joint_materials;
 };
 
 // The seed of joint set k's traces: the model's seed and k mixed (splitmix64), so that the

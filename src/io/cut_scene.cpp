@@ -18,11 +18,22 @@ namespace {
 namespace fs = std::filesystem;
 using ordered_json = nlohmann::ordered_json;
 
-ordered_json block_json(const Polygon& vertices, const std::string& material, bool fixed) {
+// `edge_joints`: the joint material of each edge ("" none); written only when an edge's is
+// not the default, so that a block on default joints alone reads as before.
+ordered_json block_json(const Polygon& vertices, const std::string& material, bool fixed,
+                        const std::vector<std::string>& edge_joints) {
   ordered_json points = ordered_json::array();
   for (const Vec2& v : vertices) points.push_back({v.x(), v.y()});
   ordered_json block = {{"vertices", points}, {"material", material}};
   if (fixed) block["fixed"] = true;
+  const bool any = std::any_of(edge_joints.begin(), edge_joints.end(), [](const std::string& n) {
+    return !n.empty() && n != kDefaultJointMaterial;
+  });
+  if (any) {
+    ordered_json names = ordered_json::array();
+    for (const std::string& n : edge_joints) names.push_back(n.empty() ? ordered_json() : ordered_json(n));
+    block["edge_joints"] = names;
+  }
   return block;
 }
 
@@ -135,6 +146,11 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
   }
   std::set<std::string> used{kDefaultJointMaterial};
   for (const CutJoint& j : cut.joints) used.insert(j.joint_material);
+  for (const auto& edges : cut.edge_joint_materials) {
+    for (const std::string& n : edges) {
+      if (!n.empty()) used.insert(n);
+    }
+  }
   ordered_json joint_materials = ordered_json::object();
   for (const auto& [name, value] : settings.at("joint_materials").items()) {
     if (used.count(name) != 0) {
@@ -146,7 +162,8 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
   scene["joint_materials"] = joint_materials;
   ordered_json blocks = ordered_json::array();
   for (std::size_t i = 0; i < cut.cut.blocks.size(); ++i) {
-    blocks.push_back(block_json(cut.cut.blocks[i], cut.materials[i], cut.fixed[i]));
+    blocks.push_back(block_json(cut.cut.blocks[i], cut.materials[i], cut.fixed[i],
+                                cut.edge_joint_materials[i]));
   }
   scene["blocks"] = blocks;
   ordered_json joints = ordered_json::array();

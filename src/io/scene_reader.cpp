@@ -332,6 +332,24 @@ std::vector<JointSpec> read_joints(const Field& f, std::size_t block_count,
   return joints;
 }
 
+// A block's "edge_joints": one entry per edge, a joint material's name or null (the edge lies
+// on no joint: its contacts take their pair's material).
+std::vector<int> read_edge_joints(const Field& f, std::size_t edge_count,
+                                  const std::vector<JointMaterial>& joint_materials) {
+  const std::vector<Field> entries = f.elements(
+      1, "give one joint material name (or null) per edge, edge k from vertex k to vertex k + 1");
+  if (entries.size() != edge_count) {
+    f.fail("expected one entry per edge (" + std::to_string(edge_count) +
+           ", as the block has vertices), got " + std::to_string(entries.size()));
+  }
+  std::vector<int> edges;
+  edges.reserve(entries.size());
+  for (const Field& e : entries) {
+    edges.push_back(e.value().is_null() ? -1 : joint_material_index(e, joint_materials));
+  }
+  return edges;
+}
+
 // A joint material that no pair of blocks uses is likely a mistake (a pair left out of
 // "joints", or a misspelt name there), but not one that stops the run.
 std::vector<std::string> unused_joint_material_warnings(const Scene& scene,
@@ -339,6 +357,11 @@ std::vector<std::string> unused_joint_material_warnings(const Scene& scene,
   std::vector<bool> used(scene.joint_materials.size(), false);
   used[0] = true;  // "default": every pair not in "joints"
   for (const JointSpec& j : scene.joints) used[j.material] = true;
+  for (const BlockSpec& b : scene.blocks) {
+    for (int m : b.edge_joints) {
+      if (m >= 0) used[static_cast<std::size_t>(m)] = true;
+    }
+  }
   std::vector<std::string> warnings;
   for (std::size_t i = 0; i < used.size(); ++i) {
     if (used[i]) continue;
@@ -558,7 +581,8 @@ void check_plastic_start(const Field& f, const BlockSpec& b, const Material& m) 
 }
 
 BlockSpec read_block(const Field& f, const std::vector<Material>& materials) {
-  f.expect_keys({"vertices", "material", "fixed", "velocity", "initial_stress", "rigid"});
+  // "edge_joints" is read once the joint materials are (read_edge_joints).
+  f.expect_keys({"vertices", "material", "fixed", "velocity", "initial_stress", "rigid", "edge_joints"});
   BlockSpec b;
   b.vertices = read_polygon(f.member("vertices"));
   b.material = material_index(f.member("material"), materials);
@@ -879,6 +903,12 @@ Scene read_scene(const Field& root, const std::string& source) {
   scene.joint_materials = read_joint_materials(root, scene.blocks.size());
   if (auto joints = root.optional_member("joints")) {
     scene.joints = read_joints(*joints, scene.blocks.size(), scene.joint_materials);
+  }
+  for (std::size_t i = 0; i < block_fields.size(); ++i) {
+    if (auto g = block_fields[i].optional_member("edge_joints")) {
+      scene.blocks[i].edge_joints =
+          read_edge_joints(*g, scene.blocks[i].vertices.size(), scene.joint_materials);
+    }
   }
   if (auto pins = root.optional_member("pins")) {
     for (const Field& p : pins->elements(0, "")) scene.pins.push_back(read_pin(p, scene.blocks));

@@ -136,6 +136,10 @@ struct BlockSpec {
   // Rigid: 3 unknowns (u0, v0, r0), no strain, no stress (initial_stress must be zero).
   // Unset: the material's Material::rigid; set, it overrides the material's.
   std::optional<bool> rigid;
+  // Per edge (edge k from vertex k to vertex k + 1): the joint material (index into
+  // Scene::joint_materials) of the joint the edge lies on, -1 for none; contacts on an edge
+  // with one act with it, the others with their pair's (JointSpec). Empty: none.
+  std::vector<int> edge_joints;
 };
 
 // Whether block `b` of material `m` is rigid: its own key if given, else its material's.

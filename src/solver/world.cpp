@@ -57,6 +57,7 @@ World make_world(const Scene& scene) {
     b.vertices = spec.vertices;
     b.material = spec.material;
     b.fixed = spec.fixed;
+    b.edge_joints = spec.edge_joints;
     // The reader refuses an initial stress or a plastic material for a rigid block.
     b.rigid = is_rigid(spec, mat);
     b.initial_stress = spec.initial_stress;
@@ -131,6 +132,14 @@ void set_reaches(World& world, double dt) {
     const double translation = k * b.velocity.head<2>().norm() * dt + fall;
     b.reach = b.step_limit + kReachSafety * translation;
   }
+}
+
+int joint_of_contact(const World& world, int vertex_block, int edge_block, int edge) {
+  const std::vector<int>& on_edge = world.blocks[static_cast<std::size_t>(edge_block)].edge_joints;
+  if (!on_edge.empty() && on_edge[static_cast<std::size_t>(edge)] >= 0) {
+    return on_edge[static_cast<std::size_t>(edge)];
+  }
+  return joint_of_pair(world, vertex_block, edge_block);
 }
 
 int joint_of_pair(const World& world, int i, int j) {

@@ -37,6 +37,9 @@ struct Block {
   Vec2 initial_centroid = Vec2::Zero();  // Xc: the reference point at the start
   int material = 0;  // index into World::materials (material_of, elastic_of)
   bool fixed = false;
+  // Per edge (k: vertex k to k + 1), the joint law of the joint it lies on, -1 none; empty
+  // when no edge has one (BlockSpec::edge_joints; joint_of_contact).
+  std::vector<int> edge_joints;
   // Given in the global frame at the start, where the block frame is the global one; the
   // local-frame treatments hold it in the block frame (it turns with the block). A plastic
   // block's four components: initial_stress4.
@@ -295,6 +298,11 @@ void set_reaches(World& world, double dt);
 
 // The joint law index for contacts between blocks i and j.
 int joint_of_pair(const World& world, int i, int j);
+// The joint law index of a contact of a vertex of `vertex_block` on edge `edge` of
+// `edge_block`: the edge's joint (Block::edge_joints) if it lies on one, else the pair's. A
+// pair that shares a bedding plane and a cross joint gets each joint's law where it acts,
+// and a pair that touches only at a corner the law of the joint the corner rests on.
+int joint_of_contact(const World& world, int vertex_block, int edge_block, int edge);
 
 // The scene's penalty (N/m): control.penalty, or "auto", 50 times the largest Young's modulus
 // of the materials the blocks use.

@@ -8,6 +8,13 @@
 namespace dda {
 
 Scene with_bolt_force(Scene scene, double force) {
+  // No force: no bolts. A bar of zero capacity is not the same to the solvers: it enters
+  // each step yielding, and a step that shortens it unloads it into its elastic branch, a
+  // stiff spring that held the search's slope at F = 1.5 where it fails at 1.25 unbolted.
+  if (force == 0.0) {
+    scene.bolts.clear();
+    return scene;
+  }
   for (BoltSpec& b : scene.bolts) {
     b.pretension = force;
     b.yield_force = force;

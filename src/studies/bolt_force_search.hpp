@@ -38,7 +38,8 @@ inline constexpr double kBoltForceTolerance = 2e-3;
 BoltForceSearch find_bolt_force(const Scene& scene, const FosSettings& settings,
                                 double target_factor, const StopQuery& stop = {});
 
-// The scene with every bolt holding `force` (N/m): pretension = yield force = force.
+// The scene with every bolt holding `force` (N/m): pretension = yield force = force; with
+// force 0, the scene without its bolts.
 Scene with_bolt_force(Scene scene, double force);
 
 }  // namespace dda

@@ -220,6 +220,32 @@ TEST_CASE("each pair of neighbours has the group of the segments along their sha
   CHECK(fives == 2);
 }
 
+TEST_CASE("each edge of a block has the group of the joint it lies on, the boundary none",
+          "[cutting]") {
+  // A 10 m square, a horizontal joint y = 4 (group 0) and a vertical one x = 6 from the
+  // joint up (group 1): three blocks. The lower block's top edge is one edge of the polygon
+  // but two halfedges (x = 6 ends on it), both of group 0; the upper-left block meets the
+  // lower one along y = 4 and the upper-right one along x = 6, one pair with two groups:
+  // the pair has group 0 (its longest shared length, 6 m against 6 m, the lower group on a
+  // tie), each edge its own.
+  const Polygon domain{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const CutResult cut = cut_domain(domain, {{{-1, 4}, {11, 4}, 0}, {{6, 4}, {6, 11}, 1}});
+  REQUIRE(cut.blocks.size() == 3);
+  REQUIRE(cut.edge_groups.size() == 3);
+  for (std::size_t i = 0; i < cut.blocks.size(); ++i) {
+    const Polygon& b = cut.blocks[i];
+    REQUIRE(cut.edge_groups[i].size() == b.size());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const Vec2 p = b[k], q = b[(k + 1) % b.size()];
+      const Vec2 m = 0.5 * (p + q);
+      INFO("block " << i << " edge " << k << " middle " << m.transpose());
+      const bool on_boundary = m.x() == 0.0 || m.x() == 10.0 || m.y() == 0.0 || m.y() == 10.0;
+      const int expected = on_boundary ? -1 : (m.y() == 4.0 ? 0 : 1);
+      CHECK(cut.edge_groups[i][k] == expected);
+    }
+  }
+}
+
 TEST_CASE("a trace through a corner of the domain leaves no edge too short to keep",
           "[cutting]") {
   // A trace at 25 degrees through the origin, a corner of the domain: rounding puts its

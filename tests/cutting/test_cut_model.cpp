@@ -278,6 +278,46 @@ TEST_CASE("a pair's joint material is that of the joints along most of their sha
   CHECK(other.joints[0].joint_material == "fault");
 }
 
+TEST_CASE("each edge of a block has the material of the joint it lies on, or its region's",
+          "[cut]") {
+  // The test model: the bedding edges (horizontal) are "bedding", those on the fault (x = 5)
+  // "fault", whichever pair they separate; the domain's boundary has none. With a region of
+  // joint material "spare" over the right column below y = 5, the horizontal edges whose
+  // middles lie in it are "spare" (the fault at x = 5 lies outside it).
+  for (const bool region : {false, true}) {
+    const std::string text =
+        region ? edit(kModel, "\"material\": \"weak\"}]",
+                      "\"material\": \"weak\"}, {\"polygon\": [[5.5, -1], [11, -1], [11, 5], "
+                      "[5.5, 5]], \"joint_material\": \"spare\"}]")
+               : kModel;
+    const CutModel cut = cut_model(parse_model_text(text, "model.json").spec);
+    REQUIRE(cut.cut.blocks.size() == 10);
+    REQUIRE(cut.edge_joint_materials.size() == 10);
+    int spare = 0;
+    for (std::size_t i = 0; i < cut.cut.blocks.size(); ++i) {
+      const Polygon& b = cut.cut.blocks[i];
+      REQUIRE(cut.edge_joint_materials[i].size() == b.size());
+      for (std::size_t k = 0; k < b.size(); ++k) {
+        const Vec2 m = 0.5 * (b[k] + b[(k + 1) % b.size()]);
+        INFO("block " << i << " edge " << k << " middle " << m.transpose());
+        const std::string& name = cut.edge_joint_materials[i][k];
+        if (m.x() == 0.0 || m.x() == 10.0 || m.y() == 0.0 || m.y() == 10.0) {
+          CHECK(name.empty());
+        } else if (m.x() == 5.0) {
+          CHECK(name == "fault");
+        } else if (region && m.x() > 5.5 && m.y() < 5.0) {
+          CHECK(name == "spare");
+          ++spare;
+        } else {
+          CHECK(name == "bedding");
+        }
+      }
+    }
+    // Two joints (y = 1.25, 3.75) in the region, each an edge of the block above and below.
+    CHECK(spare == (region ? 4 : 0));
+  }
+}
+
 TEST_CASE("a single joint along a set's trace gives the pair the single joint's material",
           "[cut]") {
   // The fault laid along the bedding trace y = 6.25: the edge both make is the fault's (the

@@ -137,7 +137,7 @@ TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the plan
   const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
   for (const char* name : {"planar_c10", "planar_uplift", "planar_seismic", "hoek_bray_dry", "hoek_bray_half",
                            "hoek_bray_full", "hoek_bray_bolted", "hoek_bray_passive_bolt",
-                           "wedge_smooth", "wedge_rough"}) {
+                           "deep_crack_cut", "wedge_smooth", "wedge_rough"}) {
     const SlopeCase& c = find_case(cases, name);
     const CaseResult r = run_case(c, RunOptions{}, {});
     INFO(name << ": DDA " << r.factor << " in [" << r.last_stable << ", " << r.first_failing

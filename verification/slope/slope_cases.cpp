@@ -5,6 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <numeric>
 
+#include "cutting/model.hpp"
+#include "io/cut_scene.hpp"
+#include "io/model_reader.hpp"
+
 namespace dda::slope {
 namespace {
 
@@ -215,6 +219,45 @@ SlopeCase bolted_hoek_bray_case(const std::string& name, bool passive, double ta
   return c;
 }
 
+// ---- case 2c: a deep tension crack, cut by dda cut from the profile and two joints ----
+// H 60 m, face 80, plane 35 (c 50 kPa, phi 35, tensile strength c as in case 2), a vertical
+// crack 45 m deep with no strength: the crack (45 m) is longer than the plane (26.2 m), so
+// one joint material per pair of blocks, taken from the longest shared boundary, gave the
+// plane the crack's and the block slid at any strength. Each contact takes the material of
+// the joint its edge lies on (Block::edge_joints): the plane's strength, F by the closed
+// form of a block on a plane.
+SlopeCase deep_crack_cut_case(double a_det) {
+  const double h = 60.0, face = 80.0, crack = 45.0, unit_weight = 26.0;
+  PlaneBlock pb;
+  pb.dip = 35.0;
+  pb.friction_angle = 35.0;
+  pb.cohesion = 50.0;
+  pb.length = (h - crack) / std::sin(rad(pb.dip));
+  const double xcrest = h / std::tan(rad(face)), xc = (h - crack) / std::tan(rad(pb.dip));
+  pb.weight = unit_weight * area({{0.0, 0.0}, {xc, h - crack}, {xc, h}, {xcrest, h}});
+  SlopeCase c;
+  c.name = "deep_crack_cut";
+  c.le_factor = plane_factor(pb);
+  c.resolution = resolution_of([&](double f) { return plane_out_of_balance(pb, f); }, c.le_factor,
+                               pb.weight, a_det);
+  json model = scene_base(unit_weight, 0.005, 1.0);
+  model.erase("blocks");
+  model["material"] = "rock";
+  const P front = along(-20.0, pb.dip);  // the ground in front of the toe: the plane's line
+  model["domain"] = polygon({front, {front.x, -30.0}, {150.0, -30.0}, {150.0, h}, {xcrest, h}, {0.0, 0.0}});
+  model["fixed"] = {{"edges", {1}}};
+  model["joint_materials"] = {{"default", joint(pb.friction_angle, 50e3, 50e3)},
+                              {"plane", joint(pb.friction_angle, 50e3, 50e3)},
+                              {"crack", joint(0.0, 0.0, 0.0)}};
+  model["joints"] = {{{"from", pt({0.0, 0.0})}, {"to", pt({xc, h - crack})}, {"joint_material", "plane"}},
+                     {{"from", pt({xc, h - crack})}, {"to", pt({xc, h + 1.0})}, {"joint_material", "crack"}}};
+  const Model m = parse_model_text(model.dump(), "deep_crack_cut model");
+  c.scene = cut_scene(m, cut_model(m.spec), "").scene.dump();
+  c.title = "deep tension crack cut from a profile: H 60 m, face 80, plane 35, crack 45 m "
+            "(longer than the plane), dry";
+  return c;
+}
+
 // ---- case 3: active-passive wedge (Wyllie & Mah 2004, ch. 7) ----
 // The kink K at the origin; the upper plane at 50 degrees, the lower at 10. The vertical
 // interface meets the upper plane 1 m above K (at K2), not at K: a rigid upper wedge whose
@@ -372,6 +415,8 @@ std::vector<SlopeCase> all_cases(double a_det) {
   // No published value: the closed form only.
   cases.push_back(bolted_hoek_bray_case("hoek_bray_bolted", false, 1.5, 20.0, a_det));
   cases.push_back(bolted_hoek_bray_case("hoek_bray_passive_bolt", true, 1.5, 20.0, a_det));
+  // No published value: the closed form only.
+  cases.push_back(deep_crack_cut_case(a_det));
   cases.push_back(wedge_case("wedge_smooth", 0.0, 1.000, a_det));
   cases.push_back(wedge_case("wedge_rough", 30.0, 1.147, a_det));
   cases.push_back(topple_case(a_det));
