@@ -9,7 +9,7 @@ int bond_closed_contacts(std::vector<Contact>& contacts, const std::vector<Joint
   for (Contact& c : contacts) {
     if (c.state.mode == ContactMode::Open || c.state.bonded) continue;
     assert(c.joint >= 0 && static_cast<std::size_t>(c.joint) < laws.size());
-    const JointLaw& law = laws[static_cast<std::size_t>(c.joint)];
+    const JointLaw law = contact_joint_law(laws, c);
     if (law.cohesion <= 0.0 && law.tensile_strength <= 0.0) continue;
     // A contact of no length (two blocks meeting at a node only) has no strength to bond.
     if (c.length <= 0.0) continue;

@@ -113,7 +113,7 @@ void carry_over(const std::vector<Contact>& previous, std::vector<Contact>& foun
       if (c.gap <= touching) {
         c.state.mode = ContactMode::Lock;
         c.state.t_lock = c.t;
-        const JointLaw& law = laws[static_cast<std::size_t>(c.joint)];
+        const JointLaw law = contact_joint_law(laws, c);
         c.state.bonded = bond_new_closed && (law.cohesion > 0.0 || law.tensile_strength > 0.0) &&
                          c.length > 0.0;  // a contact of no length has no strength to bond
       }

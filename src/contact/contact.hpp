@@ -98,6 +98,10 @@ struct ContactIterate {
 struct Contact {
   ContactKey key;
   int joint = 0;  // index into the scene's joint materials
+  // The rock bridge smeared over the contacted edge (BlockSpec::edge_bridges): its joint
+  // material (-1: none) and the share of the edge it covers (contact_joint_law).
+  int bridge_joint = -1;
+  double bridge_share = 0.0;
 
   // ---- geometry at the start of the step ----
   Vec2 vertex = Vec2::Zero();   // the entering vertex

@@ -60,6 +60,30 @@ JointLaw law_at_slip(const JointLaw& law, double slip_sum) {
   return at;
 }
 
+JointLaw bridged_law(const JointLaw& joint, const JointLaw& bridge, double share) {
+  if (!(share > 0.0)) return joint;
+  const auto mix = [share](double j, double b) { return j + share * (b - j); };
+  JointLaw out = joint;
+  out.kind = bridge.kind;
+  out.tan_phi = mix(joint.tan_phi, bridge.tan_phi);
+  out.cohesion = mix(joint.cohesion, bridge.cohesion);
+  out.tensile_strength = mix(joint.tensile_strength, bridge.tensile_strength);
+  // Residuals: each law's own (its peak where it does not weaken), mixed, over the longer
+  // of the two slip distances.
+  const auto residual_tan = [](const JointLaw& l) { return l.residual_slip > 0.0 ? l.residual_tan_phi : l.tan_phi; };
+  const auto residual_c = [](const JointLaw& l) { return l.residual_slip > 0.0 ? l.residual_cohesion : l.cohesion; };
+  out.residual_slip = std::max(joint.residual_slip, bridge.residual_slip);
+  out.residual_tan_phi = mix(residual_tan(joint), residual_tan(bridge));
+  out.residual_cohesion = mix(residual_c(joint), residual_c(bridge));
+  return out;
+}
+
+JointLaw contact_joint_law(const std::vector<JointLaw>& laws, const Contact& c) {
+  const JointLaw& joint = laws[static_cast<std::size_t>(c.joint)];
+  if (c.bridge_joint < 0) return joint;
+  return bridged_law(joint, laws[static_cast<std::size_t>(c.bridge_joint)], c.bridge_share);
+}
+
 const char* joint_law_name(JointLawKind kind) {
   return kind == JointLawKind::CoulombSlip ? "coulomb_slip" : "brittle_bond";
 }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "contact/contact.hpp"
 
@@ -47,6 +48,18 @@ struct JointLaw {
 // law itself without weakening, else tan(phi) and the cohesion that far from peak towards
 // residual (linear in the slip, residual from residual_slip on).
 JointLaw law_at_slip(const JointLaw& law, double slip_sum);
+
+// A joint whose trace is intact rock over `share` of its length (a rock bridge of law
+// `bridge`): the joint's and the bridge's strengths in proportion to their lengths, as
+// Jennings (1970) smears a joint of finite persistence (c = (1 - k) c_bridge + k c_joint,
+// tan phi likewise, k the persistence = 1 - share); tensile strength and the residual
+// strengths likewise. It acts as the bridge's law (its bond breaks as the intact rock's) once
+// any share is bridge.
+JointLaw bridged_law(const JointLaw& joint, const JointLaw& bridge, double share);
+
+// The law contact c acts with from `laws` (a scene's, or a strength-reduction trial's): its
+// joint's, with its rock bridge smeared in (bridged_law), before any slip weakening.
+JointLaw contact_joint_law(const std::vector<JointLaw>& laws, const Contact& c);
 
 // The law's name in scenes, summaries and reports: "brittle_bond" or "coulomb_slip".
 const char* joint_law_name(JointLawKind kind);

@@ -351,6 +351,7 @@ FaceShares face_shares(const Polygon& vp, int v, const Vec2& edge_start, const V
     const double scale = (middle - near) / (s_other - s_vertex);
     out.from[out.count] = vp[v] + ((near - s_vertex) / (s_other - s_vertex)) * a;
     out.halves[out.count] = scale * a;
+    out.edges[out.count] = w == wrap(v + 1, n) ? v : w;  // edge k runs from vertex k to k + 1
     ++out.count;
   }
   return out;

@@ -86,6 +86,7 @@ struct FaceShares {
   int count = 0;
   std::array<Vec2, 2> from{Vec2::Zero(), Vec2::Zero()};
   std::array<Vec2, 2> halves{Vec2::Zero(), Vec2::Zero()};
+  std::array<int, 2> edges{-1, -1};  // the vertex's polygon's edge each half lies on
 };
 FaceShares face_shares(const Polygon& vp, int v, const Vec2& edge_start, const Vec2& edge_end);
 

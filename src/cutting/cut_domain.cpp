@@ -210,9 +210,21 @@ std::vector<Corner> cycle_corners(Circulator first) {
     all.push_back(c);
   } while (++c != first);
   const std::size_t n = all.size();
+  // A corner where the boundary turns. Where it goes straight on from one joint group to
+  // another (a trace and the rock bridge after it) the edge goes on: its parts' lengths by
+  // group say what it is made of (a straight vertex between the two would be a corner that
+  // two blocks share, whose contact comes back at either edge as the blocks move). A trace's
+  // and its bridge's ends are rounded onto their line in doubles, not exactly: a vertex where
+  // only the two meet (degree 2) goes when they are straight to 1e-9 (the boundary moves by
+  // that share of their length at most, the same for the blocks on both sides).
   const auto kept = [&](std::size_t i) {
-    return !CGAL::collinear(all[(i + n - 1) % n]->source()->point(), all[i]->source()->point(),
-                            all[(i + 1) % n]->source()->point());
+    const Point& p = all[(i + n - 1) % n]->source()->point();
+    const Point& q = all[i]->source()->point();
+    const Point& r = all[i]->target()->point();
+    if (CGAL::collinear(p, q, r)) return false;
+    if (all[i]->source()->degree() != 2) return true;
+    const Vec2 a = approximate(q) - approximate(p), b = approximate(r) - approximate(q);
+    return std::abs(a.x() * b.y() - a.y() * b.x()) > 1e-9 * a.norm() * b.norm() || a.dot(b) <= 0.0;
   };
   std::size_t start = 0;
   while (start < n && !kept(start)) ++start;
@@ -536,8 +548,13 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
     block_of[&*f] = static_cast<int>(result.blocks.size());
     result.blocks.push_back(std::move(block));
     std::vector<int> groups;
-    for (const auto& lengths : edge_lengths) groups.push_back(longest_group(lengths));
+    std::vector<std::vector<std::pair<int, double>>> parts;
+    for (const auto& lengths : edge_lengths) {
+      groups.push_back(longest_group(lengths));
+      parts.emplace_back(lengths.begin(), lengths.end());
+    }
     result.edge_groups.push_back(std::move(groups));
+    result.edge_parts.push_back(std::move(parts));
   }
   result.adjacency = adjacency(arr, block_of);
   return result;

@@ -4,6 +4,7 @@
 // plain-double interface.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "kinematics/types.hpp"
@@ -51,6 +52,9 @@ struct CutResult {
   // edge lies on (where several segments make one edge, the group of its longest part), -1
   // for the domain's boundary and hole bridges.
   std::vector<std::vector<int>> edge_groups;
+  // Per block, per edge: the length of each group's part of it (group, m; by group), e.g. the
+  // traces and the rock bridges of one line of a set.
+  std::vector<std::vector<std::vector<std::pair<int, double>>>> edge_parts;
 };
 
 // Cuts the counter-clockwise simple polygon `domain` by the segments `joints` (which may

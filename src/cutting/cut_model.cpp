@@ -84,8 +84,12 @@ const std::string& group_joint_material(const ModelSpec& model, int group) {
   static const std::string kDefault = kDefaultJointMaterial;
   if (group < 0) return kDefault;
   const std::size_t g = static_cast<std::size_t>(group);
-  if (g < model.joint_sets.size()) return model.joint_sets[g].joint_material;
-  return model.joints[g - model.joint_sets.size()].joint_material;
+  const std::size_t sets = model.joint_sets.size(), joints = model.joints.size();
+  if (g < sets) return model.joint_sets[g].joint_material;
+  if (g < sets + joints) return model.joints[g - sets].joint_material;
+  // A rock bridge is of its set's joint, with the bridge's strength smeared over it
+  // (CutModel::edge_bridges).
+  return model.joint_sets[g - sets - joints].joint_material;
 }
 
 }  // namespace
@@ -112,16 +116,24 @@ std::uint64_t joint_set_seed(std::uint64_t seed, std::size_t k) {
 std::vector<JointSegment> model_segments(const ModelSpec& model) {
   const Box box = bounding_box(model.domain);
   std::vector<JointSegment> segments;
-  for (std::size_t k = 0; k < model.joint_sets.size(); ++k) {
-    std::vector<JointSegment> traces = joint_set_traces(
-        model.joint_sets[k].traces, box.min, box.max, joint_set_seed(model.seed, k));
+  const std::size_t sets = model.joint_sets.size(), joints = model.joints.size();
+  std::vector<JointSegment> bridges;
+  for (std::size_t k = 0; k < sets; ++k) {
+    const bool bridged = !model.joint_sets[k].bridge_material.empty();
+    std::vector<JointSegment> set_bridges;
+    std::vector<JointSegment> traces =
+        joint_set_traces(model.joint_sets[k].traces, box.min, box.max,
+                         joint_set_seed(model.seed, k), bridged ? &set_bridges : nullptr);
     for (JointSegment& t : traces) t.group = static_cast<int>(k);
+    for (JointSegment& b : set_bridges) b.group = static_cast<int>(sets + joints + k);
     segments.insert(segments.end(), traces.begin(), traces.end());
+    bridges.insert(bridges.end(), set_bridges.begin(), set_bridges.end());
   }
-  for (std::size_t j = 0; j < model.joints.size(); ++j) {
-    const int group = static_cast<int>(model.joint_sets.size() + j);
+  for (std::size_t j = 0; j < joints; ++j) {
+    const int group = static_cast<int>(sets + j);
     segments.push_back({model.joints[j].from, model.joints[j].to, group});
   }
+  segments.insert(segments.end(), bridges.begin(), bridges.end());
   return segments;
 }
 
@@ -155,21 +167,41 @@ CutModel cut_model(const ModelSpec& model) {
     }
     if (name != kDefaultJointMaterial) out.joints.push_back({pair.a, pair.b, name});
   }
-  // Each edge on a joint: that joint's material, or the region's its middle lies in.
+  // Each edge on a joint: that joint's material, or the region's its middle lies in; and the
+  // share of it that is rock bridge, with the bridge's material.
+  const int first_bridge = static_cast<int>(model.joint_sets.size() + model.joints.size());
   for (std::size_t i = 0; i < out.cut.blocks.size(); ++i) {
     const Polygon& block = out.cut.blocks[i];
     std::vector<std::string> names;
+    std::vector<EdgeBridge> bridges;
     for (std::size_t k = 0; k < block.size(); ++k) {
-      const int group = out.cut.edge_groups[i][k];
-      if (group < 0) {
+      double total = 0.0, bridged = 0.0, longest_joint = 0.0, longest_bridge = 0.0;
+      int joint = -1, bridge = -1;
+      for (const auto& [group, length] : out.cut.edge_parts[i][k]) {
+        total += length;
+        if (group >= first_bridge) {
+          bridged += length;
+          if (length > longest_bridge) longest_bridge = length, bridge = group;
+        } else if (group >= 0 && length > longest_joint) {
+          longest_joint = length, joint = group;
+        }
+      }
+      if (joint < 0) joint = bridge;  // wholly bridge: of its set's joint
+      bridges.emplace_back();
+      if (joint < 0) {
         names.emplace_back();
         continue;
       }
       const Vec2 middle = 0.5 * (block[k] + block[(k + 1) % block.size()]);
       const std::string* r = joint_regions ? region_joint_material(middle) : nullptr;
-      names.push_back(r != nullptr ? *r : group_joint_material(model, group));
+      names.push_back(r != nullptr ? *r : group_joint_material(model, joint));
+      if (bridge >= 0 && total > 0.0) {
+        const std::size_t set = static_cast<std::size_t>(bridge - first_bridge);
+        bridges.back() = {model.joint_sets[set].bridge_material, bridged / total};
+      }
     }
     out.edge_joint_materials.push_back(std::move(names));
+    out.edge_bridges.push_back(std::move(bridges));
   }
   return out;
 }

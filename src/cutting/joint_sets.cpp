@@ -44,7 +44,8 @@ std::pair<double, double> clip_to_box(const Vec2& p, const Vec2& d, const Vec2& 
 // tall narrow domain the projection made every line hundreds of metres long and every pair of
 // lines cross outside the domain (a 20 m x 10 km strip: 57 s and 6.8 GB for 13 000 blocks).
 void add_line(const JointSetSpec& set, const Vec2& p, const Vec2& d, const Vec2& lo,
-              const Vec2& hi, std::mt19937_64& rng, std::vector<JointSegment>& out) {
+              const Vec2& hi, std::mt19937_64& rng, std::vector<JointSegment>& out,
+              std::vector<JointSegment>* bridges) {
   // The margin is a share of the box's smaller side: beyond the domain each line is a stub
   // that the cut removes, and in a strip 10 km long and 10 m high a share of the diagonal
   // (100 m) made a mesh of crossings outside it whose removal took most of the cut.
@@ -74,13 +75,19 @@ void add_line(const JointSetSpec& set, const Vec2& p, const Vec2& d, const Vec2&
   for (; t < t1; t += period) {
     const double a = std::max({t, t0, c0}), b = std::min({t + length, t1, c1});
     if (b > a) out.push_back({p + a * d, p + b * d});
+    if (bridges != nullptr) {  // the bridge after this trace, to the next one's start
+      const double ba = std::max({t + length, t0, c0}), bb = std::min({t + period, t1, c1});
+      if (bb > ba) bridges->push_back({p + ba * d, p + bb * d});
+    }
   }
+  // The first trace starts at or before t0, and the last period ends at or after t1: with
+  // the bridges, the pieces cover the whole line in the box.
 }
 
 }  // namespace
 
 std::vector<JointSegment> joint_set_traces(const JointSetSpec& set, const Vec2& lo, const Vec2& hi,
-                                           std::uint64_t seed) {
+                                           std::uint64_t seed, std::vector<JointSegment>* bridges) {
   std::mt19937_64 rng(seed);
   const double dip = set.dip * M_PI / 180.0;
   const Vec2 direction(std::cos(dip), std::sin(dip));
@@ -102,7 +109,7 @@ std::vector<JointSegment> joint_set_traces(const JointSetSpec& set, const Vec2& 
     // The line's point nearest the box's centre, and its own dip.
     const Vec2 p = centre + (s - n.dot(centre)) * n;
     const double own = dip + set.dip_scatter * M_PI / 180.0 * normal(rng);
-    add_line(set, p, Vec2(std::cos(own), std::sin(own)), lo, hi, rng, out);
+    add_line(set, p, Vec2(std::cos(own), std::sin(own)), lo, hi, rng, out, bridges);
     const double gap = set.spacing + set.spacing_scatter * normal(rng);
     s += std::max(gap, 0.1 * set.spacing);
   }

@@ -29,8 +29,12 @@ struct JointSetSpec {
 // Gaps are kept at least 0.1 spacing. Draws come from a 64-bit Mersenne Twister seeded with
 // `seed` through this file's own uniform and normal transforms (the standard library's
 // distributions differ between implementations), so a seed gives the same traces anywhere.
+// `bridges`, if given, receives the rock bridges: the pieces of each line between its traces
+// (in the box, as the traces are), so that traces and bridges together cover every line.
+// Asking for them draws nothing more: the traces are the same either way.
 std::vector<JointSegment> joint_set_traces(const JointSetSpec& set, const Vec2& lo, const Vec2& hi,
-                                           std::uint64_t seed);
+                                           std::uint64_t seed,
+                                           std::vector<JointSegment>* bridges = nullptr);
 
 // Whether joints of direction `dip` (degrees from +x, as JointSetSpec::dip) daylight in the
 // face from p to q of a counter-clockwise domain (the rock on the face's left): they dip

@@ -22,6 +22,11 @@ inline constexpr const char* kDefaultJointMaterial = "default";
 struct JointSetModel {
   JointSetSpec traces;
   std::string joint_material = kDefaultJointMaterial;
+  // The joint material of the rock bridges between the set's traces on a line (their intact
+  // rock's cohesion and tensile strength, usually a brittle bond): with one, each line is cut
+  // whole, its bridges joints of this material; empty, the bridges are not cut and the dead
+  // ends they leave inside blocks are removed.
+  std::string bridge_material;
 };
 
 struct SingleJointModel {
@@ -70,6 +75,13 @@ double label_tolerance(const Polygon& domain);
 // not part of the free surface.
 bool is_fixed_edge(const ModelSpec& model, std::size_t k);
 
+// The share of an edge that is intact rock bridge (0 to 1, by length) and the bridge's joint
+// material.
+struct EdgeBridge {
+  std::string material;
+  double share = 0.0;
+};
+
 // A pair of neighbouring blocks whose contacts use a joint material other than "default".
 struct CutJoint {
   int a = 0;
@@ -87,14 +99,18 @@ struct CutModel {
   // domain's boundary, a hole bridge), whose contacts take their pair's. A contact takes the
   // material of the edge it lies on (docs/model-format.md, "Joint materials").
   std::vector<std::vector<std::string>> edge_joint_materials;
+  // Per block, per edge: the rock bridge along it (BlockSpec::edge_bridges), share 0: none.
+  std::vector<std::vector<EdgeBridge>> edge_bridges;
 };
 
 // The seed of joint set k's traces: the model's seed and k mixed (splitmix64), so that the
 // sets draw independent streams and adding a set leaves the others' traces as they were.
 std::uint64_t joint_set_seed(std::uint64_t seed, std::size_t k);
 
-// Every trace of every set (group k for set k) and every single joint (group S + j for
-// joint j, S the number of sets): the segments cut_domain cuts the domain by.
+// Every trace of every set (group k for set k), every single joint (group S + j for joint j,
+// S the number of sets), and the rock bridges of every set with a bridge_material (group
+// S + J + k for set k's, J the number of single joints): the segments cut_domain cuts the
+// domain by. A bridge overlapping another joint exactly (collinear) is the bridge there.
 std::vector<JointSegment> model_segments(const ModelSpec& model);
 
 // Cuts the model's domain and labels the blocks: material (regions, cutting/block_labels),

@@ -21,7 +21,8 @@ using ordered_json = nlohmann::ordered_json;
 // `edge_joints`: the joint material of each edge ("" none); written only when an edge's is
 // not the default, so that a block on default joints alone reads as before.
 ordered_json block_json(const Polygon& vertices, const std::string& material, bool fixed,
-                        const std::vector<std::string>& edge_joints) {
+                        const std::vector<std::string>& edge_joints,
+                        const std::vector<EdgeBridge>& edge_bridges) {
   ordered_json points = ordered_json::array();
   for (const Vec2& v : vertices) points.push_back({v.x(), v.y()});
   ordered_json block = {{"vertices", points}, {"material", material}};
@@ -33,6 +34,13 @@ ordered_json block_json(const Polygon& vertices, const std::string& material, bo
     ordered_json names = ordered_json::array();
     for (const std::string& n : edge_joints) names.push_back(n.empty() ? ordered_json() : ordered_json(n));
     block["edge_joints"] = names;
+  }
+  if (std::any_of(edge_bridges.begin(), edge_bridges.end(), [](const EdgeBridge& e) { return e.share > 0.0; })) {
+    ordered_json list = ordered_json::array();
+    for (const EdgeBridge& e : edge_bridges) {
+      list.push_back(e.share > 0.0 ? ordered_json{{"material", e.material}, {"share", e.share}} : ordered_json());
+    }
+    block["edge_bridges"] = list;
   }
   return block;
 }
@@ -151,6 +159,11 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
       if (!n.empty()) used.insert(n);
     }
   }
+  for (const auto& edges : cut.edge_bridges) {
+    for (const EdgeBridge& e : edges) {
+      if (e.share > 0.0) used.insert(e.material);
+    }
+  }
   ordered_json joint_materials = ordered_json::object();
   for (const auto& [name, value] : settings.at("joint_materials").items()) {
     if (used.count(name) != 0) {
@@ -163,7 +176,7 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
   ordered_json blocks = ordered_json::array();
   for (std::size_t i = 0; i < cut.cut.blocks.size(); ++i) {
     blocks.push_back(block_json(cut.cut.blocks[i], cut.materials[i], cut.fixed[i],
-                                cut.edge_joint_materials[i]));
+                                cut.edge_joint_materials[i], cut.edge_bridges[i]));
   }
   scene["blocks"] = blocks;
   ordered_json joints = ordered_json::array();

@@ -147,7 +147,7 @@ double diagonal_of(const Polygon& domain) {
 JointSetModel read_joint_set(const Field& f, const std::vector<std::string>& joint_materials,
                              double diagonal) {
   f.expect_keys({"dip", "spacing", "trace_length", "bridge", "offset", "dip_scatter",
-                 "spacing_scatter", "joint_material"});
+                 "spacing_scatter", "joint_material", "bridge_material"});
   JointSetModel set;
   JointSetSpec& t = set.traces;
   t.dip = f.member("dip").number();
@@ -185,6 +185,13 @@ JointSetModel read_joint_set(const Field& f, const std::vector<std::string>& joi
   if (auto g = f.optional_member("spacing_scatter")) t.spacing_scatter = non_negative_number(*g);
   if (auto g = f.optional_member("joint_material")) {
     set.joint_material = known_name(*g, joint_materials, "joint material");
+  }
+  if (auto g = f.optional_member("bridge_material")) {
+    if (!(t.bridge > 0.0)) {
+      g->fail("needs \"trace_length\" and a \"bridge\" > 0: the rock bridges it gives a "
+              "strength to are the intact parts between a line's traces");
+    }
+    set.bridge_material = known_name(*g, joint_materials, "joint material");
   }
   return set;
 }

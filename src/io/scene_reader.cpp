@@ -350,6 +350,28 @@ std::vector<int> read_edge_joints(const Field& f, std::size_t edge_count,
   return edges;
 }
 
+// A block's "edge_bridges": one entry per edge, null or {"material": name, "share": s}, the
+// rock bridge smeared over that edge (0 < s <= 1 of its length).
+std::vector<BlockSpec::EdgeBridge> read_edge_bridges(const Field& f, std::size_t edge_count,
+                                                     const std::vector<JointMaterial>& joint_materials) {
+  const std::vector<Field> entries = f.elements(
+      1, "give one entry (null or {\"material\": name, \"share\": s}) per edge");
+  if (entries.size() != edge_count) {
+    f.fail("expected one entry per edge (" + std::to_string(edge_count) +
+           ", as the block has vertices), got " + std::to_string(entries.size()));
+  }
+  std::vector<BlockSpec::EdgeBridge> edges(entries.size());
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const Field& e = entries[k];
+    if (e.value().is_null()) continue;
+    e.expect_keys({"material", "share"});
+    edges[k].material = joint_material_index(e.member("material"), joint_materials);
+    edges[k].share = number_in_range(e.member("share"), 0.0, true, 1.0, false,
+                                     "greater than 0 and at most 1");
+  }
+  return edges;
+}
+
 // A joint material that no pair of blocks uses is likely a mistake (a pair left out of
 // "joints", or a misspelt name there), but not one that stops the run.
 std::vector<std::string> unused_joint_material_warnings(const Scene& scene,
@@ -360,6 +382,9 @@ std::vector<std::string> unused_joint_material_warnings(const Scene& scene,
   for (const BlockSpec& b : scene.blocks) {
     for (int m : b.edge_joints) {
       if (m >= 0) used[static_cast<std::size_t>(m)] = true;
+    }
+    for (const BlockSpec::EdgeBridge& e : b.edge_bridges) {
+      if (e.material >= 0) used[static_cast<std::size_t>(e.material)] = true;
     }
   }
   std::vector<std::string> warnings;
@@ -582,7 +607,8 @@ void check_plastic_start(const Field& f, const BlockSpec& b, const Material& m) 
 
 BlockSpec read_block(const Field& f, const std::vector<Material>& materials) {
   // "edge_joints" is read once the joint materials are (read_edge_joints).
-  f.expect_keys({"vertices", "material", "fixed", "velocity", "initial_stress", "rigid", "edge_joints"});
+  f.expect_keys({"vertices", "material", "fixed", "velocity", "initial_stress", "rigid", "edge_joints",
+                 "edge_bridges"});
   BlockSpec b;
   b.vertices = read_polygon(f.member("vertices"));
   b.material = material_index(f.member("material"), materials);
@@ -908,6 +934,10 @@ Scene read_scene(const Field& root, const std::string& source) {
     if (auto g = block_fields[i].optional_member("edge_joints")) {
       scene.blocks[i].edge_joints =
           read_edge_joints(*g, scene.blocks[i].vertices.size(), scene.joint_materials);
+    }
+    if (auto g = block_fields[i].optional_member("edge_bridges")) {
+      scene.blocks[i].edge_bridges =
+          read_edge_bridges(*g, scene.blocks[i].vertices.size(), scene.joint_materials);
     }
   }
   if (auto pins = root.optional_member("pins")) {

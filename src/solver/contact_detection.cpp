@@ -12,12 +12,39 @@ namespace dda {
 namespace {
 
 // The length of the face share this vertex carries (narrow_phase.hpp, face_shares): a point
-// contact carries none, so no cohesion or tensile strength.
-double contact_length(const Polygon& vp, int v, const EdgeFrame& edge) {
-  const FaceShares shares = face_shares(vp, v, edge.start, edge.end);
+// contact carries none, so no cohesion or tensile strength. With it, the rock bridge smeared
+// over the faces it carries (Block::edge_bridges of the vertex's block, by the halves'
+// lengths), so that a contact carries the bridge share of the face it stands for rather
+// than of the whole edge it touches; a vertex whose faces have none takes the touched edge's.
+struct ContactFace {
   double length = 0.0;
-  for (int k = 0; k < shares.count; ++k) length += shares.halves[static_cast<std::size_t>(k)].norm();
-  return length;
+  int bridge_joint = -1;
+  double bridge_share = 0.0;
+};
+
+ContactFace contact_face(const Block& vertex_block, int v, const Block& edge_block, int edge,
+                         const EdgeFrame& frame) {
+  const FaceShares shares = face_shares(vertex_block.vertices, v, frame.start, frame.end);
+  ContactFace out;
+  double bridged = 0.0;
+  for (int k = 0; k < shares.count; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double length = shares.halves[i].norm();
+    out.length += length;
+    if (vertex_block.edge_bridges.empty()) continue;
+    const BlockSpec::EdgeBridge& b = vertex_block.edge_bridges[static_cast<std::size_t>(shares.edges[i])];
+    if (b.material < 0) continue;
+    out.bridge_joint = b.material;
+    bridged += b.share * length;
+  }
+  if (out.bridge_joint >= 0 && out.length > 0.0) {
+    out.bridge_share = bridged / out.length;
+  } else if (!edge_block.edge_bridges.empty()) {
+    const BlockSpec::EdgeBridge& b = edge_block.edge_bridges[static_cast<std::size_t>(edge)];
+    out.bridge_joint = b.material;
+    out.bridge_share = b.share;
+  }
+  return out;
 }
 
 // `frame`: the frame of the candidate's edge, edge_frame(edge block's vertices, c.edge).
@@ -27,6 +54,7 @@ Contact make_contact(const World& world, const ContactCandidate& c, const EdgeFr
   Contact k;
   k.key = {c.vertex_block, c.vertex, c.edge_block, c.edge};
   k.joint = joint_of_contact(world, c.vertex_block, c.edge_block, c.edge);
+
   k.vertex = vp[c.vertex];
   k.edge_start = frame.start;
   k.edge_end = frame.end;
@@ -37,7 +65,11 @@ Contact make_contact(const World& world, const ContactCandidate& c, const EdgeFr
   // its shear spring must be anchored where the vertex really is (a clamped anchor starts
   // the spring stretched by the overhang: a box of tumbling blocks gained 9 MJ/m that way).
   k.t = proj.t;
-  k.length = contact_length(vp, c.vertex, frame);
+  const ContactFace face = contact_face(world.blocks[static_cast<std::size_t>(c.vertex_block)], c.vertex,
+                                        world.blocks[static_cast<std::size_t>(c.edge_block)], c.edge, frame);
+  k.length = face.length;
+  k.bridge_joint = face.bridge_joint;
+  k.bridge_share = face.bridge_share;
   k.allowed_penetration = contact_allowance(world, c.vertex_block, c.edge_block);
   return k;
 }

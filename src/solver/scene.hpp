@@ -140,6 +140,13 @@ struct BlockSpec {
   // Scene::joint_materials) of the joint the edge lies on, -1 for none; contacts on an edge
   // with one act with it, the others with their pair's (JointSpec). Empty: none.
   std::vector<int> edge_joints;
+  // Per edge: the rock bridge smeared along it (docs/scene-format.md, "edge_bridges"): the
+  // joint material of the intact rock (-1: none) and the share of the edge it covers.
+  struct EdgeBridge {
+    int material = -1;
+    double share = 0.0;
+  };
+  std::vector<EdgeBridge> edge_bridges;  // empty: none
 };
 
 // Whether block `b` of material `m` is rigid: its own key if given, else its material's.

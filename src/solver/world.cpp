@@ -58,6 +58,7 @@ World make_world(const Scene& scene) {
     b.material = spec.material;
     b.fixed = spec.fixed;
     b.edge_joints = spec.edge_joints;
+    b.edge_bridges = spec.edge_bridges;
     // The reader refuses an initial stress or a plastic material for a rigid block.
     b.rigid = is_rigid(spec, mat);
     b.initial_stress = spec.initial_stress;

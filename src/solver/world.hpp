@@ -40,6 +40,7 @@ struct Block {
   // Per edge (k: vertex k to k + 1), the joint law of the joint it lies on, -1 none; empty
   // when no edge has one (BlockSpec::edge_joints; joint_of_contact).
   std::vector<int> edge_joints;
+  std::vector<BlockSpec::EdgeBridge> edge_bridges;  // per edge, empty when none has one
   // Given in the global frame at the start, where the block frame is the global one; the
   // local-frame treatments hold it in the block frame (it turns with the block). A plastic
   // block's four components: initial_stress4.
@@ -258,7 +259,7 @@ inline int block_row(const Block& b) { return b.first_dof / 6; }
 // The joint law contact c acts with in this step: its joint material's, at the slip it has
 // accumulated (law_at_slip: a slip-weakening joint's strength falls with it).
 inline JointLaw contact_law(const World& world, const Contact& c) {
-  return law_at_slip(world.joint_laws[static_cast<std::size_t>(c.joint)], c.state.slip_sum);
+  return law_at_slip(contact_joint_law(world.joint_laws, c), c.state.slip_sum);
 }
 
 // The block's material parameters.

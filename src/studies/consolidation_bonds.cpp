@@ -78,7 +78,7 @@ BondCheck check_consolidation_bonds(const Scene& scene, double consolidation_fac
     const double spring_gap = c.gap - c.state.rest_shift;
     const double normal = spring_gap > 0.0 ? -w.penalty * spring_gap : c.state.normal_force;
     demand[i] = bond_demand(normal, c.iterate.shear_force, c.length,
-                            laws[static_cast<std::size_t>(c.joint)]);
+                            contact_joint_law(laws, c));
     ++out.bonded_elastic;
     if (demand[i] > kOverstressed) ++out.overstressed_elastic;
   }

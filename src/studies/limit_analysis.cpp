@@ -226,7 +226,7 @@ std::vector<ContactTerm> contact_terms(const World& world, const std::vector<cha
     if (c.state.mode == ContactMode::Open && c.gap > c.allowed_penetration) continue;
     const int i = c.key.vertex_block, j = c.key.edge_block;
     if (!free[static_cast<std::size_t>(i)] && !free[static_cast<std::size_t>(j)]) continue;
-    const JointLaw& law = laws[static_cast<std::size_t>(c.joint)];
+    const JointLaw law = contact_joint_law(laws, c);
     ContactTerm t;
     t.vertex_block = i;
     t.edge_block = j;

@@ -249,3 +249,47 @@ TEST_CASE("joint law: a bonded contact holds below its strength and breaks for g
     CHECK_FALSE(d.bonded);
   }
 }
+
+TEST_CASE("a joint with a rock bridge over part of it has the strengths in proportion to their "
+          "lengths (Jennings)",
+          "[contact][joints][bridges]") {
+  JointLaw joint;
+  joint.tan_phi = 0.5;
+  joint.cohesion = 0.0;
+  joint.tensile_strength = 0.0;
+  joint.kind = JointLawKind::BrittleBond;
+  JointLaw bridge;
+  bridge.tan_phi = 1.0;
+  bridge.cohesion = 1e6;
+  bridge.tensile_strength = 4e5;
+  bridge.kind = JointLawKind::CoulombSlip;
+  // A quarter bridge: c = 0.75 x 0 + 0.25 x 1e6, and likewise; sums of two products, exact
+  // in doubles for these binary fractions.
+  const JointLaw mixed = bridged_law(joint, bridge, 0.25);
+  CHECK(mixed.cohesion == 2.5e5);
+  CHECK(mixed.tensile_strength == 1e5);
+  CHECK(mixed.tan_phi == 0.625);
+  CHECK(mixed.kind == JointLawKind::CoulombSlip);  // it breaks as the intact rock does
+  // Neither weakens: the residual is the peak.
+  CHECK(mixed.residual_slip == 0.0);
+  // No bridge: the joint itself, law and all.
+  const JointLaw none = bridged_law(joint, bridge, 0.0);
+  CHECK(none.cohesion == 0.0);
+  CHECK(none.kind == JointLawKind::BrittleBond);
+  // A contact carries the bridge its face gets (Contact::bridge_joint, bridge_share).
+  const std::vector<JointLaw> laws{joint, bridge};
+  Contact c;
+  c.joint = 0;
+  CHECK(contact_joint_law(laws, c).cohesion == 0.0);
+  c.bridge_joint = 1;
+  c.bridge_share = 0.5;
+  CHECK(contact_joint_law(laws, c).cohesion == 5e5);
+  // A bridge that weakens: its residual cohesion mixed with the joint's (unweakened) one.
+  bridge.residual_slip = 0.01;
+  bridge.residual_cohesion = 2e5;
+  bridge.residual_tan_phi = 0.5;
+  const JointLaw weakening = bridged_law(joint, bridge, 0.5);
+  CHECK(weakening.residual_slip == 0.01);
+  CHECK(weakening.residual_cohesion == 1e5);
+  CHECK(weakening.residual_tan_phi == 0.5);
+}

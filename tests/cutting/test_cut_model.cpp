@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -316,6 +317,59 @@ TEST_CASE("each edge of a block has the material of the joint it lies on, or its
     // Two joints (y = 1.25, 3.75) in the region, each an edge of the block above and below.
     CHECK(spare == (region ? 4 : 0));
   }
+}
+
+TEST_CASE("a set's rock bridges are cut with its traces and smeared over the edges they lie on",
+          "[cut][bridges]") {
+  // The test model's bedding broken into 3 m traces and 1 m bridges of "spare" rock: each
+  // line is cut whole (no dead ends), every bedding edge keeps "bedding", and the bridge
+  // length each edge holds (share x length), summed along a line over the blocks below it,
+  // is the bridges' length inside the domain on that line as joint_set_traces draws them,
+  // to round-off (1e-9 m).
+  const std::string text = edit(
+      kModel, kSet,
+      "{\"dip\": 0, \"spacing\": 2.5, \"offset\": 1.25, \"trace_length\": 3, \"bridge\": 1, "
+      "\"joint_material\": \"bedding\", \"bridge_material\": \"spare\"}");
+  const Model model = parse_model_text(text, "model.json");
+  const CutModel cut = cut_model(model.spec);
+  CHECK(cut.cut.dead_end_edges == 0);
+  REQUIRE(cut.cut.blocks.size() == 10);
+  std::map<double, double> smeared;  // line y -> bridge length on the top edges of the blocks below
+  for (std::size_t i = 0; i < cut.cut.blocks.size(); ++i) {
+    const Polygon& b = cut.cut.blocks[i];
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const Vec2 p = b[k], q = b[(k + 1) % b.size()];
+      const EdgeBridge& e = cut.edge_bridges[i][k];
+      if (p.y() != q.y() || p.y() == 0.0 || p.y() == 10.0) {
+        CHECK(e.share == 0.0);
+        continue;
+      }
+      CHECK(cut.edge_joint_materials[i][k] == "bedding");
+      if (e.share > 0.0) CHECK(e.material == "spare");
+      if (q.x() < p.x()) smeared[p.y()] += e.share * (p - q).norm();  // a top edge runs right to left
+    }
+  }
+  std::vector<JointSegment> bridges;
+  const Box box = bounding_box(model.spec.domain);
+  joint_set_traces(model.spec.joint_sets[0].traces, box.min, box.max,
+                   joint_set_seed(model.spec.seed, 0), &bridges);
+  std::map<double, double> drawn;
+  for (const JointSegment& g : bridges) {
+    if (g.from.y() <= 0.0 || g.from.y() >= 10.0) continue;
+    drawn[g.from.y()] += std::max(0.0, std::min(std::max(g.from.x(), g.to.x()), 10.0) -
+                                           std::max(std::min(g.from.x(), g.to.x()), 0.0));
+  }
+  REQUIRE(drawn.size() == 4);
+  REQUIRE(smeared.size() == 4);
+  for (const auto& [y, length] : drawn) {
+    INFO("line y = " << y);
+    CHECK(smeared[y] == Approx(length).margin(1e-9));
+  }
+  // A bridge material needs bridges to give a strength to.
+  CHECK(error_of(edit(text, "\"bridge\": 1, ", "")).find(
+            "model.json: joint_sets[0].bridge_material: needs \"trace_length\" and a \"bridge\" > 0") == 0);
+  CHECK(error_of(edit(text, "\"bridge_material\": \"spare\"", "\"bridge_material\": \"rock\"")).find(
+            "model.json: joint_sets[0].bridge_material: unknown joint material \"rock\"") == 0);
 }
 
 TEST_CASE("a single joint along a set's trace gives the pair the single joint's material",

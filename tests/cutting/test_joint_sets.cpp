@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include "cutting/cut_domain.hpp"
@@ -165,6 +166,36 @@ TEST_CASE("traces and rock bridges alternate along each line", "[cutting]") {
   }
   REQUIRE(lines == 21);
   CHECK(inside / (100.0 * lines) == Approx(5.0 / 7.0).margin(0.02));
+}
+
+TEST_CASE("the rock bridges asked for fill each line between its traces, which stay the same",
+          "[cutting]") {
+  // The set of the test above: asking for the bridges draws nothing more (the traces are
+  // bit for bit those drawn without), every bridge lies on its trace's line, and traces and
+  // bridges together cover each line's whole length in the box (the box plus its 1 % margin,
+  // 0.2 m on each side: 100.4 m), to the round-off of a few hundred sums (1e-9).
+  JointSetSpec set;
+  set.dip = 0.0;
+  set.spacing = 1.0;
+  set.trace_length = 5.0;
+  set.bridge = 2.0;
+  const std::vector<JointSegment> plain = joint_set_traces(set, {0, 0}, {100, 20}, 7);
+  std::vector<JointSegment> bridges;
+  const std::vector<JointSegment> traces = joint_set_traces(set, {0, 0}, {100, 20}, 7, &bridges);
+  REQUIRE(traces.size() == plain.size());
+  for (std::size_t k = 0; k < traces.size(); ++k) {
+    CHECK(traces[k].from == plain[k].from);
+    CHECK(traces[k].to == plain[k].to);
+  }
+  std::map<double, double> covered;  // line's y -> traces' and bridges' length on it
+  for (const JointSegment& t : traces) covered[t.from.y()] += (t.to - t.from).norm();
+  for (const JointSegment& b : bridges) {
+    CHECK(b.from.y() == b.to.y());
+    CHECK((b.to - b.from).norm() <= 2.0 + 1e-9);
+    covered[b.from.y()] += (b.to - b.from).norm();
+  }
+  REQUIRE(covered.size() == 21);
+  for (const auto& [y, length] : covered) CHECK(length == Approx(100.4).margin(1e-9));
 }
 
 TEST_CASE("a 200 m x 100 m slope cut by two persistent sets tiles its domain", "[cutting]") {

@@ -131,13 +131,14 @@ TEST_CASE("DDA strength reduction finds Goodman and Bray's toppling factor with 
 
 TEST_CASE("DDA strength reduction finds the limit-equilibrium factor of the planar block (dry, "
           "with uplift, with a seismic coefficient), the "
-          "tension-crack slope dry, with water and bolted, and the active-passive wedges",
+          "tension-crack slope dry, with water and bolted, the cut plane behind a deep crack "
+          "with and without rock bridges, and the active-passive wedges",
           "[slope]") {
   // Each about 0.2 s in the release build (rigid blocks; 12 trials on 2 threads).
   const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
   for (const char* name : {"planar_c10", "planar_uplift", "planar_seismic", "hoek_bray_dry", "hoek_bray_half",
                            "hoek_bray_full", "hoek_bray_bolted", "hoek_bray_passive_bolt",
-                           "deep_crack_cut", "wedge_smooth", "wedge_rough"}) {
+                           "deep_crack_cut", "rock_bridge_cut", "wedge_smooth", "wedge_rough"}) {
     const SlopeCase& c = find_case(cases, name);
     const CaseResult r = run_case(c, RunOptions{}, {});
     INFO(name << ": DDA " << r.factor << " in [" << r.last_stable << ", " << r.first_failing

@@ -8,6 +8,7 @@
 #include "cutting/model.hpp"
 #include "io/cut_scene.hpp"
 #include "io/model_reader.hpp"
+#include "kinematics/polygon.hpp"
 
 namespace dda::slope {
 namespace {
@@ -258,6 +259,66 @@ SlopeCase deep_crack_cut_case(double a_det) {
   return c;
 }
 
+// ---- case 2d: the deep-crack block on a plane of finite persistence, its rock bridges cut ----
+// The profile and crack of case 2c, the plane now a joint set of one line through the toe:
+// traces 10 m long (phi 35, no cohesion) with rock bridges of 4 m between them (a random
+// phase from the seed), the bridges of their own material (bridge_material: phi 35, c 500
+// kPa, tensile strength c, Coulomb slip so that they keep c while sliding, as limit
+// equilibrium assumes), smeared over the block's base by their share of it. The plane's line runs on behind the crack to the top surface, so the
+// rock above it there is a block too, fixed by a region. The closed form is a block on a
+// plane with cohesion over the bridges' length alone: (c_b L_b + W cos psi tan phi) /
+// (W sin psi), L_b the bridge edges of the sliding block as cut.
+SlopeCase rock_bridge_cut_case(double a_det) {
+  const double h = 60.0, face = 80.0, crack = 45.0, unit_weight = 26.0, c_bridge = 500.0;
+  const double xcrest = h / std::tan(rad(face)), xc = (h - crack) / std::tan(rad(35.0));
+  json model = scene_base(unit_weight, 0.005, 1.0);
+  model.erase("blocks");
+  model["material"] = "rock";
+  const P front = along(-20.0, 35.0);
+  model["domain"] = polygon({front, {front.x, -30.0}, {150.0, -30.0}, {150.0, h}, {xcrest, h}, {0.0, 0.0}});
+  model["fixed"] = {{"edges", {1}},
+                    {"polygon", polygon({{xc - 0.01, -40.0}, {200.0, -40.0}, {200.0, 70.0}, {xc - 0.01, 70.0}})}};
+  model["joint_materials"] = {{"default", joint(35.0, 0.0, 0.0)},
+                              {"plane", joint(35.0, 0.0, 0.0)},
+                              {"bridge", joint(35.0, c_bridge * 1e3, c_bridge * 1e3)},
+                              {"crack", joint(0.0, 0.0, 0.0)}};
+  model["seed"] = 3;
+  model["joint_sets"] = {{{"dip", 35.0}, {"spacing", 1000.0}, {"offset", 0.0}, {"trace_length", 10.0},
+                          {"bridge", 4.0}, {"joint_material", "plane"}, {"bridge_material", "bridge"}}};
+  // The crack from 1 m below the plane's line: the set's line passes through the toe and the
+  // crack's foot only up to rounding, and a crack ending a hair short of it would be a dead
+  // end (removed); the stub below the line is one.
+  model["joints"] = {{{"from", pt({xc, h - crack - 1.0})}, {"to", pt({xc, h + 1.0})}, {"joint_material", "crack"}}};
+  const Model m = parse_model_text(model.dump(), "rock_bridge_cut model");
+  const CutModel cut = cut_model(m.spec);
+  PlaneBlock pb;
+  pb.dip = 35.0;
+  pb.friction_angle = 35.0;
+  pb.cohesion = c_bridge;
+  for (std::size_t i = 0; i < cut.cut.blocks.size(); ++i) {
+    if (cut.fixed[i]) continue;
+    const Polygon& b = cut.cut.blocks[i];
+    pb.weight = unit_weight * signed_area(b);
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const EdgeBridge& e = cut.edge_bridges[i][k];
+      if (e.material == "bridge") pb.length += e.share * (b[(k + 1) % b.size()] - b[k]).norm();
+    }
+  }
+  SlopeCase c;
+  c.name = "rock_bridge_cut";
+  c.le_factor = plane_factor(pb);
+  c.resolution = resolution_of([&](double f) { return plane_out_of_balance(pb, f); }, c.le_factor,
+                               pb.weight, a_det);
+  c.scene = cut_scene(m, cut, "").scene.dump();
+  char title[200];
+  std::snprintf(title, sizeof title,
+                "rock bridges cut: the deep-crack block on a plane of 10 m traces and 4 m "
+                "bridges (c %.0f kPa), %.2f m of bridge under the block",
+                c_bridge, pb.length);
+  c.title = title;
+  return c;
+}
+
 // ---- case 3: active-passive wedge (Wyllie & Mah 2004, ch. 7) ----
 // The kink K at the origin; the upper plane at 50 degrees, the lower at 10. The vertical
 // interface meets the upper plane 1 m above K (at K2), not at K: a rigid upper wedge whose
@@ -417,6 +478,7 @@ std::vector<SlopeCase> all_cases(double a_det) {
   cases.push_back(bolted_hoek_bray_case("hoek_bray_passive_bolt", true, 1.5, 20.0, a_det));
   // No published value: the closed form only.
   cases.push_back(deep_crack_cut_case(a_det));
+  cases.push_back(rock_bridge_cut_case(a_det));
   cases.push_back(wedge_case("wedge_smooth", 0.0, 1.000, a_det));
   cases.push_back(wedge_case("wedge_rough", 30.0, 1.147, a_det));
   cases.push_back(topple_case(a_det));
