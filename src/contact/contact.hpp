@@ -102,6 +102,10 @@ struct Contact {
   // material (-1: none) and the share of the edge it covers (contact_joint_law).
   int bridge_joint = -1;
   double bridge_share = 0.0;
+  // The normal force it carried at the end of the last accepted step (N/m; 0 if new or
+  // open then): the stress a Barton-Bandis joint's friction is taken at for the whole step
+  // (law_at_stress), so that the step's friction does not move with its iterations.
+  double start_normal_force = 0.0;
 
   // ---- geometry at the start of the step ----
   Vec2 vertex = Vec2::Zero();   // the entering vertex

@@ -60,6 +60,26 @@ JointLaw law_at_slip(const JointLaw& law, double slip_sum) {
   return at;
 }
 
+double barton_bandis_angle(double phi_r_deg, double jrc, double jcs, double sigma_n) {
+  constexpr double kLargestAngle = 70.0;  // degrees
+  if (!(sigma_n > 0.0)) return std::max(phi_r_deg, kLargestAngle);
+  const double roughness = jrc * std::max(0.0, std::log10(jcs / sigma_n));
+  return std::max(phi_r_deg, std::min(phi_r_deg + roughness, kLargestAngle));
+}
+
+JointLaw law_at_stress(const JointLaw& law, double normal_force, double length) {
+  if (!(law.jcs > 0.0)) return law;
+  const double sigma_n = length > 0.0 ? normal_force / length : law.jcs;
+  const double phi_r = std::atan(law.tan_phi) * 180.0 / M_PI;
+  JointLaw out = law;
+  out.tan_phi = std::tan(barton_bandis_angle(phi_r, law.jrc, law.jcs, sigma_n) * M_PI / 180.0) /
+                law.friction_divisor;
+  out.jrc = 0.0;
+  out.jcs = 0.0;
+  out.friction_divisor = 1.0;
+  return out;
+}
+
 JointLaw bridged_law(const JointLaw& joint, const JointLaw& bridge, double share) {
   if (!(share > 0.0)) return joint;
   const auto mix = [share](double j, double b) { return j + share * (b - j); };

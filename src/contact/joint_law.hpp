@@ -42,7 +42,26 @@ struct JointLaw {
   double residual_tan_phi = 0.0;
   double residual_cohesion = 0.0;  // Pa
   double residual_slip = 0.0;      // m
+  // Barton-Bandis (jcs > 0; Barton and Choubey 1977, Bandis et al. 1983): tan_phi is the
+  // residual angle phi_r's, and a contact at normal stress sigma_n acts with friction
+  // tan(phi_r + jrc log10(jcs / sigma_n)) (law_at_stress), divided by friction_divisor (a
+  // strength-reduction trial's factor).
+  double jrc = 0.0;
+  double jcs = 0.0;  // Pa
+  double friction_divisor = 1.0;
 };
+
+// The Barton-Bandis friction angle (degrees) at normal stress `sigma_n` (Pa, compression
+// positive): phi_r + jrc log10(jcs / sigma_n), the logarithm at least 0 (at sigma_n >= jcs
+// the joint's asperities are sheared off: phi_r) and the whole at most 70 degrees (Barton's
+// bound for low stress, where the logarithm grows without bound; at sigma_n = 0 the bound).
+double barton_bandis_angle(double phi_r_deg, double jrc, double jcs, double sigma_n);
+
+// The law a contact of face length `length` (m) carrying normal force `normal_force` (N/m)
+// acts with: a Barton-Bandis law's friction at sigma_n = normal_force / length (a point
+// contact, of no length, at sigma_n = jcs: phi_r), as a plain Coulomb law; any other law as
+// it is.
+JointLaw law_at_stress(const JointLaw& law, double normal_force, double length);
 
 // The law a contact that has slid `slip_sum` metres (ContactState::slip_sum) acts with: the
 // law itself without weakening, else tan(phi) and the cohesion that far from peak towards

@@ -214,7 +214,7 @@ constexpr std::string_view kDefaultJoint = "default";
 
 JointMaterial read_joint_material(const std::string& name, const Field& f) {
   f.expect_keys({"friction_angle", "cohesion", "tensile_strength", "law", "residual_friction_angle",
-                 "residual_cohesion", "residual_slip"});
+                 "residual_cohesion", "residual_slip", "jrc", "jcs"});
   JointMaterial j;
   j.name = name;
   if (auto g = f.optional_member("law")) {
@@ -234,6 +234,19 @@ JointMaterial read_joint_material(const std::string& name, const Field& f) {
   j.tensile_strength =
       within_limit(f.member("tensile_strength"), non_negative_number(f.member("tensile_strength")),
                    input::kLargestStress, "Pa");
+  // Barton-Bandis: both or neither; friction_angle is then phi_r.
+  if (f.has("jrc") != f.has("jcs")) {
+    const char* missing = f.has("jrc") ? "jcs" : "jrc";
+    f.place(missing).fail(std::string("required key is missing: a Barton-Bandis joint needs both "
+                                      "\"jrc\" (the joint roughness coefficient, 0 to 20) and "
+                                      "\"jcs\" (the joint wall compressive strength, Pa); "
+                                      "without them the joint is Coulomb's"));
+  }
+  if (auto g = f.optional_member("jrc")) {
+    j.jrc = number_in_range(*g, 0.0, false, 20.0, false, "at least 0 and at most 20");
+    const Field jcs = f.member("jcs");
+    j.jcs = within_limit(jcs, positive_number(jcs), input::kLargestStress, "Pa");
+  }
   // Slip weakening: residual_slip (m) turns it on; the residual friction angle defaults to
   // the peak's and the residual cohesion to 0; neither may exceed its peak.
   const bool residual = f.has("residual_friction_angle") || f.has("residual_cohesion");

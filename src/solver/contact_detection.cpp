@@ -81,6 +81,7 @@ void carry_and_replace(const World& world, std::vector<Contact>& contacts,
   // Blocks placed face to face are "closed" although round-off may leave a gap of a few ulps.
   const double touching = 1e-9 * world.w0;
   carry_over(contacts, found, touching, world.step == 0, world.joint_laws);
+  for (Contact& c : found) c.start_normal_force = c.state.normal_force;
   std::swap(contacts, found);
 }
 

@@ -115,6 +115,10 @@ struct JointMaterial {
   double residual_friction_angle = 0.0;  // degrees
   double residual_cohesion = 0.0;        // Pa
   double residual_slip = 0.0;            // m
+  // Barton-Bandis (docs/scene-format.md, joint_materials): jcs 0 is none; with it,
+  // friction_angle is the residual angle phi_r.
+  double jrc = 0.0;
+  double jcs = 0.0;  // Pa
 };
 
 // The joint used when a scene of one block names none: frictionless, no strength.

@@ -60,6 +60,8 @@ JointLaw joint_law_of(const JointMaterial& j) {
     law.residual_cohesion = j.residual_cohesion;
     law.residual_slip = j.residual_slip;
   }
+  law.jrc = j.jrc;
+  law.jcs = j.jcs;
   return law;
 }
 

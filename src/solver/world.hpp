@@ -256,10 +256,13 @@ struct World {
 // A free block's row of 6 x 6 blocks in the global system (BlockSystem): its first slot / 6.
 inline int block_row(const Block& b) { return b.first_dof / 6; }
 
-// The joint law contact c acts with in this step: its joint material's, at the slip it has
-// accumulated (law_at_slip: a slip-weakening joint's strength falls with it).
+// The joint law contact c acts with in this step: its joint material's (with its rock bridge
+// smeared in), at the normal stress it started the step with (a Barton-Bandis joint's
+// friction) and the slip it has accumulated (law_at_slip: a slip-weakening joint's strength
+// falls with it).
 inline JointLaw contact_law(const World& world, const Contact& c) {
-  return law_at_slip(contact_joint_law(world.joint_laws, c), c.state.slip_sum);
+  return law_at_slip(law_at_stress(contact_joint_law(world.joint_laws, c), c.start_normal_force, c.length),
+                     c.state.slip_sum);
 }
 
 // The block's material parameters.

@@ -78,7 +78,7 @@ BondCheck check_consolidation_bonds(const Scene& scene, double consolidation_fac
     const double spring_gap = c.gap - c.state.rest_shift;
     const double normal = spring_gap > 0.0 ? -w.penalty * spring_gap : c.state.normal_force;
     demand[i] = bond_demand(normal, c.iterate.shear_force, c.length,
-                            contact_joint_law(laws, c));
+                            law_at_stress(contact_joint_law(laws, c), c.state.normal_force, c.length));
     ++out.bonded_elastic;
     if (demand[i] > kOverstressed) ++out.overstressed_elastic;
   }

@@ -226,7 +226,8 @@ std::vector<ContactTerm> contact_terms(const World& world, const std::vector<cha
     if (c.state.mode == ContactMode::Open && c.gap > c.allowed_penetration) continue;
     const int i = c.key.vertex_block, j = c.key.edge_block;
     if (!free[static_cast<std::size_t>(i)] && !free[static_cast<std::size_t>(j)]) continue;
-    const JointLaw law = contact_joint_law(laws, c);
+    // A Barton-Bandis joint's friction at the contact's consolidated normal stress.
+    const JointLaw law = law_at_stress(contact_joint_law(laws, c), c.state.normal_force, c.length);
     ContactTerm t;
     t.vertex_block = i;
     t.edge_block = j;

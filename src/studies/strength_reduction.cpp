@@ -69,7 +69,12 @@ Bracket bracket_of(const std::vector<TrialResult>& trials) {
 JointLaw reduced_joint_law(const JointLaw& law, double factor) {
   assert(factor > 0.0);
   JointLaw r = law;
-  r.tan_phi = law.tan_phi / factor;
+  // A Barton-Bandis joint keeps phi_r and divides the friction it computes (law_at_stress).
+  if (law.jcs > 0.0) {
+    r.friction_divisor = law.friction_divisor * factor;
+  } else {
+    r.tan_phi = law.tan_phi / factor;
+  }
   r.cohesion = law.cohesion / factor;
   r.tensile_strength = law.tensile_strength / factor;
   r.residual_tan_phi = law.residual_tan_phi / factor;
