@@ -208,3 +208,17 @@ TEST_CASE("the bolt force for a target factor (dda fos --target-factor) on the b
   // The bracket is the search's tolerance wide.
   CHECK(search.force - search.failing_force <= dda::kBoltForceTolerance * search.force + 1e-9);
 }
+
+TEST_CASE("the bolt force search tries no force as the scene without its bolts", "[slope][bolts]") {
+  // A bar of zero capacity is not nothing to the solvers (a step that shortens it unloads it
+  // into its stiff elastic branch, which held a slope at F = 1.5 where it fails at 1.25
+  // unbolted): with_bolt_force(scene, 0) leaves the bolts out.
+  const std::vector<SlopeCase> cases = all_cases(dda::FosSettings{}.detect_acceleration);
+  const dda::Scene scene = dda::parse_scene_text(find_case(cases, "hoek_bray_bolted").scene, "bolted");
+  REQUIRE(scene.bolts.size() == 1);
+  CHECK(dda::with_bolt_force(scene, 0.0).bolts.empty());
+  const dda::Scene held = dda::with_bolt_force(scene, 2e6);
+  REQUIRE(held.bolts.size() == 1);
+  CHECK(held.bolts[0].pretension == 2e6);
+  CHECK(held.bolts[0].yield_force == 2e6);
+}
