@@ -345,16 +345,22 @@ std::vector<JointSpec> read_joints(const Field& f, std::size_t block_count,
   return joints;
 }
 
-// A block's "edge_joints": one entry per edge, a joint material's name or null (the edge lies
-// on no joint: its contacts take their pair's material).
-std::vector<int> read_edge_joints(const Field& f, std::size_t edge_count,
-                                  const std::vector<JointMaterial>& joint_materials) {
-  const std::vector<Field> entries = f.elements(
-      1, "give one joint material name (or null) per edge, edge k from vertex k to vertex k + 1");
+// A list of one entry per edge of a block of `edge_count` edges (edge k from vertex k to
+// vertex k + 1); `what` says what an entry is.
+std::vector<Field> per_edge_entries(const Field& f, std::size_t edge_count, std::string_view what) {
+  const std::vector<Field> entries = f.elements(1, "give one entry (" + std::string(what) + ") per edge");
   if (entries.size() != edge_count) {
     f.fail("expected one entry per edge (" + std::to_string(edge_count) +
            ", as the block has vertices), got " + std::to_string(entries.size()));
   }
+  return entries;
+}
+
+// A block's "edge_joints": one entry per edge, a joint material's name or null (the edge lies
+// on no joint: its contacts take their pair's material).
+std::vector<int> read_edge_joints(const Field& f, std::size_t edge_count,
+                                  const std::vector<JointMaterial>& joint_materials) {
+  const std::vector<Field> entries = per_edge_entries(f, edge_count, "a joint material name or null");
   std::vector<int> edges;
   edges.reserve(entries.size());
   for (const Field& e : entries) {
@@ -367,12 +373,8 @@ std::vector<int> read_edge_joints(const Field& f, std::size_t edge_count,
 // rock bridge smeared over that edge (0 < s <= 1 of its length).
 std::vector<BlockSpec::EdgeBridge> read_edge_bridges(const Field& f, std::size_t edge_count,
                                                      const std::vector<JointMaterial>& joint_materials) {
-  const std::vector<Field> entries = f.elements(
-      1, "give one entry (null or {\"material\": name, \"share\": s}) per edge");
-  if (entries.size() != edge_count) {
-    f.fail("expected one entry per edge (" + std::to_string(edge_count) +
-           ", as the block has vertices), got " + std::to_string(entries.size()));
-  }
+  const std::vector<Field> entries =
+      per_edge_entries(f, edge_count, "null or {\"material\": name, \"share\": s}");
   std::vector<BlockSpec::EdgeBridge> edges(entries.size());
   for (std::size_t k = 0; k < entries.size(); ++k) {
     const Field& e = entries[k];

@@ -138,17 +138,23 @@ TEST_CASE("scattered dip and spacing match their inputs statistically", "[cuttin
   CHECK((other.size() != traces.size() || other[0].from != traces[0].from));
 }
 
+// Horizontal lines 1 m apart, traces of 5 m with 2 m rock bridges between them.
+JointSetSpec broken_horizontal_set() {
+  JointSetSpec set;
+  set.dip = 0.0;
+  set.spacing = 1.0;
+  set.trace_length = 5.0;
+  set.bridge = 2.0;
+  return set;
+}
+
 TEST_CASE("traces and rock bridges alternate along each line", "[cutting]") {
   // Horizontal lines 1 m apart over a 100 m x 20 m box, traces of 5 m with 2 m bridges from
   // a random phase: every trace at most 5 m, consecutive traces on a line 2 m apart, and
   // the traces cover 5/7 of the lines' length inside the box, within 0.02 (the two partial
   // periods at the ends of each line shift it by at most 7/100 per line, averaging out over
   // 21 lines of independent phases).
-  JointSetSpec set;
-  set.dip = 0.0;
-  set.spacing = 1.0;
-  set.trace_length = 5.0;
-  set.bridge = 2.0;
+  const JointSetSpec set = broken_horizontal_set();
   const std::vector<JointSegment> traces = joint_set_traces(set, {0, 0}, {100, 20}, 7);
   double inside = 0.0;
   int lines = 0;
@@ -174,11 +180,7 @@ TEST_CASE("the rock bridges asked for fill each line between its traces, which s
   // bit for bit those drawn without), every bridge lies on its trace's line, and traces and
   // bridges together cover each line's whole length in the box (the box plus its 1 % margin,
   // 0.2 m on each side: 100.4 m), to the round-off of a few hundred sums (1e-9).
-  JointSetSpec set;
-  set.dip = 0.0;
-  set.spacing = 1.0;
-  set.trace_length = 5.0;
-  set.bridge = 2.0;
+  const JointSetSpec set = broken_horizontal_set();
   const std::vector<JointSegment> plain = joint_set_traces(set, {0, 0}, {100, 20}, 7);
   std::vector<JointSegment> bridges;
   const std::vector<JointSegment> traces = joint_set_traces(set, {0, 0}, {100, 20}, 7, &bridges);
