@@ -226,8 +226,11 @@ std::vector<ContactTerm> contact_terms(const World& world, const std::vector<cha
     if (c.state.mode == ContactMode::Open && c.gap > c.allowed_penetration) continue;
     const int i = c.key.vertex_block, j = c.key.edge_block;
     if (!free[static_cast<std::size_t>(i)] && !free[static_cast<std::size_t>(j)]) continue;
-    // A Barton-Bandis joint's friction at the contact's consolidated normal stress.
-    const JointLaw law = law_at_stress(contact_joint_law(laws, c), c.state.normal_force, c.length);
+    // A Barton-Bandis joint's friction at the contact's consolidated normal stress; one that
+    // carried nothing takes phi_r (as a point contact does), not the law's 70-degree bound at
+    // zero stress, which the forces the analysis gives it need not respect.
+    const double n = c.state.normal_force;
+    const JointLaw law = law_at_stress(contact_joint_law(laws, c), n, n > 0.0 ? c.length : 0.0);
     ContactTerm t;
     t.vertex_block = i;
     t.edge_block = j;

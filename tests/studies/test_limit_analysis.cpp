@@ -1,5 +1,5 @@
 // Rigid-block limit analysis (studies/limit_analysis.hpp) against closed forms: a block on a
-// plane (friction alone, with cohesion, with an uplift), a block that can only topple, two
+// plane (friction alone, with cohesion, with an uplift, Barton-Bandis), a block that can only topple, two
 // blocks on a plane that share their friction, the slope verification's limit-equilibrium
 // cases; and the CLI's --method limit-analysis.
 #include <catch2/catch.hpp>
@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../../verification/slope/slope_cases.hpp"
+#include "contact/joint_law.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/run.hpp"
 #include "solver/world.hpp"
@@ -123,6 +124,32 @@ TEST_CASE("a block on a plane: the limit-analysis factor is the limit-equilibriu
                       (weight * std::sin(deg(30.0)));  // 1.4167
     CHECK(r.factor <= le);
     CHECK(r.upper >= le);
+  }
+  SECTION("Barton-Bandis: the friction at each contact's consolidated normal stress") {
+    // phi_r 25, JRC 10, JCS 50 MPa: the block's two base contacts (5 m of base each) carry
+    // unequal shares of W cos 30 (its moment), so the factor lies between the law's at the
+    // two stresses, tan(phi(sigma)) / tan 30 (about 2.3: 52 degrees at 85 kPa).
+    p.phi = 25.0;
+    json scene = json::parse(p.scene_text());
+    scene["joint_materials"]["default"]["jrc"] = 10.0;
+    scene["joint_materials"]["default"]["jcs"] = 5e7;
+    const World w = consolidated_world(scene.dump());
+    double lo = 90.0, hi = 0.0;
+    int carrying = 0;
+    for (const Contact& c : w.contacts) {
+      if (c.state.normal_force <= 0.0) continue;
+      const double angle = barton_bandis_angle(25.0, 10.0, 5e7, c.state.normal_force / c.length);
+      lo = std::min(lo, angle);
+      hi = std::max(hi, angle);
+      ++carrying;
+    }
+    REQUIRE(carrying == 2);
+    const LimitAnalysisResult r = limit_analysis(w, LimitAnalysisSettings{});
+    REQUIRE(r.found);
+    INFO("factor " << r.factor << ", the law's between " << lo << " and " << hi << " degrees");
+    CHECK(r.upper >= std::tan(deg(lo)) / std::tan(deg(30.0)));
+    CHECK(r.factor <= std::tan(deg(hi)) / std::tan(deg(30.0)));
+    CHECK(lo > 45.0);  // far above phi_r's tan 25 / tan 30 = 0.81
   }
 }
 
