@@ -180,15 +180,16 @@ Point along(const Point& a, const Point& b, double t) {
   return a + Kernel::FT(t) * (b - a);
 }
 
-// A corner of a boundary cycle (a vertex between two edges that are not collinear, decided
-// exactly) and the lengths, by joint group, of the halfedges from it to the next corner: one
+// A corner of a boundary cycle (a vertex between two edges that are not collinear, as
+// cycle_corners decides) and the lengths, by joint group, of the halfedges from it to the next corner: one
 // edge of the block, which may be several halfedges where other traces end on it.
 struct Corner {
   Arrangement::Vertex_const_handle vertex;
   std::map<int, double> lengths;  // group -> length of the span's halfedges
 };
 
-// The group of an edge: that of its longest part (the lower group on a tie), -1 if none.
+// The group with the longest length (the lower group on a tie), -1 if none: a pair's
+// (adjacency).
 int longest_group(const std::map<int, double>& lengths) {
   int group = kNoGroup;
   double longest = -1.0;
@@ -423,15 +424,8 @@ std::vector<BlockAdjacency> adjacency(const Arrangement& arr,
   std::vector<BlockAdjacency> pairs;
   pairs.reserve(lengths.size());
   for (const auto& [pair, by_group] : lengths) {
-    BlockAdjacency adjacent{pair.first, pair.second, kNoGroup, 0.0};
-    double longest = -1.0;
-    for (const auto& [group, length] : by_group) {  // groups in increasing order
-      adjacent.shared_length += length;
-      if (length > longest) {
-        longest = length;
-        adjacent.group = group;
-      }
-    }
+    BlockAdjacency adjacent{pair.first, pair.second, longest_group(by_group), 0.0};
+    for (const auto& [group, length] : by_group) adjacent.shared_length += length;
     pairs.push_back(adjacent);
   }
   return pairs;
@@ -547,13 +541,8 @@ CutResult cut_domain(const Polygon& domain, const std::vector<JointSegment>& joi
     }
     block_of[&*f] = static_cast<int>(result.blocks.size());
     result.blocks.push_back(std::move(block));
-    std::vector<int> groups;
     std::vector<std::vector<std::pair<int, double>>> parts;
-    for (const auto& lengths : edge_lengths) {
-      groups.push_back(longest_group(lengths));
-      parts.emplace_back(lengths.begin(), lengths.end());
-    }
-    result.edge_groups.push_back(std::move(groups));
+    for (const auto& lengths : edge_lengths) parts.emplace_back(lengths.begin(), lengths.end());
     result.edge_parts.push_back(std::move(parts));
   }
   result.adjacency = adjacency(arr, block_of);

@@ -48,12 +48,10 @@ struct CutResult {
   int collapsed_faces = 0;
   // Every pair of blocks sharing an edge of positive length, sorted by (a, b).
   std::vector<BlockAdjacency> adjacency;
-  // Per block, per edge (edge k from vertex k to vertex k + 1): the group of the joint the
-  // edge lies on (where several segments make one edge, the group of its longest part), -1
-  // for the domain's boundary and hole bridges.
-  std::vector<std::vector<int>> edge_groups;
-  // Per block, per edge: the length of each group's part of it (group, m; by group), e.g. the
-  // traces and the rock bridges of one line of a set.
+  // Per block, per edge (edge k from vertex k to vertex k + 1): the length of each joint
+  // group's part of it (group, m; by group; -1 for the domain's boundary and hole bridges).
+  // One part where the edge lies on one joint, however many arrangement edges make it; a
+  // line of a set cut with its rock bridges gives the traces' and the bridges' parts.
   std::vector<std::vector<std::vector<std::pair<int, double>>>> edge_parts;
 };
 

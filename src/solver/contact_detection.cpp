@@ -54,7 +54,6 @@ Contact make_contact(const World& world, const ContactCandidate& c, const EdgeFr
   Contact k;
   k.key = {c.vertex_block, c.vertex, c.edge_block, c.edge};
   k.joint = joint_of_contact(world, c.vertex_block, c.edge_block, c.edge);
-
   k.vertex = vp[c.vertex];
   k.edge_start = frame.start;
   k.edge_end = frame.end;

@@ -231,17 +231,21 @@ TEST_CASE("each edge of a block has the group of the joint it lies on, the bound
   const Polygon domain{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
   const CutResult cut = cut_domain(domain, {{{-1, 4}, {11, 4}, 0}, {{6, 4}, {6, 11}, 1}});
   REQUIRE(cut.blocks.size() == 3);
-  REQUIRE(cut.edge_groups.size() == 3);
+  REQUIRE(cut.edge_parts.size() == 3);
   for (std::size_t i = 0; i < cut.blocks.size(); ++i) {
     const Polygon& b = cut.blocks[i];
-    REQUIRE(cut.edge_groups[i].size() == b.size());
+    REQUIRE(cut.edge_parts[i].size() == b.size());
     for (std::size_t k = 0; k < b.size(); ++k) {
       const Vec2 p = b[k], q = b[(k + 1) % b.size()];
       const Vec2 m = 0.5 * (p + q);
       INFO("block " << i << " edge " << k << " middle " << m.transpose());
       const bool on_boundary = m.x() == 0.0 || m.x() == 10.0 || m.y() == 0.0 || m.y() == 10.0;
       const int expected = on_boundary ? -1 : (m.y() == 4.0 ? 0 : 1);
-      CHECK(cut.edge_groups[i][k] == expected);
+      // One part, the whole edge: axis-parallel lengths between exact corners, summed (6 + 4
+      // on the lower block's top): exact in doubles.
+      REQUIRE(cut.edge_parts[i][k].size() == 1);
+      CHECK(cut.edge_parts[i][k][0].first == expected);
+      CHECK(cut.edge_parts[i][k][0].second == (q - p).norm());
     }
   }
 }
