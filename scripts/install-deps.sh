@@ -6,7 +6,7 @@ pkgs=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libsuitesparse-dev libsundials-dev
   libopenblas0-pthread
-  libcgal-dev coinor-libclp-dev
+  libcgal-dev coinor-libclp-dev zlib1g-dev
   catch2 nlohmann-json3-dev libcli11-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib
 )

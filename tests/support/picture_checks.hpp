@@ -1,7 +1,6 @@
 // The picture tests' shared helpers (io/test_png_writer.cpp, test_raster.cpp,
-// test_bitmap_font.cpp, test_block_picture.cpp): temporary files, a small stored-deflate
-// PNG reader written here (independent of the writer's code, with reference CRC-32 and
-// Adler-32 from their definitions), pixel counts, rectangles by their corners and the
+// test_bitmap_font.cpp, test_block_picture.cpp): temporary files, a small PNG reader written here (independent of the writer's code: a reference CRC-32 from its
+// definition, zlib's inflate, all five row filters), pixel counts, rectangles by their corners and the
 // colours the tests paint with. In a namespace of their own: rectangle() here takes two
 // corners, scene_builders.hpp's an origin and a size.
 #pragma once
@@ -9,6 +8,9 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <zlib.h>
+
+#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -57,17 +59,6 @@ inline std::uint32_t crc32_bitwise(const std::uint8_t* p, std::size_t n) {
   return ~c;
 }
 
-// Reference Adler-32 from the definition, reducing after every byte in 64 bits.
-inline std::uint32_t adler32_naive(const Bytes& data) {
-  std::uint64_t a = 1;
-  std::uint64_t b = 0;
-  for (std::uint8_t x : data) {
-    a = (a + x) % 65521;
-    b = (b + a) % 65521;
-  }
-  return static_cast<std::uint32_t>((b << 16) | a);
-}
-
 inline std::uint32_t be32(const Bytes& d, std::size_t at) {
   return (std::uint32_t{d.at(at)} << 24) | (std::uint32_t{d.at(at + 1)} << 16) |
          (std::uint32_t{d.at(at + 2)} << 8) | std::uint32_t{d.at(at + 3)};
@@ -99,35 +90,40 @@ inline std::vector<Chunk> read_chunks(const Bytes& file) {
   return chunks;
 }
 
-// Inflates a zlib stream made of stored deflate blocks only (RFC 1950, RFC 1951 3.2.4),
-// checking the header, each block's NLEN, that the last block is marked final, and the
-// Adler-32 trailer.
-inline Bytes inflate_stored(const Bytes& z) {
+// Inflates a zlib stream (RFC 1950) with zlib's own inflate, after checking its header by
+// hand; zlib checks the Adler-32 trailer, and nothing may follow it.
+inline Bytes inflate_stream(const Bytes& z) {
   REQUIRE(z.size() >= 6);
   CHECK((z[0] & 0x0F) == 8);                // CM = deflate
   CHECK((z[0] >> 4) <= 7);                  // window at most 32 KiB
   CHECK((z[0] * 256 + z[1]) % 31 == 0);     // FCHECK
   CHECK((z[1] & 0x20) == 0);                // no preset dictionary
+  z_stream s{};
+  REQUIRE(inflateInit(&s) == Z_OK);
   Bytes out;
-  std::size_t at = 2;
-  bool final = false;
-  int blocks = 0;
-  while (!final) {
-    REQUIRE(at + 5 <= z.size());
-    final = (z[at] & 1) != 0;
-    REQUIRE(((z[at] >> 1) & 3) == 0);  // BTYPE 00: stored
-    const unsigned len = z[at + 1] | (z[at + 2] << 8);
-    const unsigned nlen = z[at + 3] | (z[at + 4] << 8);
-    REQUIRE((len ^ 0xFFFFU) == nlen);
-    at += 5;
-    REQUIRE(at + len <= z.size());
-    out.insert(out.end(), z.begin() + static_cast<std::ptrdiff_t>(at), z.begin() + static_cast<std::ptrdiff_t>(at + len));
-    at += len;
-    ++blocks;
+  std::uint8_t buffer[65536];
+  s.next_in = const_cast<Bytef*>(z.data());
+  s.avail_in = static_cast<uInt>(z.size());
+  int rc = Z_OK;
+  while (rc == Z_OK) {
+    s.next_out = buffer;
+    s.avail_out = sizeof buffer;
+    rc = inflate(&s, Z_NO_FLUSH);
+    out.insert(out.end(), buffer, buffer + (sizeof buffer - s.avail_out));
   }
-  REQUIRE(at + 4 == z.size());  // nothing after the trailer
-  CHECK(be32(z, at) == adler32_naive(out));
+  const std::size_t left = s.avail_in;
+  inflateEnd(&s);
+  REQUIRE(rc == Z_STREAM_END);
+  REQUIRE(left == 0);  // nothing after the trailer
   return out;
+}
+
+// The Paeth predictor of PNG filter type 4 (PNG spec section 9.4).
+inline int paeth(int a, int b, int c) {
+  const int p = a + b - c;
+  const int pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
+  if (pa <= pb && pa <= pc) return a;
+  return pb <= pc ? b : c;
 }
 
 struct Decoded {
@@ -158,13 +154,23 @@ inline Decoded decode_png(const Bytes& file) {
     REQUIRE(chunks[i].type == "IDAT");
     z.insert(z.end(), chunks[i].data.begin(), chunks[i].data.end());
   }
-  const Bytes raw = inflate_stored(z);
-  const std::size_t row = std::size_t{d.width} * 3 + 1;
+  const Bytes raw = inflate_stream(z);
+  const std::size_t stride = std::size_t{d.width} * 3;
+  const std::size_t row = stride + 1;
   REQUIRE(raw.size() == row * d.height);
+  // Undoes whichever of the five filters (PNG spec section 9.2) each row was written with.
+  d.pixels.assign(stride * d.height, 0);
   for (std::size_t y = 0; y < d.height; ++y) {
-    CHECK(raw[y * row] == 0);  // filter type None
-    d.pixels.insert(d.pixels.end(), raw.begin() + static_cast<std::ptrdiff_t>(y * row + 1),
-                    raw.begin() + static_cast<std::ptrdiff_t>((y + 1) * row));
+    const int filter = raw[y * row];
+    REQUIRE(filter <= 4);
+    for (std::size_t i = 0; i < stride; ++i) {
+      const int a = i >= 3 ? d.pixels[y * stride + i - 3] : 0;
+      const int b = y > 0 ? d.pixels[(y - 1) * stride + i] : 0;
+      const int c = (i >= 3 && y > 0) ? d.pixels[(y - 1) * stride + i - 3] : 0;
+      const int predicted = filter == 0 ? 0 : filter == 1 ? a : filter == 2 ? b
+                          : filter == 3 ? (a + b) / 2 : paeth(a, b, c);
+      d.pixels[y * stride + i] = static_cast<std::uint8_t>(raw[y * row + 1 + i] + predicted);
+    }
   }
   return d;
 }
