@@ -10,8 +10,8 @@
 
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
-#include "io/block_picture.hpp"
 #include "io/bolt_force_report.hpp"
+#include "io/fos_pictures.hpp"
 #include "io/fos_report.hpp"
 #include "io/output_file.hpp"
 #include "io/scene_reader.hpp"
@@ -35,105 +35,6 @@ std::string format(double x, const char* spec) {
   char buf[64];
   std::snprintf(buf, sizeof buf, spec, x);
   return buf;
-}
-
-// The block's polygon moved rigidly by the displacement u of its centroid and the small
-// rotation theta about it: each vertex p to p + u + theta x (p - c). The pictures draw
-// motions multiplied to be seen with it.
-Polygon moved_rigidly(const Block& b, const Vec2& u, double theta) {
-  Polygon p = b.vertices;
-  for (Vec2& v : p) {
-    const Vec2 r = v - b.moments.centroid;
-    v += u + theta * Vec2(-r.y(), r.x());
-  }
-  return p;
-}
-
-// How many of a trial's moving blocks get an arrow, and how many a number: beyond these the
-// picture of a 2000-block slope is a smear; the report lists them all.
-constexpr std::size_t kArrowsDrawn = 60;
-constexpr std::size_t kNumbersDrawn = 25;
-
-// The mechanism of one trial, drawn to be seen: every block where the consolidation left it
-// (fixed grey, free pale); each block that moved more than a tenth of the largest
-// displacement (trial_mechanism's share) drawn again, displaced rigidly by its centroid's
-// displacement u and rotation theta, both multiplied by one factor X that makes the largest
-// move a quarter of a typical block's size (p + X (u + theta x (p - c))), coloured by |u|;
-// an arrow from its centroid along u (the 60 largest); and its block number (the 25
-// largest), as report.json numbers blocks.
-// The bolts not broken, as lines between their ends where `world` has them.
-void add_bolt_lines(const World& world, PictureOptions& options) {
-  for (std::size_t i = 0; i < world.bolts.size(); ++i) {
-    if (world.bolts[i].broken) continue;
-    options.lines.push_back({world.bolt_ends[2 * i].current, world.bolt_ends[2 * i + 1].current});
-  }
-}
-
-void write_mechanism_picture(const std::filesystem::path& path, const World& consolidated,
-                             const TrialResult& t, const std::string& what) {
-  const std::vector<BlockMotion> moved = moved_blocks(consolidated, t.world);
-  const double largest = moved.empty() ? 0.0 : moved.front().displacement.norm();
-  const double shown = 0.25 * std::sqrt(median_free_block_area(consolidated));
-  const double x = largest > 0.0 ? shown / largest : 0.0;
-  std::vector<PictureBlock> blocks;
-  for (const Block& b : consolidated.blocks) {
-    if (b.excavated) continue;  // gone
-    blocks.push_back({b.vertices, b.fixed ? Rgb{190, 190, 190} : Rgb{235, 235, 235}});
-  }
-  PictureOptions options;
-  add_bolt_lines(t.world, options);
-  for (auto it = moved.rbegin(); it != moved.rend(); ++it) {  // the largest on top
-    const Block& b = consolidated.blocks[static_cast<std::size_t>(it->block)];
-    blocks.push_back({moved_rigidly(b, x * it->displacement, x * it->rotation),
-                      sequential_colour(it->displacement.norm() / largest)});
-  }
-  // The arrows are longer than the drawn displacement (the largest 0.8 of a typical block)
-  // so that their direction reads at a slope's scale.
-  for (std::size_t k = 0; k < moved.size() && k < kArrowsDrawn; ++k) {
-    const Vec2 c = consolidated.blocks[static_cast<std::size_t>(moved[k].block)].moments.centroid;
-    options.arrows.push_back({c, c + 3.2 * x * moved[k].displacement, Rgb{200, 0, 0}});
-  }
-  for (std::size_t k = 0; k < moved.size() && k < kNumbersDrawn; ++k) {
-    const Vec2 c = consolidated.blocks[static_cast<std::size_t>(moved[k].block)].moments.centroid;
-    options.labels.push_back({c, std::to_string(moved[k].block), Rgb{0, 0, 0}});
-  }
-  options.width_px = 1600;
-  options.title = what + ": F = " + format(t.factor, "%.4f") + ", " +
-                  (t.stable ? "stable" : "failing") + " (" + t.verdict + "); " +
-                  std::to_string(moved.size()) + " blocks moved, drawn x" + format(x, "%.3g") +
-                  (moved.empty() ? std::string()
-                                 : ", block " + std::to_string(moved.front().block) + " most");
-  options.colour_bar = ColourBar{"displacement in the trial (m)", 0.0, largest};
-  write_block_picture(path.string(), blocks, options);
-}
-
-// The limit analysis's mechanism: every block where the consolidation left it (fixed ones
-// grey, free ones pale), then each moving block again, moved rigidly along its mechanism
-// velocity (v + omega x (p - c)) so that the fastest moves a quarter of a typical block's
-// size, coloured by its speed (viridis).
-void write_limit_analysis_picture(const std::filesystem::path& path, const World& world,
-                                  const LimitAnalysisResult& la) {
-  // (A mechanism has free blocks, so the median exists.)
-  if (la.mechanism.empty()) return;
-  const double shown = 0.25 * std::sqrt(median_free_block_area(world));
-  std::vector<PictureBlock> blocks;
-  for (const Block& b : world.blocks) {
-    if (b.excavated) continue;  // gone
-    blocks.push_back({b.vertices, b.fixed ? Rgb{190, 190, 190} : Rgb{235, 235, 235}});
-  }
-  for (auto it = la.mechanism.rbegin(); it != la.mechanism.rend(); ++it) {  // fastest on top
-    const Block& b = world.blocks[static_cast<std::size_t>(it->block)];
-    blocks.push_back({moved_rigidly(b, shown * it->velocity, shown * it->angular_velocity),
-                      sequential_colour(it->velocity.norm())});
-  }
-  PictureOptions options;
-  add_bolt_lines(world, options);
-  options.width_px = 1600;
-  options.title = "limit-analysis mechanism at F = " + format(la.upper, "%.4f") +
-                  " (rigid motion exaggerated: the fastest block moved " + format(shown, "%.3g") +
-                  " m)";
-  options.colour_bar = ColourBar{"speed, share of the fastest block's", 0.0, 1.0};
-  write_block_picture(path.string(), blocks, options);
 }
 
 // --target-factor F: the bisection on the bolts' force, a trial at F each, the report in
@@ -216,7 +117,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   // The output directory before any work: a search of hours whose report cannot be written
   // fails now, not at its end.
   prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
-                                     "last_stable.png", "first_failing.png"});
+                                     "last_stable.png", "first_failing.png", "trials.png"});
 
   // SIGINT or SIGTERM (watched from the start of main): the consolidation or the running
   // trials stop at their next step, and the report holds the trials judged so far (a second
@@ -397,6 +298,9 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   }
   write_fos_report(out_dir, scene, settings, info, reported, wall, &limit,
                    dynamic ? &*dynamic : nullptr, spread ? &*spread : nullptr);
+  // The trials' chart also when no factor was found: it shows why (all stable, all failing).
+  write_trials_chart(std::filesystem::path(out_dir) / "trials.png", result, settings.failure_displacement,
+                     limit.analysis.found ? &limit.analysis : nullptr);
   if (!result.found) {
     std::cerr << "dda: error: no factor of safety: " << result.message << "; trials in "
               << out_dir << "/report.json\n";

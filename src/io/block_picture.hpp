@@ -14,6 +14,7 @@
 
 #include "io/colour_maps.hpp"
 #include "io/image.hpp"
+#include "io/picture_layout.hpp"
 #include "kinematics/types.hpp"
 
 namespace dda {
@@ -21,11 +22,10 @@ namespace dda {
 struct PictureBlock {
   Polygon polygon;  // world coordinates (m); concave allowed, either orientation
   Rgb fill;
-};
-
-struct LegendEntry {
-  std::string label;
-  Rgb colour;
+  // A marked block (one that moves in a mechanism): its outline in this colour and width
+  // (px), drawn over all plain outlines; none keeps the picture's 1 px edge.
+  std::optional<Rgb> outline = std::nullopt;
+  double outline_width = 3.0;
 };
 
 // A horizontal bar of sequential_colour(t) for t from 0 (left) to 1 (right), labelled with
@@ -45,11 +45,13 @@ struct PictureArrow {
   Rgb colour = {200, 0, 0};
 };
 
-// A straight line between two world points (a rock bolt), drawn over the blocks.
+// A straight line between two world points (a rock bolt, a force chain's link), drawn over
+// the blocks.
 struct PictureLine {
   Vec2 from = Vec2::Zero();
   Vec2 to = Vec2::Zero();
   Rgb colour = {230, 120, 0};  // orange: apart from the materials' and the arrows' colours
+  double width_px = 2.0;
 };
 
 // A short text (a block number) centred on a world point, on a white box so it reads over
@@ -68,6 +70,10 @@ struct PictureOptions {
   std::vector<PictureLine> lines;       // over the blocks, under the labels (bolts)
   std::vector<PictureLabel> labels;     // over the blocks; text at the title's scale - 1
   std::vector<PictureArrow> arrows;     // over the labels, in order
+  int label_scale = 0;                  // font pixels per pixel of the labels; 0: title's - 1
+  // Axes in metres along the left and bottom of the blocks' extent, with round tick values,
+  // "x (m)" and "y (m)", and a scale bar of a round length.
+  bool axes = false;
   Rgb edge = {40, 40, 40};              // block outlines, 1 px
   Rgb background = {255, 255, 255};
   Rgb text = {0, 0, 0};

@@ -71,6 +71,23 @@ void draw_line(Image& image, const Vec2& from, const Vec2& to, Rgb colour) {
   }
 }
 
+void draw_thick_line(Image& image, const Vec2& from, const Vec2& to, double width, Rgb colour) {
+  if (!(width > 1.0)) {
+    draw_line(image, from, to, colour);
+    return;
+  }
+  const double h = 0.5 * width;
+  const Vec2 d = to - from;
+  const double length = d.norm();
+  if (length > 0.0) {
+    const Vec2 across = Vec2(-d.y(), d.x()) * (h / length);
+    fill_polygon(image, {from + across, to + across, to - across, from - across}, colour);
+  }
+  for (const Vec2& end : {from, to}) {
+    fill_polygon(image, {end + Vec2(-h, -h), end + Vec2(h, -h), end + Vec2(h, h), end + Vec2(-h, h)}, colour);
+  }
+}
+
 void fill_rect(Image& image, int x0, int y0, int w, int h, Rgb colour) {
   for (int y = std::max(0, y0); y < std::min(image.height, y0 + h); ++y)
     for (int x = std::max(0, x0); x < std::min(image.width, x0 + w); ++x) image.set(x, y, colour);

@@ -18,6 +18,11 @@ void fill_polygon(Image& image, const Polygon& pixel_polygon, Rgb colour);
 // A 1-pixel line between the pixels holding the two points (Bresenham), both ends included.
 void draw_line(Image& image, const Vec2& from, const Vec2& to, Rgb colour);
 
+// A line `width` pixels wide (at least 1): the rectangle of that width around the segment,
+// filled as a polygon, with a square of that width over each end so that joined segments
+// (a polyline) leave no notch. Width 1 or less is draw_line.
+void draw_thick_line(Image& image, const Vec2& from, const Vec2& to, double width, Rgb colour);
+
 // Fills the pixels x in [x0, x0 + w), y in [y0, y0 + h).
 void fill_rect(Image& image, int x0, int y0, int w, int h, Rgb colour);
 

@@ -90,3 +90,30 @@ TEST_CASE("raster: lines include both end pixels and step once per pixel", "[pic
   CHECK(diag.at(15, 1) == kRed);
   CHECK(diag.at(3, 18) == kRed);
 }
+
+TEST_CASE("raster: a thick line covers its rectangle and squares at its ends", "[picture][raster]") {
+  // Horizontal, 4 px wide, from x = 10 to 30 at y = 20: the band [8, 32) x [18, 22) (the end
+  // squares reach half the width past each end), 24 x 4 = 96 pixel centres inside.
+  Image img(40, 40, kWhite);
+  draw_thick_line(img, {10.0, 20.0}, {30.0, 20.0}, 4.0, kRed);
+  CHECK(count(img, kRed) == 96);
+  CHECK(img.at(8, 18) == kRed);
+  CHECK(img.at(31, 21) == kRed);
+  CHECK(img.at(7, 20) == kWhite);
+  CHECK(img.at(20, 22) == kWhite);
+  // Diagonal at 45 degrees, 6 px wide: the band's pixels lie within 3 px of the segment's line
+  // (y = x) and none of them farther than half the width plus a pixel's half diagonal.
+  Image diag(60, 60, kWhite);
+  draw_thick_line(diag, {10.0, 10.0}, {50.0, 50.0}, 6.0, kBlue);
+  int far = 0;
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 60; ++x)
+      if (diag.at(x, y) == kBlue && std::abs((x + 0.5) - (y + 0.5)) / std::sqrt(2.0) > 3.0 + 0.71) ++far;
+  CHECK(far == 0);
+  CHECK(diag.at(30, 30) == kBlue);
+  CHECK(diag.at(31, 29) == kBlue);  // 1.4 px off the line: inside the 3 px half width
+  // Width 1 is the Bresenham line: 11 pixels from 2 to 12.
+  Image thin(20, 20, kWhite);
+  draw_thick_line(thin, {2.5, 4.5}, {12.5, 4.5}, 1.0, kRed);
+  CHECK(count(thin, kRed) == 11);
+}
