@@ -178,8 +178,7 @@ TEST_CASE("the binary file holds each array as VTK's zlib blocks of its little-e
                    "byte_order=\"LittleEndian\" header_type=\"UInt64\" "
                    "compressor=\"vtkZLibDataCompressor\">\n", 0) == 0);
   CHECK(file.find("format=\"ascii\"") == std::string::npos);
-  CHECK(file.size() > 12);
-  CHECK(file.substr(file.size() - 12) == "</VTKFile>\n");
+  CHECK(file.ends_with("\n  </AppendedData>\n</VTKFile>\n"));
 
   const Decoded stress = decode_appended(file, "stress");
   // 6 doubles = 48 bytes: one partial block of 48 bytes.
