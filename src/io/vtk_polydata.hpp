@@ -1,5 +1,5 @@
 // One piece of VTK XML PolyData as plain data, and its file text (docs/output-format.md,
-// "VTK frames"). Every VTK series of a run (blocks, contacts, bolts) fills a VtkPolyData and
+// "VTK frames: encoding"). Every VTK series of a run (blocks, contacts, bolts) fills a VtkPolyData and
 // writes it here; io/vtk_reader.hpp reads the files back into the same struct.
 //
 // The layout follows "VTK File Formats" (the VTK User's Guide, XML file formats, PolyData):
