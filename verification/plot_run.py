@@ -4,6 +4,7 @@ and DIR/history.csv, into DIR/run.png. Usage: verification/plot_run.py DIR [--fr
 import argparse
 import csv
 import os
+import sys
 import xml.etree.ElementTree as ET
 
 import matplotlib
@@ -12,16 +13,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import vtk_frames  # noqa: E402  (the frames in either encoding, ASCII or zlib binary)
+
 
 def read_frame(path):
     """Block polygons of one .vtp frame, as a list of (n, 2) arrays."""
-    piece = ET.parse(path).getroot().find("PolyData/Piece")
-    pts = np.array(piece.find("Points/DataArray").text.split(), float).reshape(-1, 3)[:, :2]
-    arrays = {a.get("Name"): a for a in piece.find("Polys").findall("DataArray")}
-    conn = np.array(arrays["connectivity"].text.split(), int)
-    offsets = np.array(arrays["offsets"].text.split(), int)
-    starts = np.concatenate(([0], offsets[:-1]))
-    return [pts[conn[s:e]] for s, e in zip(starts, offsets)]
+    return [np.array(p, float).reshape(-1, 2) for p in vtk_frames.polygons(vtk_frames.read_vtp(path))]
 
 
 def main():

@@ -109,8 +109,11 @@ dda::Scene load_scene(const std::string& path) {
   return dda::read_scene_file(path);
 }
 
-int run_command(const std::string& scene_path, const std::string& out_dir) {
-  const dda::Scene scene = load_scene(scene_path);
+// `vtk_format`: "binary" or "ascii" from --vtk-format, or empty for the scene's own.
+int run_command(const std::string& scene_path, const std::string& out_dir,
+                const std::string& vtk_format) {
+  dda::Scene scene = load_scene(scene_path);
+  if (!vtk_format.empty()) scene.control.vtk_binary = vtk_format == "binary";
   for (const std::string& warning : scene.warnings) {
     std::cerr << "dda: warning: " << warning << "\n";
   }
@@ -222,6 +225,11 @@ int main(int argc, char** argv) {
   run->add_option("scene", scene_path, "Scene file (JSON, see docs/scene-format.md)");
   run->add_option("--out", out_dir, "Directory for summary.json, history.csv and VTK files")
       ->capture_default_str();
+  std::string vtk_format;  // empty: the scene's control.vtk_format
+  run->add_option("--vtk-format", vtk_format,
+                  "How the VTK frames store their arrays: binary (zlib-compressed, appended) or "
+                  "ascii; overrides the scene's control.vtk_format")
+      ->check(CLI::IsMember({"binary", "ascii"}));
 
   std::string spec_path;
   std::string csv_file = "material-point.csv";
@@ -305,7 +313,7 @@ int main(int argc, char** argv) {
     if (point->parsed()) require_output_path(csv_file, "material-point");
     if (fos_app->parsed()) require_output_path(fos_dir, "fos");
     if (cut->parsed()) require_output_path(scene_out, "cut");
-    if (run->parsed()) return run_command(scene_path, out_dir);
+    if (run->parsed()) return run_command(scene_path, out_dir, vtk_format);
     if (point->parsed()) return material_point_command(spec_path, csv_file);
     if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_options);
     if (cut->parsed()) return dda::cut_command(model_path, scene_out);

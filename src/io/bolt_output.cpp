@@ -8,56 +8,44 @@
 namespace dda {
 namespace {
 
-std::string num(double x) { return format_full_precision(x); }
-
-// One <DataArray> of cell data: `value(i)` writes bolt i's value.
-void cell_array(std::string& s, const World& w, const char* type, const char* name,
-                const std::function<std::string(std::size_t)>& value) {
-  s += "        <DataArray type=\"";
-  s += type;
-  s += "\" Name=\"";
-  s += name;
-  s += "\" NumberOfComponents=\"1\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < w.bolts.size(); ++i) s += "          " + value(i) + "\n";
-  s += "        </DataArray>\n";
+// One cell data array of the bolts: `value(i)` gives bolt i's value.
+VtkArray bolt_array(const World& w, VtkType type, const char* name,
+                    const std::function<double(std::size_t)>& value) {
+  VtkArray a{name, type, 1, {}, {}};
+  for (std::size_t i = 0; i < w.bolts.size(); ++i) a.values.push_back(value(i));
+  return a;
 }
 
 }  // namespace
 
 std::string bolt_frame_name(int step) { return vtk_frame_name("bolts", step); }
 
-std::string bolts_vtp_text(const World& w) {
-  const std::size_t n = w.bolts.size();
-  std::string s = vtp_opening(2 * n, 0, n, 0);
-  s += "      <Points>\n";
-  s += "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const BoltEnd& e : w.bolt_ends) {
-    s += "          " + num(e.current.x()) + " " + num(e.current.y()) + " 0\n";
+VtkPolyData bolts_piece(const World& w) {
+  VtkPolyData p;
+  VtkCells lines;
+  lines.index_type = VtkType::Int64;
+  for (const BoltEnd& e : w.bolt_ends) p.points.push_back(e.current);
+  for (std::size_t k = 0; k < w.bolts.size(); ++k) {
+    lines.connectivity.push_back(static_cast<std::int64_t>(2 * k));
+    lines.connectivity.push_back(static_cast<std::int64_t>(2 * k + 1));
+    lines.offsets.push_back(static_cast<std::int64_t>(2 * k + 2));
   }
-  s += "        </DataArray>\n      </Points>\n      <Lines>\n";
-  std::string connectivity, offsets;
-  for (std::size_t k = 0; k < n; ++k) {
-    connectivity += ' ';
-    connectivity += std::to_string(2 * k);
-    connectivity += ' ';
-    connectivity += std::to_string(2 * k + 1);
-    offsets += ' ';
-    offsets += std::to_string(2 * k + 2);
-  }
-  s += "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">" + connectivity +
-       "</DataArray>\n";
-  s += "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">" + offsets +
-       "</DataArray>\n";
-  s += "      </Lines>\n      <CellData Scalars=\"force\">\n";
-  cell_array(s, w, "Int32", "bolt", [](std::size_t i) { return std::to_string(i); });
-  cell_array(s, w, "Float64", "force", [&w](std::size_t i) { return num(w.bolts[i].force); });
-  cell_array(s, w, "Float64", "plastic_extension",
-             [&w](std::size_t i) { return num(w.bolts[i].plastic_extension); });
-  cell_array(s, w, "Int32", "yielding",
-             [&w](std::size_t i) { return std::string(bolt_yielding(w.bolts[i]) ? "1" : "0"); });
-  cell_array(s, w, "Int32", "broken", [&w](std::size_t i) { return std::string(w.bolts[i].broken ? "1" : "0"); });
-  s += "      </CellData>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  return s;
+  p.lines = std::move(lines);
+  p.cell_scalars = "force";
+  const auto flag = [](bool on) { return on ? 1.0 : 0.0; };
+  std::vector<VtkArray>& cd = p.cell_data;
+  cd.push_back(bolt_array(w, VtkType::Int32, "bolt", [](std::size_t i) { return static_cast<double>(i); }));
+  cd.push_back(bolt_array(w, VtkType::Float64, "force", [&w](std::size_t i) { return w.bolts[i].force; }));
+  cd.push_back(bolt_array(w, VtkType::Float64, "plastic_extension",
+                          [&w](std::size_t i) { return w.bolts[i].plastic_extension; }));
+  cd.push_back(bolt_array(w, VtkType::Int32, "yielding",
+                          [&](std::size_t i) { return flag(bolt_yielding(w.bolts[i])); }));
+  cd.push_back(bolt_array(w, VtkType::Int32, "broken", [&](std::size_t i) { return flag(w.bolts[i].broken); }));
+  return p;
+}
+
+std::string bolts_vtp_text(const World& w, VtkEncoding encoding) {
+  return vtp_file(bolts_piece(w), encoding);
 }
 
 }  // namespace dda

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/vtk_polydata.hpp"
 #include "solver/world.hpp"
 
 namespace dda {
@@ -14,13 +15,16 @@ namespace dda {
 // "vtk/contacts_NNNNNN.vtp" for the output step `step` (beside the blocks' step_NNNNNN.vtp).
 std::string contact_frame_name(int step);
 
-// The VTK XML PolyData text of the world's contacts: points (one vertex cell each) with the
+// The world's contacts as a VTK piece: points (one vertex cell each) with the
 // point data mode (0 open, 1 slide, 2 lock), bonded (0/1), joint (the joint material's index
 // in the scene's order, "default" first), normal_force and shear_force (N/m, compression
 // positive; shear along the edge's tangent, on the vertex), slip (m, the last step's, along
 // the tangent), gap (m, after the last step's increments; > 0 open, < 0 penetrating),
 // normal (unit, out of the edge's block) and the two blocks' indices.
-std::string contacts_vtp_text(const World& world);
+VtkPolyData contacts_piece(const World& world);
+
+// The .vtp file of contacts_piece in that encoding (io/vtk_polydata.hpp).
+std::string contacts_vtp_text(const World& world, VtkEncoding encoding);
 
 // How many contacts are in each mode, per joint material (index as in Contact::joint).
 struct ContactModeCounts {

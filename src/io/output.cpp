@@ -28,15 +28,6 @@ std::string format_full_precision(double x) {
   return std::string(buf, r.ptr);
 }
 
-std::string vtp_opening(std::size_t points, std::size_t verts, std::size_t lines, std::size_t polys) {
-  return "<?xml version=\"1.0\"?>\n"
-         "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-         "  <PolyData>\n"
-         "    <Piece NumberOfPoints=\"" + std::to_string(points) + "\" NumberOfVerts=\"" +
-         std::to_string(verts) + "\" NumberOfLines=\"" + std::to_string(lines) +
-         "\" NumberOfStrips=\"0\" NumberOfPolys=\"" + std::to_string(polys) + "\">\n";
-}
-
 std::string vtk_frame_name(const char* prefix, int step) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "vtk/%s_%06d.vtp", prefix, step);
@@ -68,97 +59,59 @@ std::string frame_name(int step) { return vtk_frame_name("step", step); }
 
 // ---- VTK XML PolyData ----
 
-// One <DataArray> of per-cell values; `values(i)` gives the components of block i.
+// One cell data array of the blocks: `values(b)` gives block b's components.
 template <class Values>
-void cell_array(std::string& s, const World& w, const char* type, const char* name,
-                std::initializer_list<const char*> components, Values values) {
-  s += "        <DataArray type=\"";
-  s += type;
-  s += "\" Name=\"";
-  s += name;
-  s += "\" NumberOfComponents=\"" + std::to_string(components.size()) + "\"";
-  int k = 0;
+VtkArray block_array(const World& w, VtkType type, const char* name,
+                     std::vector<std::string> components, Values values) {
+  VtkArray a{name, type, static_cast<int>(components.size()), {}, {}};
   // Component names make ParaView show "sxx" rather than "0" in its menus.
-  for (const char* c : components) {
-    if (components.size() > 1) s += " ComponentName" + std::to_string(k++) + "=\"" + c + "\"";
+  if (components.size() > 1) a.component_names = std::move(components);
+  for (const Block& b : w.blocks) {
+    for (double v : values(b)) a.values.push_back(v);
   }
-  s += " format=\"ascii\">\n";
-  for (std::size_t i = 0; i < w.blocks.size(); ++i) {
-    s += "         ";
-    for (const std::string& v : values(w.blocks[i], static_cast<int>(i))) s += " " + v;
-    s += "\n";
-  }
-  s += "        </DataArray>\n";
+  return a;
 }
 
-std::vector<std::string> nums(std::initializer_list<double> xs) {
-  std::vector<std::string> out;
-  for (double x : xs) out.push_back(num(x));
-  return out;
-}
+std::vector<double> flag(bool on) { return {on ? 1.0 : 0.0}; }
 
-void write_points_and_polys(std::string& s, const World& w) {
-  s += "      <Points>\n";
-  s += "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+VtkPolyData make_blocks_piece(const World& w) {
+  VtkPolyData p;
+  VtkCells polys;
+  polys.index_type = VtkType::Int32;
+  polys.ascii_own_line = true;
   for (const Block& b : w.blocks) {
-    for (const Vec2& p : b.vertices) s += "          " + num(p.x()) + " " + num(p.y()) + " 0\n";
-  }
-  s += "        </DataArray>\n      </Points>\n      <Polys>\n";
-  std::string connectivity, offsets;
-  int next = 0;
-  for (const Block& b : w.blocks) {
-    // Appended piecewise: GCC 12 warns (-Wrestrict, a false positive) on " " + to_string.
-    for (std::size_t k = 0; k < b.vertices.size(); ++k) {
-      connectivity += ' ';
-      connectivity += std::to_string(next++);
+    for (const Vec2& q : b.vertices) {
+      polys.connectivity.push_back(static_cast<std::int64_t>(p.points.size()));
+      p.points.push_back(q);
     }
-    offsets += ' ';
-    offsets += std::to_string(next);
+    polys.offsets.push_back(static_cast<std::int64_t>(p.points.size()));
   }
-  s += "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n         " +
-       connectivity + "\n        </DataArray>\n";
-  s += "        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n         " +
-       offsets + "\n        </DataArray>\n      </Polys>\n";
-}
-
-void write_cell_data(std::string& s, const World& w) {
-  s += "      <CellData>\n";
-  cell_array(s, w, "Int32", "block", {"block"}, [](const Block&, int i) {
-    return std::vector<std::string>{std::to_string(i)};
-  });
-  cell_array(s, w, "UInt8", "fixed", {"fixed"}, [](const Block& b, int) {
-    return std::vector<std::string>{b.fixed ? "1" : "0"};
-  });
+  p.polys = std::move(polys);
+  std::vector<VtkArray>& cd = p.cell_data;
+  std::vector<double> index;
+  for (std::size_t i = 0; i < w.blocks.size(); ++i) index.push_back(static_cast<double>(i));
+  cd.push_back({"block", VtkType::Int32, 1, {}, index});
+  cd.push_back(block_array(w, VtkType::UInt8, "fixed", {"fixed"},
+                           [](const Block& b) { return flag(b.fixed); }));
   // A scene with excavation stages: 1 for a block removed (threshold it away in ParaView).
   if (world_excavates(w)) {
-    cell_array(s, w, "UInt8", "excavated", {"excavated"}, [](const Block& b, int) {
-      return std::vector<std::string>{b.excavated ? "1" : "0"};
-    });
+    cd.push_back(block_array(w, VtkType::UInt8, "excavated", {"excavated"},
+                             [](const Block& b) { return flag(b.excavated); }));
   }
-  cell_array(s, w, "Float64", "area", {"area"},
-             [](const Block& b, int) { return nums({b.moments.area}); });
-  cell_array(s, w, "Float64", "rotation", {"rotation"},
-             [](const Block& b, int) { return nums({b.rotation}); });
-  cell_array(s, w, "Float64", "stress", {"sxx", "syy", "sxy"}, [](const Block& b, int) {
-    return nums({b.stress[0], b.stress[1], b.stress[2]});
-  });
-  cell_array(s, w, "Float64", "strain", {"exx", "eyy", "gxy"}, [](const Block& b, int) {
-    return nums({b.strain[0], b.strain[1], b.strain[2]});
-  });
-  cell_array(s, w, "Float64", "velocity", {"vx", "vy", "omega"}, [](const Block& b, int) {
-    return nums({b.velocity[kU0], b.velocity[kV0], b.velocity[kR0]});
-  });
-  s += "      </CellData>\n";
-}
-
-std::string vtp_text(const World& w) {
-  std::size_t points = 0;
-  for (const Block& b : w.blocks) points += b.vertices.size();
-  std::string s = vtp_opening(points, 0, 0, w.blocks.size());
-  write_points_and_polys(s, w);
-  write_cell_data(s, w);
-  s += "    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  return s;
+  cd.push_back(block_array(w, VtkType::Float64, "area", {"area"},
+                           [](const Block& b) { return std::vector<double>{b.moments.area}; }));
+  cd.push_back(block_array(w, VtkType::Float64, "rotation", {"rotation"},
+                           [](const Block& b) { return std::vector<double>{b.rotation}; }));
+  cd.push_back(block_array(w, VtkType::Float64, "stress", {"sxx", "syy", "sxy"}, [](const Block& b) {
+    return std::vector<double>{b.stress[0], b.stress[1], b.stress[2]};
+  }));
+  cd.push_back(block_array(w, VtkType::Float64, "strain", {"exx", "eyy", "gxy"}, [](const Block& b) {
+    return std::vector<double>{b.strain[0], b.strain[1], b.strain[2]};
+  }));
+  cd.push_back(block_array(w, VtkType::Float64, "velocity", {"vx", "vy", "omega"}, [](const Block& b) {
+    return std::vector<double>{b.velocity[kU0], b.velocity[kV0], b.velocity[kR0]};
+  }));
+  return p;
 }
 
 std::string pvd_text(const std::vector<std::pair<double, std::string>>& frames) {
@@ -225,6 +178,7 @@ json settings_json(const World& w) {
       {"penalty", w.penalty},
       {"penalty_rule", c.penalty ? "user" : "auto"},
       {"output_every", c.output_every},
+      {"vtk_format", c.vtk_binary ? "binary" : "ascii"},
       {"w0", w.w0},
       {"max_open_close", c.max_open_close},
       {"contact_solver", name_in(kContactSolverNames, c.contact_solver)},
@@ -280,6 +234,8 @@ json block_json(const Block& b, int index) {
 }
 
 }  // namespace
+
+VtkPolyData blocks_piece(const World& world) { return make_blocks_piece(world); }
 
 namespace {
 
@@ -372,15 +328,16 @@ void OutputWriter::record(const World& world) {
   if (!world.monitors.empty()) record_monitors(world);
   if (!world.bolts.empty()) record_bolts(world);
 
+  const VtkEncoding encoding = scene_.control.vtk_binary ? VtkEncoding::Binary : VtkEncoding::Ascii;
   const std::string name = frame_name(world.step);
-  write_text_file((dir_ / name).string(), vtp_text(world));
+  write_text_file((dir_ / name).string(), vtp_file(blocks_piece(world), encoding));
   // Recording the same step twice (e.g. the final step is also an output step) overwrites
   // the frame; the index lists it once.
   if (frames_.empty() || frames_.back().second != name) frames_.emplace_back(world.time, name);
   write_text_file((dir_ / "blocks.pvd").string(), pvd_text(frames_));
 
   const std::string contacts = contact_frame_name(world.step);
-  write_text_file((dir_ / contacts).string(), contacts_vtp_text(world));
+  write_text_file((dir_ / contacts).string(), contacts_vtp_text(world, encoding));
   if (contact_frames_.empty() || contact_frames_.back().second != contacts) {
     contact_frames_.emplace_back(world.time, contacts);
   }
@@ -388,7 +345,7 @@ void OutputWriter::record(const World& world) {
 
   if (!world.bolts.empty()) {
     const std::string bolts = bolt_frame_name(world.step);
-    write_text_file((dir_ / bolts).string(), bolts_vtp_text(world));
+    write_text_file((dir_ / bolts).string(), bolts_vtp_text(world, encoding));
     if (bolt_frames_.empty() || bolt_frames_.back().second != bolts) {
       bolt_frames_.emplace_back(world.time, bolts);
     }

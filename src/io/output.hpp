@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/output_file.hpp"
+#include "io/vtk_polydata.hpp"
 #include "solver/run.hpp"
 #include "solver/scene.hpp"
 #include "solver/world.hpp"
@@ -18,9 +19,10 @@ namespace dda {
 // double.
 std::string format_full_precision(double x);
 
-// The opening of a VTK XML PolyData file with one piece of these counts (every series of
-// the run: blocks, contacts, bolts).
-std::string vtp_opening(std::size_t points, std::size_t verts, std::size_t lines, std::size_t polys);
+// The blocks of an output step as a VTK piece (docs/output-format.md): one polygon per
+// block, cell i block i, with the cell data block, fixed, (excavated,) area, rotation,
+// stress, strain and velocity. io/vtk_polydata.hpp writes it.
+VtkPolyData blocks_piece(const World& world);
 
 // A series' frame file name: "vtk/PREFIX_000120.vtp" for step 120.
 std::string vtk_frame_name(const char* prefix, int step);

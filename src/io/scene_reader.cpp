@@ -92,10 +92,11 @@ E named_value(const Field& f, const EnumName<E> (&table)[N], const std::string& 
          ")");
 }
 
-// The scene's names of two settings with two choices each (control.energy_losses,
-// control.linear_solver): the choice is the value.
+// The scene's names of the settings with two choices each (control.energy_losses,
+// control.linear_solver, control.vtk_format): the choice is the value.
 constexpr EnumName<bool> kEnergyLossNames[] = {{false, "report"}, {true, "stop"}};
 constexpr EnumName<bool> kLinearSolverNames[] = {{true, "reuse"}, {false, "factorise"}};
+constexpr EnumName<bool> kVtkFormatNames[] = {{true, "binary"}, {false, "ascii"}};
 
 RotationUpdate read_rotation_update(const Field& f) {
   return named_value(f, kRotationUpdateNames, "rotation update");
@@ -115,7 +116,7 @@ std::optional<double> positive_or_auto(const Field& f, std::string_view unit) {
 // `staged`: the scene has "stages", which set the run length (read_run_length).
 ControlSettings read_control(const Field& f, bool staged) {
   f.expect_keys({"time_step", "steps", "end_time", "max_displacement_ratio",
-                 "dynamic_coefficient", "rotation_update", "penalty", "output_every",
+                 "dynamic_coefficient", "rotation_update", "penalty", "output_every", "vtk_format",
                  "max_open_close", "max_augmentations", "allowed_penetration",
                  "energy_tolerance", "energy_losses", "linear_solver", "inertia",
                  "contact_solver"});
@@ -137,6 +138,7 @@ ControlSettings read_control(const Field& f, bool staged) {
     if (c.penalty) within_limit(*g, *c.penalty, input::kLargestPenalty, "N/m");
   }
   if (auto g = f.optional_member("output_every")) c.output_every = integer_at_least(*g, 1);
+  if (auto g = f.optional_member("vtk_format")) c.vtk_binary = named_value(*g, kVtkFormatNames, "vtk_format");
   // The open-close loop needs one iteration to change a contact's state and another to
   // confirm it, so fewer than 2 would cut every step in which a contact opens or closes.
   if (auto g = f.optional_member("max_open_close")) c.max_open_close = integer_at_least(*g, 2);

@@ -219,6 +219,10 @@ struct ControlSettings {
   std::optional<double> penalty;
   // Write history rows and a VTK frame every this many steps (and at the start and end).
   int output_every = 10;
+  // How the VTK frames store their arrays (scene key `vtk_format`): true ("binary", the
+  // default) appends them zlib-compressed after the XML, as ParaView writes; false ("ascii")
+  // writes them as text (io/vtk_polydata.hpp, docs/output-format.md).
+  bool vtk_binary = true;
   // Open-close iterations allowed per step before the step is cut (dt x 0.3) and redone
   // (Shi's usual limit; docs/closed-forms.md). Range >= 2.
   int max_open_close = 8;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contact/joint_law.hpp"
+#include "io/vtk_reader.hpp"
 #include "support/cli_helpers.hpp"
 
 namespace fs = std::filesystem;
@@ -20,21 +21,12 @@ using dda::test::shell_quote;
 
 namespace {
 
-// The numbers of point-data array `name` in a VTK XML file written by the contact output.
-std::vector<double> vtk_array(const std::string& text, const std::string& name) {
-  const std::size_t at = text.find("Name=\"" + name + "\"");
-  REQUIRE(at != std::string::npos);
-  const std::size_t start = text.find('>', at) + 1, end = text.find('<', start);
-  std::vector<double> values;
-  std::size_t pos = start;
-  while (pos < end) {
-    std::size_t used = 0;
-    const std::string rest = text.substr(pos, end - pos);
-    if (rest.find_first_not_of(" \n") == std::string::npos) break;
-    values.push_back(std::stod(rest, &used));
-    pos += used;
-  }
-  return values;
+// The numbers of point-data array `name` of a contacts frame (read by io/vtk_reader: the
+// run writes the default, binary encoding).
+std::vector<double> vtk_array(const dda::VtkPolyData& frame, const std::string& name) {
+  const dda::VtkArray* a = frame.find_point_array(name);
+  REQUIRE(a != nullptr);
+  return a->values;
 }
 
 // A 2 m x 0.5 m rigid block on a fixed base, pressed by 1e5 N/m at its top centre, pushed
@@ -73,9 +65,9 @@ std::vector<SlidingContact> run_shear(const nlohmann::json& scene, const fs::pat
     const std::string name = e.path().filename().string();
     if (name.rfind("contacts_", 0) == 0 && name > last) last = name;
   }
-  const std::string text = dda::test::read_file(dir / "out" / "vtk" / last);
-  const std::vector<double> mode = vtk_array(text, "mode"), normal = vtk_array(text, "normal_force"),
-                            shear = vtk_array(text, "shear_force");
+  const dda::VtkPolyData frame = dda::read_vtp(dir / "out" / "vtk" / last);
+  const std::vector<double> mode = vtk_array(frame, "mode"), normal = vtk_array(frame, "normal_force"),
+                            shear = vtk_array(frame, "shear_force");
   std::vector<SlidingContact> out;
   for (std::size_t i = 0; i < mode.size(); ++i) {
     if (mode[i] == 1.0) out.push_back({normal[i], std::abs(shear[i])});  // 1: sliding

@@ -6,9 +6,11 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "support/cli_helpers.hpp"
 #include "io/output.hpp"
+#include "io/vtk_reader.hpp"
 
 namespace fs = std::filesystem;
 using dda::test::run_command;
@@ -43,6 +45,11 @@ TEST_CASE("a run with bolts writes bolts.csv, the bolts' VTK series and their en
   const double force = summary["bolts"][0]["force"].get<double>();
   CHECK(force > 0.0);
   CHECK(csv.find(",B1," + dda::format_full_precision(force) + ",") != std::string::npos);
+  // The last frame, binary by default, read back: the same force, bit for bit.
+  const dda::VtkPolyData bolts = dda::read_vtp(out / "vtk" / "bolts_000500.vtp");
+  REQUIRE(bolts.lines.has_value());
+  CHECK(bolts.lines->connectivity == std::vector<std::int64_t>{0, 1});
+  CHECK(bolts.find_cell_array("force")->values == std::vector<double>{force});
 
   // Without bolts: none of the files, and no "bolts" key.
   const fs::path plain = dir.path / "plain";

@@ -4,10 +4,12 @@
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
+#include <cmath>
 #include <string>
 
 #include "support/cli_helpers.hpp"
 #include "io/contact_output.hpp"
+#include "io/vtk_reader.hpp"
 #include "support/scene_builders.hpp"
 #include "solver/world.hpp"
 
@@ -52,7 +54,7 @@ World world_with_contacts() {
 TEST_CASE("contacts are written as VTK points at their vertices with mode and forces",
           "[output][contacts]") {
   const World w = world_with_contacts();
-  const std::string text = contacts_vtp_text(w);
+  const std::string text = contacts_vtp_text(w, VtkEncoding::Ascii);
   CHECK(test::contains(text, "NumberOfPoints=\"3\" NumberOfVerts=\"3\""));
   // The points: block 1's vertex 0 (0, 1), block 2's vertex 1 (3, 1), block 2's vertex 0 (2, 1).
   CHECK(test::contains(text, "          0 1 0\n          3 1 0\n          2 1 0\n"));
@@ -104,8 +106,17 @@ TEST_CASE("a run writes contacts.pvd and counts contact modes per joint material
   const std::string pvd = test::read_file(dir.path / "out" / "contacts.pvd");
   CHECK(test::contains(pvd, "file=\"vtk/contacts_000000.vtp\""));
   CHECK(test::contains(pvd, "file=\"vtk/contacts_000020.vtp\""));
-  const std::string last = test::read_file(dir.path / "out" / "vtk" / "contacts_000020.vtp");
-  CHECK(test::contains(last, "NumberOfPoints=\"2\""));
+  // The run's default, binary frame, read back: the two locked corners at the base's top.
+  const VtkPolyData last = read_vtp(dir.path / "out" / "vtk" / "contacts_000020.vtp");
+  REQUIRE(last.points.size() == 2);
+  REQUIRE(last.verts.has_value());
+  CHECK(last.verts->size() == 2);
+  for (const Vec2& p : last.points) {
+    // Within the allowed penetration of the base's top (y = 0); 1e-3 m is far above it.
+    CHECK(std::abs(p.y()) < 1e-3);
+    CHECK(std::abs(std::abs(p.x()) - 0.5) < 1e-3);
+  }
+  CHECK(last.find_point_array("mode")->values == std::vector<double>{2, 2});  // both locked
   const nlohmann::json summary =
       nlohmann::json::parse(test::read_file(dir.path / "out" / "summary.json"));
   const nlohmann::json& modes = summary["contacts"]["modes_by_joint_material"];

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/output.hpp"
+#include "io/vtk_reader.hpp"
 #include "kinematics/polygon.hpp"
 
 using namespace dda;
@@ -216,6 +217,7 @@ TEST_CASE("summary.json holds the settings, run statistics and final blocks", "[
   CHECK(set["penalty"] == 5e11);
   CHECK(set["penalty_rule"] == "auto");
   CHECK(set["output_every"] == 10);
+  CHECK(set["vtk_format"] == "binary");
   CHECK(set["w0"] == 1.5);
 
   CHECK(s["wall_time_s"] == 0.25);
@@ -288,6 +290,43 @@ TEST_CASE("every record writes a .vtp frame and the .pvd lists all frames", "[ou
     for (const char* array : {"block", "fixed", "area", "rotation", "stress", "strain", "velocity"}) {
       CHECK(vtp.find("Name=\"" + std::string(array) + "\"") != std::string::npos);
     }
+    // The default binary frame, read back: every block's polygon and cell data, exactly
+    // (the file holds the doubles' bits).
+    const VtkPolyData frame = read_vtp(run.dir.path / name);
+    REQUIRE(frame.polys.has_value());
+    REQUIRE(frame.polys->size() == w.blocks.size());
+    for (std::size_t i = 0; i < w.blocks.size(); ++i) {
+      const Block& b = w.blocks[i];
+      CHECK(frame.polygon(i) == b.vertices);
+      CHECK(frame.find_cell_array("area")->at(i) == b.moments.area);
+      CHECK(frame.find_cell_array("fixed")->at(i) == (b.fixed ? 1.0 : 0.0));
+      for (int k = 0; k < 3; ++k) CHECK(frame.find_cell_array("stress")->at(i, k) == b.stress[k]);
+    }
+    CHECK(frame.find_cell_array("velocity")->component_names ==
+          std::vector<std::string>{"vx", "vy", "omega"});
+  }
+}
+
+TEST_CASE("vtk_format ascii writes the frames as text, holding what the binary ones hold",
+          "[output]") {
+  TempDir binary_dir("binary"), ascii_dir("ascii");
+  Scene scene = make_test_scene();
+  World w = make_test_world(scene);
+  advance(w, 10, 0.01);
+  OutputWriter(binary_dir.path, scene).record(w);
+  scene.control.vtk_binary = false;
+  OutputWriter(ascii_dir.path, scene).record(w);
+  for (const char* name : {"vtk/step_000010.vtp", "vtk/contacts_000010.vtp"}) {
+    INFO(name);
+    const std::string text = read_text(ascii_dir.path / name);
+    CHECK(text.find("format=\"ascii\"") != std::string::npos);
+    CHECK(text.find("AppendedData") == std::string::npos);
+    CHECK(read_text(binary_dir.path / name).find("compressor=\"vtkZLibDataCompressor\"") !=
+          std::string::npos);
+    // The ASCII frame read back and written as binary is the binary frame, byte for byte:
+    // the same numbers, exactly.
+    CHECK(vtp_file(read_vtp(ascii_dir.path / name), VtkEncoding::Binary) ==
+          read_text(binary_dir.path / name));
   }
 }
 

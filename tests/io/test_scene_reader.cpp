@@ -233,6 +233,10 @@ std::vector<BadScene> bad_scenes() {
        {"positive number", "\"auto\""}},
       {"unknown energy_losses", edit(s, "\"output_every\": 5", "\"output_every\": 5, \"energy_losses\": \"warn\""),
        "control.energy_losses", {"unknown energy_losses \"warn\"", "\"report\", \"stop\""}},
+      {"unknown vtk_format", edit(s, "\"output_every\": 5", "\"output_every\": 5, \"vtk_format\": \"xml\""),
+       "control.vtk_format", {"unknown vtk_format \"xml\"", "\"binary\", \"ascii\""}},
+      {"vtk_format not a string", edit(s, "\"output_every\": 5", "\"output_every\": 5, \"vtk_format\": 1"),
+       "control.vtk_format", {"expected a string"}},
       // ---- run length ----
       {"both steps and end_time", edit(s, "\"steps\": 40", "\"steps\": 40, \"end_time\": 1"),
        "control", {"not both", "steps", "end_time"}},
@@ -704,6 +708,7 @@ TEST_CASE("optional keys take their documented defaults", "[scene][input]") {
   CHECK(scene.control.rotation_update == dda::RotationUpdate::FiniteRotationPolar);
   CHECK_FALSE(scene.control.penalty.has_value());  // "auto"
   CHECK(scene.control.output_every == 10);
+  CHECK(scene.control.vtk_binary);  // "binary", ParaView's own encoding
   CHECK(scene.control.max_open_close == 8);
   CHECK(scene.control.max_augmentations == 5);
   CHECK_FALSE(scene.control.allowed_penetration.has_value());  // "auto"

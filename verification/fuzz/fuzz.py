@@ -43,6 +43,10 @@ import threading
 import time
 import xml.etree.ElementTree as ET
 
+# The reader of the run's VTK frames, beside this directory (verification/vtk_frames.py).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import vtk_frames  # noqa: E402
+
 ALLOWED_EXITS = {0, 1, 2, 3}
 SIGNAL_EXITS = {130, 143}
 
@@ -374,7 +378,17 @@ def check_file(path):
                         bad[0] + 1, rows[bad[0]].count(",") + 1, width + 1)
             if not no_special(text):
                 return "CSV holds nan or inf"
-        elif name.endswith((".vtp", ".pvd", ".vtu")):
+        elif name.endswith(".vtp"):
+            # Either encoding (binary by default): read every array back, then look at the
+            # numbers themselves, since a binary file's bytes are no text to search.
+            frame = vtk_frames.parse_vtp(data, name)
+            numbers = [c for p in frame["points"] for c in p]
+            for section in ("point_data", "cell_data"):
+                for _, values in frame[section].values():
+                    numbers += values
+            if not all(math.isfinite(x) for x in numbers):
+                return "VTK file holds nan or inf"
+        elif name.endswith((".pvd", ".vtu")):
             ET.fromstring(data)
             if not no_special(data.decode("utf-8", "replace")):
                 return "VTK file holds nan or inf"
