@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "app/cut_command.hpp"
+#include "app/plot_command.hpp"
 #include "app/fos_command.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
@@ -109,9 +110,10 @@ dda::Scene load_scene(const std::string& path) {
   return dda::read_scene_file(path);
 }
 
-// `vtk_format`: "binary" or "ascii" from --vtk-format, or empty for the scene's own.
+// `vtk_format`: "binary" or "ascii" from --vtk-format, or empty for the scene's own;
+// `pictures`: draw the run's pictures into OUT/plot at the end.
 int run_command(const std::string& scene_path, const std::string& out_dir,
-                const std::string& vtk_format) {
+                const std::string& vtk_format, bool pictures) {
   dda::Scene scene = load_scene(scene_path);
   if (!vtk_format.empty()) scene.control.vtk_binary = vtk_format == "binary";
   for (const std::string& warning : scene.warnings) {
@@ -147,6 +149,7 @@ int run_command(const std::string& scene_path, const std::string& out_dir,
   }
   std::cerr << "dda: " << stats.steps << " steps (" << stats.cut_steps << " cut) in "
             << stats.wall_time_s << " s; results in " << out_dir << "\n";
+  if (pictures) dda::plot_after_run(out_dir);
   const dda::EnergyLedger& led = world.energy;
   if (dda::energy_lost_beyond(led, world.control.energy_tolerance)) {
     std::cerr << "dda: warning: the energy account lost " << -led.remainder_min
@@ -230,6 +233,23 @@ int main(int argc, char** argv) {
                   "How the VTK frames store their arrays: binary (zlib-compressed, appended) or "
                   "ascii; overrides the scene's control.vtk_format")
       ->check(CLI::IsMember({"binary", "ascii"}));
+  bool no_picture = false;
+  run->add_flag("--no-picture", no_picture, "Draw no pictures into DIR/plot at the end (dda plot draws them later)");
+
+  std::string plot_run_dir;
+  dda::PlotCommandOptions plot_options;
+  double plot_time = 0.0, plot_exaggeration = 0.0;
+  CLI::App* plot = app.add_subcommand("plot", "Pictures of a run from its output directory (blocks, joint states, "
+                                              "force chains, energy, monitors)");
+  plot->add_option("dir", plot_run_dir, "The run's output directory (dda run --out)");
+  plot->add_option("--out", plot_options.out_dir, "Directory for the pictures [DIR/plot]");
+  CLI::Option* time_option = plot->add_option("--time", plot_time, "Draw the last frame at or before this time (s) [the last]");
+  plot->add_option("--field", plot_options.field,
+                   "Colour blocks by displacement, velocity, stress, plastic-strain or material")
+      ->capture_default_str();
+  CLI::Option* exaggeration_option = plot->add_option(
+      "--exaggeration", plot_exaggeration, "Draw displacements times this [automatic: 1, or larger when they are small]");
+  plot->add_option("--width", plot_options.plot.width_px, "Picture width in pixels")->capture_default_str();
 
   std::string spec_path;
   std::string csv_file = "material-point.csv";
@@ -313,7 +333,12 @@ int main(int argc, char** argv) {
     if (point->parsed()) require_output_path(csv_file, "material-point");
     if (fos_app->parsed()) require_output_path(fos_dir, "fos");
     if (cut->parsed()) require_output_path(scene_out, "cut");
-    if (run->parsed()) return run_command(scene_path, out_dir, vtk_format);
+    if (run->parsed()) return run_command(scene_path, out_dir, vtk_format, !no_picture);
+    if (plot->parsed()) {
+      if (time_option->count() > 0) plot_options.plot.time = plot_time;
+      if (exaggeration_option->count() > 0) plot_options.plot.exaggeration = plot_exaggeration;
+      return dda::plot_command(plot_run_dir, plot_options);
+    }
     if (point->parsed()) return material_point_command(spec_path, csv_file);
     if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_options);
     if (cut->parsed()) return dda::cut_command(model_path, scene_out);

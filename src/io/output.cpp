@@ -111,6 +111,14 @@ VtkPolyData make_blocks_piece(const World& w) {
   cd.push_back(block_array(w, VtkType::Float64, "velocity", {"vx", "vy", "omega"}, [](const Block& b) {
     return std::vector<double>{b.velocity[kU0], b.velocity[kV0], b.velocity[kR0]};
   }));
+  // The material's index in the scene's order (summary.json "materials" names them), and the
+  // equivalent plastic strain eps_p of a plastic block (0 for elastic and rigid ones): what
+  // dda plot --field material and plastic-strain colour by.
+  cd.push_back(block_array(w, VtkType::Int32, "material", {"material"},
+                           [](const Block& b) { return std::vector<double>{static_cast<double>(b.material)}; }));
+  cd.push_back(block_array(w, VtkType::Float64, "plastic_strain", {"plastic_strain"}, [](const Block& b) {
+    return std::vector<double>{b.plastic ? b.material_state.eps_p : 0.0};
+  }));
   return p;
 }
 
@@ -526,6 +534,10 @@ void OutputWriter::finish(const World& world, const RunStats& stats) {
       {"interrupted", stats.interrupted},
       {"blocks", blocks},
   };
+  // The block materials' names in the scene's order: the VTK frames' "material" indices.
+  json materials = json::array();
+  for (const Material& m : scene_.materials) materials.push_back(m.name);
+  summary["materials"] = materials;
   // The bolts' end state: only for a scene that has bolts (as bolts.csv).
   if (!world.bolts.empty()) summary["bolts"] = bolts_json(world);
   // Replace rather than throw on invalid UTF-8 (a scene path or message from the system).

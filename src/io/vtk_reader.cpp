@@ -206,8 +206,11 @@ std::vector<double> Reader::ascii_values(const Tag& tag, VtkType type) const {
     if (r.ec != std::errc() || (r.ptr < stop && !is_space(*r.ptr))) {
       const char* word_end = p;
       while (word_end < stop && !is_space(*word_end)) ++word_end;
-      fail("\"" + std::string(p, word_end) + "\" in array \"" + tag.attributes.at("Name") +
-           "\" is not a " + vtk_type_name(type));
+      // Built by appending: GCC 12 warns falsely (-Wrestrict) on "\"" + std::string(...).
+      std::string what = "\"";
+      what.append(p, word_end);
+      what += "\" in array \"" + tag.attributes.at("Name") + "\" is not a " + vtk_type_name(type);
+      fail(what);
     }
     out.push_back(v);
     p = r.ptr;

@@ -235,9 +235,10 @@ TEST_CASE("dda cut and material-point under a file-size limit leave no part of a
   CHECK(contains(small.output, "dda: error: output: cannot write " + scene.string() + " (File too large"));
   CHECK_FALSE(fs::exists(scene));
   CHECK(leftovers(dir.path).empty());
-  // 1000 blocks (0.5 or 1 MB) hold the scene but not the picture (4.4 MB): the scene is
-  // written whole, the picture not at all.
-  const CommandResult big = dda_limited(1000, "cut " + kModel + " --out " + shell_quote(scene.string()));
+  // 26 blocks (13.3 kB in dash's 512-byte units, 26.6 kB in bash's 1024) hold the scene
+  // (12.4 kB) but not the picture (29.5 kB, deflated): the scene is written whole, the
+  // picture not at all.
+  const CommandResult big = dda_limited(26, "cut " + kModel + " --out " + shell_quote(scene.string()));
   INFO(big.output);
   CHECK(big.exit_code == 1);
   CHECK(contains(big.output, "dda: error: output: cannot write " + (dir.path / "s.png").string() +

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Independent check of a PNG written by dda (io/png_writer): Python's standard library
 parses the chunks, checks every CRC with zlib.crc32 and inflates the image data with
 zlib.decompress, which also checks the Adler-32. Usage: check_png.py FILE.png"""

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Error bars of the footing's refinement study from its curves.csv.
 
     /usr/bin/python3 verification/footing/error_bars.py DIR [--mesh crossed] [--steps 150]

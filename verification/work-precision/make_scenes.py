@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Scenes of the multi-block work-precision study (README.md), one per case, time step and
 penalty factor, with their closed forms in OUT/manifest.json.
 

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Reads OUT/manifest.json and each run's summary.json (OUT/runs/NAME/) and writes
 OUT/report.md: per case, the error against its closed form, the solver's wall time, steps
 and solves, over dt and the penalty; the observed order of the error in dt at the scene's
