@@ -238,12 +238,13 @@ int main(int argc, char** argv) {
 
   std::string plot_run_dir;
   dda::PlotCommandOptions plot_options;
-  double plot_time = 0.0, plot_exaggeration = 0.0;
+  double plot_exaggeration = 0.0;
   CLI::App* plot = app.add_subcommand("plot", "Pictures of a run from its output directory (blocks, joint states, "
                                               "force chains, energy, monitors)");
   plot->add_option("dir", plot_run_dir, "The run's output directory (dda run --out)");
   plot->add_option("--out", plot_options.out_dir, "Directory for the pictures [DIR/plot]");
-  CLI::Option* time_option = plot->add_option("--time", plot_time, "Draw the last frame at or before this time (s) [the last]");
+  plot->add_option("--time", plot_options.plot.times,
+                   "Draw the last frame at or before this time (s); may be given several times [the last frame]");
   plot->add_option("--field", plot_options.field,
                    "Colour blocks by displacement, velocity, stress, plastic-strain or material")
       ->capture_default_str();
@@ -335,7 +336,6 @@ int main(int argc, char** argv) {
     if (cut->parsed()) require_output_path(scene_out, "cut");
     if (run->parsed()) return run_command(scene_path, out_dir, vtk_format, !no_picture);
     if (plot->parsed()) {
-      if (time_option->count() > 0) plot_options.plot.time = plot_time;
       if (exaggeration_option->count() > 0) plot_options.plot.exaggeration = plot_exaggeration;
       return dda::plot_command(plot_run_dir, plot_options);
     }

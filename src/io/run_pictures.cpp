@@ -516,37 +516,56 @@ ChartOptions monitors_chart(const fs::path& monitors_csv) {
 
 std::vector<fs::path> plot_run(const fs::path& run_dir, const fs::path& out_dir, const PlotOptions& options) {
   const std::vector<RunFrame> frames = run_frames(run_dir);
-  std::size_t chosen = frames.size() - 1;
-  if (options.time) {
-    if (*options.time < frames.front().time)
-      throw std::invalid_argument("plot: --time " + format(*options.time, "%g") + " s is before the first frame (" +
+  // The frames chosen: the last at or before each time asked, in the order asked.
+  std::vector<std::size_t> chosen;
+  for (double t : options.times) {
+    if (t < frames.front().time)
+      throw std::invalid_argument("plot: --time " + format(t, "%g") + " s is before the first frame (" +
                                   format(frames.front().time, "%g") + " s)");
-    while (chosen > 0 && frames[chosen].time > *options.time) --chosen;
+    std::size_t k = frames.size() - 1;
+    while (k > 0 && frames[k].time > t) --k;
+    chosen.push_back(k);
   }
-  const RunFrame& f = frames[chosen];
+  if (chosen.empty()) chosen.push_back(frames.size() - 1);
   const VtkPolyData start = read_vtp(run_dir / frames.front().blocks_file);
-  const VtkPolyData now = chosen == 0 ? start : read_vtp(run_dir / f.blocks_file);
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (ec) fail(out_dir, "cannot be created: " + ec.message());
   // An earlier plot's pictures go first: a monitors.png this run would not draw is not
-  // taken for this run's. Only these names, and only regular files.
-  for (const char* name : kPictureNames) {
-    const fs::path old = out_dir / name;
-    if (fs::is_regular_file(fs::symlink_status(old, ec))) fs::remove(old, ec);
+  // taken for this run's. Only these names (and theirs at a time), only regular files.
+  for (const fs::directory_entry& e : fs::directory_iterator(out_dir, ec)) {
+    const std::string name = e.path().filename().string();
+    bool ours = false;
+    for (const char* p : kPictureNames) {
+      const std::string stem = fs::path(p).stem().string();
+      ours = ours || name == p || (name.rfind(stem + "_t", 0) == 0 && e.path().extension() == ".png");
+    }
+    if (ours && fs::is_regular_file(fs::symlink_status(e.path(), ec))) fs::remove(e.path(), ec);
   }
 
   std::vector<fs::path> written;
-  const auto blocks = [&](const char* name, const BlocksPicture& p) {
+  const auto blocks = [&](const std::string& name, const BlocksPicture& p) {
     const fs::path path = out_dir / name;
     write_block_picture(path.string(), p.blocks, p.options);
     written.push_back(path);
   };
-  blocks("blocks.png", blocks_picture(start, now, f.time, options, material_names_of(run_dir / "summary.json")));
-  if (!f.contacts_file.empty()) {
-    const VtkPolyData contacts = read_vtp(run_dir / f.contacts_file);
-    blocks("joint_states.png", joint_states_picture(now, contacts, f.time, options.width_px));
-    blocks("force_chains.png", force_chain_picture(now, contacts, f.time, options.width_px));
+  const std::vector<std::string> materials = material_names_of(run_dir / "summary.json");
+  PlotOptions each = options;
+  if (chosen.size() > 1 && !each.exaggeration) {  // one scale for all: the last frame's
+    const std::size_t last = chosen.back();
+    each.exaggeration = blocks_picture(start, last == 0 ? start : read_vtp(run_dir / frames[last].blocks_file),
+                                       frames[last].time, options, materials).exaggeration;
+  }
+  for (std::size_t k : chosen) {
+    const RunFrame& f = frames[k];
+    const std::string suffix = chosen.size() > 1 ? "_t" + format(f.time, "%g") : "";
+    const VtkPolyData now = k == 0 ? start : read_vtp(run_dir / f.blocks_file);
+    blocks("blocks" + suffix + ".png", blocks_picture(start, now, f.time, each, materials));
+    if (!f.contacts_file.empty()) {
+      const VtkPolyData contacts = read_vtp(run_dir / f.contacts_file);
+      blocks("joint_states" + suffix + ".png", joint_states_picture(now, contacts, f.time, options.width_px));
+      blocks("force_chains" + suffix + ".png", force_chain_picture(now, contacts, f.time, options.width_px));
+    }
   }
   const fs::path history = run_dir / "history.csv";
   if (fs::exists(history, ec)) {

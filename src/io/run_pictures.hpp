@@ -25,7 +25,10 @@ enum class PlotField { Displacement, Velocity, Stress, PlasticStrain, Material }
 PlotField plot_field_from_name(const std::string& name);
 
 struct PlotOptions {
-  std::optional<double> time;          // s: the last frame at or before it; none: the last frame
+  // s: for each, the last frame at or before it; none: the last frame. With several, the
+  // pictures of each frame are named after its time (blocks_t1.5.png) and drawn with one
+  // exaggeration (the last frame's automatic one unless given).
+  std::vector<double> times;
   PlotField field = PlotField::Displacement;
   std::optional<double> exaggeration;  // displacements drawn times this; none: automatic
   int width_px = 1600;
@@ -78,8 +81,9 @@ ChartOptions energy_chart(const std::filesystem::path& history_csv);
 ChartOptions monitors_chart(const std::filesystem::path& monitors_csv);
 
 // Draws every picture the run's files allow into `out_dir` (created if needed): blocks.png,
-// joint_states.png and force_chains.png (when the run wrote contacts at that time),
-// energy.png, monitors.png (when the run had monitors). Returns the files written. Throws
+// joint_states.png and force_chains.png (when the run wrote contacts at that time; with
+// several times, blocks_tT.png and so on for each frame's time T), energy.png, monitors.png
+// (when the run had monitors). Returns the files written. Throws
 // std::runtime_error naming the file when one cannot be read or written, and
 // std::invalid_argument for options the run cannot satisfy (a plastic-strain field of a run
 // whose frames do not carry one, a time before the first frame).

@@ -57,6 +57,14 @@ TEST_CASE("plot cli: the default run draws its pictures, dda plot redraws them",
                                 shell_quote((dir.path / "p2").string()));
   CHECK(plot.exit_code == 0);
   CHECK(fs::exists(dir.path / "p2" / "blocks.png"));
+  // Two times: each frame's pictures named after its time, the single-time names gone.
+  const auto two = run_command(dda_exe() + " plot " + shell_quote(out.string()) + " --time 0.5 --time 2.5 --out " +
+                               shell_quote((dir.path / "p2").string()));
+  CHECK(two.exit_code == 0);
+  int at_times = 0;
+  for (const auto& e : fs::directory_iterator(dir.path / "p2")) at_times += e.path().filename().string().rfind("blocks_t", 0) == 0;
+  CHECK(at_times == 2);
+  CHECK_FALSE(fs::exists(dir.path / "p2" / "blocks.png"));
 
   const fs::path quiet = dir.path / "quiet";
   REQUIRE(run_command(dda_exe() + " run --no-picture --out " + shell_quote(quiet.string())).exit_code == 0);
