@@ -43,6 +43,7 @@ std::string write_cut_picture(const CutModel& cut, const CutScene& scene,
   }
   PictureOptions options;
   options.width_px = 1600;
+  options.axes = true;  // metres and a scale bar: the joint spacing reads off the picture
   options.title = std::to_string(blocks.size()) + " blocks cut from " + scene_path;
   for (std::size_t k = 0; k < names.size(); ++k) {
     options.legend.push_back({names[k], category_colour(static_cast<int>(k))});

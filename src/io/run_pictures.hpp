@@ -13,6 +13,7 @@
 
 #include "io/block_picture.hpp"
 #include "io/chart.hpp"
+#include "io/run_charts.hpp"
 #include "io/vtk_polydata.hpp"
 
 namespace dda {
@@ -71,14 +72,6 @@ BlocksPicture joint_states_picture(const VtkPolyData& now, const VtkPolyData& co
 // for the largest pair's), compression only.
 BlocksPicture force_chain_picture(const VtkPolyData& now, const VtkPolyData& contacts, double time,
                                   int width_px);
-
-// The energy account of DIR/history.csv against time, from the first row of each step: the
-// terms that are not zero throughout (potential as its change since the start) and the
-// remainder. Throws std::runtime_error naming the file when it cannot be read.
-ChartOptions energy_chart(const std::filesystem::path& history_csv);
-
-// Each monitor's displacement components ux, uy from DIR/monitors.csv against time.
-ChartOptions monitors_chart(const std::filesystem::path& monitors_csv);
 
 // Draws every picture the run's files allow into `out_dir` (created if needed): blocks.png,
 // joint_states.png and force_chains.png (when the run wrote contacts at that time; with

@@ -486,6 +486,7 @@ TEST_CASE("dda fos writes the report the contract names and exits 0", "[fos][cli
   // The pictures of the bracket's trials.
   CHECK(std::filesystem::exists(dir.path / "out" / "first_failing.png"));
   CHECK(std::filesystem::exists(dir.path / "out" / "last_stable.png"));
+  CHECK(std::filesystem::exists(dir.path / "out" / "trials.png"));
   // The search started from the limit analysis's upper end, and ran no dynamic check.
   CHECK(report.at("settings").at("first_failing_guess").get<double>() == la_bracket.at(1).get<double>());
   CHECK(report.at("trials").at(1).at("F").get<double>() == la_bracket.at(1).get<double>());
