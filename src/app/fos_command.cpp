@@ -8,6 +8,7 @@
 #include <iostream>
 #include <optional>
 
+#include "common/printf_text.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
 #include "io/bolt_force_report.hpp"
@@ -31,12 +32,6 @@ namespace {
 constexpr int kExitOk = 0;
 constexpr int kExitNoFactor = 3;
 
-std::string format(double x, const char* spec) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, spec, x);
-  return buf;
-}
-
 // --target-factor F: the bisection on the bolts' force, a trial at F each, the report in
 // DIR/bolt_force.json.
 int bolt_force_command(const Scene& scene, const std::string& scene_path, const std::string& out_dir,
@@ -47,7 +42,7 @@ int bolt_force_command(const Scene& scene, const std::string& scene_path, const 
             << " bolts must hold for F = " << target << ": one trial at F per force tried\n";
   const BoltForceSearch search = find_bolt_force(scene, settings, target, [] { return interrupt_signal() != 0; });
   for (const BoltForceTrial& t : search.trials) {
-    std::cerr << "dda: bolts at " << format(t.force, "%.6g") << " N/m: "
+    std::cerr << "dda: bolts at " << printf_text(t.force, "%.6g") << " N/m: "
               << (t.stable ? "stable" : "failing") << " (" << t.verdict << ")\n";
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -61,8 +56,8 @@ int bolt_force_command(const Scene& scene, const std::string& scene_path, const 
               << "; report in " << out_dir << "\n";
     return kExitNoFactor;
   }
-  std::cout << "bolt force for F = " << target << ": " << format(search.force, "%.6g")
-            << " N/m each bolt (fails at " << format(search.failing_force, "%.6g") << ")\n";
+  std::cout << "bolt force for F = " << target << ": " << printf_text(search.force, "%.6g")
+            << " N/m each bolt (fails at " << printf_text(search.failing_force, "%.6g") << ")\n";
   std::cerr << "dda: report in " << out_dir << "/bolt_force.json\n";
   return kExitOk;
 }
@@ -156,7 +151,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   if (consolidation.stats.interrupted) {
     FosResult none;
     none.interrupted = true;
-    none.message = stop_message("during the consolidation, at t = " + format(world.time, "%g") +
+    none.message = stop_message("during the consolidation, at t = " + printf_text(world.time, "%g") +
                                 " s; no trial was run");
     write_fos_report(out_dir, scene, settings, info, none, consolidation.stats.wall_time_s);
     std::cerr << "dda: " << none.message << "; report in " << out_dir << "\n";
@@ -168,7 +163,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     info.bond_check = check_consolidation_bonds(scene, settings.consolidation_factor,
                                                 consolidation.stats.broken_bonds, interrupted);
     std::cerr << "dda: " << bond_check_line(info.bond_check) << " ("
-              << format(info.bond_check.wall_time_s, "%.1f") << " s)\n";
+              << printf_text(info.bond_check.wall_time_s, "%.1f") << " s)\n";
   }
 
   // The second factor, from the same consolidated blocks: rigid-block limit analysis, and

@@ -6,18 +6,13 @@
 #include <utility>
 #include <vector>
 
+#include "common/printf_text.hpp"
 #include "io/block_picture.hpp"
 #include "io/chart.hpp"
 #include "studies/trial_mechanism.hpp"
 
 namespace dda {
 namespace {
-
-std::string format(double x, const char* spec) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, spec, x);
-  return buf;
-}
 
 constexpr Rgb kFixedGrey{190, 190, 190};
 constexpr Rgb kFreePale{235, 235, 235};
@@ -94,13 +89,13 @@ SlopePicture mechanism_picture(const World& consolidated, const TrialResult& t, 
     const Vec2 c = consolidated.blocks[static_cast<std::size_t>(moved[k].block)].moments.centroid;
     options.labels.push_back({c + x * moved[k].displacement, std::to_string(moved[k].block), Rgb{0, 0, 0}});
   }
-  options.title = what + ": F = " + format(t.factor, "%.4f") + ", " +
+  options.title = what + ": F = " + printf_text(t.factor, "%.4f") + ", " +
                   (t.stable ? "stable" : "failing") + " (" + t.verdict + "); " +
-                  std::to_string(moved.size()) + " blocks moved, drawn x" + format(x, "%.3g") +
+                  std::to_string(moved.size()) + " blocks moved, drawn x" + printf_text(x, "%.3g") +
                   (moved.empty() ? std::string()
                                  : ", block " + std::to_string(moved.front().block) + " most");
   options.legend = {{"fixed block", kFixedGrey}, {"free block at rest", kFreePale},
-                    {"moving block (outlined, displaced x" + format(x, "%.3g") + ")", kMovingOutline},
+                    {"moving block (outlined, displaced x" + printf_text(x, "%.3g") + ")", kMovingOutline},
                     {"displacement direction", kArrowRed}};
   options.colour_bar = ColourBar{"displacement in the trial (m)", 0.0, largest};
   return {std::move(blocks), std::move(options)};
@@ -123,8 +118,8 @@ SlopePicture limit_analysis_picture(const World& world, const LimitAnalysisResul
   }
   PictureOptions options = slope_options();
   add_bolt_lines(world, options);
-  options.title = "limit-analysis mechanism at F = " + format(la.upper, "%.4f") +
-                  " (rigid motion exaggerated: the fastest block moved " + format(shown, "%.3g") +
+  options.title = "limit-analysis mechanism at F = " + printf_text(la.upper, "%.4f") +
+                  " (rigid motion exaggerated: the fastest block moved " + printf_text(shown, "%.3g") +
                   " m)";
   options.legend = {{"fixed block", kFixedGrey}, {"free block at rest", kFreePale},
                     {"block of the mechanism (outlined)", kMovingOutline}};
@@ -166,7 +161,7 @@ ChartOptions trials_chart(const FosResult& result, double failure_displacement, 
   o.title = "strength-reduction trials";
   o.x_label = "strength reduction factor F";
   o.y_label = "largest displacement in the trial (m)";
-  limit.label = "failure displacement " + format(failure_displacement, "%.3g") + " m";
+  limit.label = "failure displacement " + printf_text(failure_displacement, "%.3g") + " m";
   limit.colour = Rgb{120, 120, 120};
   limit.x = {lo, hi};
   limit.y = {failure_displacement, failure_displacement};
@@ -176,20 +171,20 @@ ChartOptions trials_chart(const FosResult& result, double failure_displacement, 
     band.from = result.last_stable;
     band.to = result.first_failing;
     band.colour = Rgb{255, 221, 150};
-    band.label = "bracket " + format(result.last_stable, "%.4f") + " to " + format(result.first_failing, "%.4f");
+    band.label = "bracket " + printf_text(result.last_stable, "%.4f") + " to " + printf_text(result.first_failing, "%.4f");
     o.bands.push_back(band);
   }
   if (result.found) {
     ChartVerticalLine f;
     f.x = result.factor_of_safety;
-    f.label = "factor of safety " + format(result.factor_of_safety, "%.4f");
+    f.label = "factor of safety " + printf_text(result.factor_of_safety, "%.4f");
     o.vertical_lines.push_back(f);
   }
   if (la != nullptr && la->found) {
     ChartVerticalLine u;
     u.x = la->upper;
     u.colour = Rgb{148, 103, 189};
-    u.label = "limit analysis " + format(la->upper, "%.4f");
+    u.label = "limit analysis " + printf_text(la->upper, "%.4f");
     o.vertical_lines.push_back(u);
   }
   return o;

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "common/printf_text.hpp"
 #include "io/colour_maps.hpp"
 #include "io/vtk_reader.hpp"
 
@@ -36,12 +37,6 @@ constexpr const char* kPictureNames[] = {"blocks.png", "joint_states.png", "forc
 
 // How many blocks get an arrow: beyond this a large slope's picture is a smear.
 constexpr std::size_t kArrowsDrawn = 80;
-
-std::string format(double x, const char* spec) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, spec, x);
-  return buf;
-}
 
 [[noreturn]] void fail(const fs::path& file, const std::string& what) {
   throw std::runtime_error("plot: " + file.string() + ": " + what);
@@ -132,7 +127,7 @@ double round_number(double x) {
   return best;
 }
 
-std::string time_text(double t) { return format(t, "%.4g"); }
+std::string time_text(double t) { return printf_text(t, "%.4g"); }
 
 std::vector<PictureBlock> pale_blocks(const VtkPolyData& d) {
   std::vector<PictureBlock> out;
@@ -295,7 +290,7 @@ BlocksPicture blocks_picture(const VtkPolyData& start, const VtkPolyData& now, d
                            : options.field == PlotField::PlasticStrain ? "plastic strain"
                                                                        : "material";
   o.title = "blocks at t = " + time_text(time) + " s, coloured by " + field_name + "; displacement drawn x" +
-            format(x, "%g") + ", largest at a vertex " + format(largest, "%.3g") + " m";
+            printf_text(x, "%g") + ", largest at a vertex " + printf_text(largest, "%.3g") + " m";
   if (options.field == PlotField::Material) {
     std::sort(materials_seen.begin(), materials_seen.end());
     for (int m : materials_seen) {
@@ -313,13 +308,23 @@ BlocksPicture blocks_picture(const VtkPolyData& start, const VtkPolyData& now, d
   return p;
 }
 
-BlocksPicture joint_states_picture(const VtkPolyData& now, const VtkPolyData& contacts, double time,
-                                   int width_px) {
+namespace {
+
+// The blocks of `now`, pale (fixed ones grey), with axes: what the contacts are drawn over.
+BlocksPicture pale_picture(const VtkPolyData& now, int width_px) {
   BlocksPicture p;
   p.blocks = pale_blocks(now);
+  p.options.width_px = width_px;
+  p.options.axes = true;
+  return p;
+}
+
+}  // namespace
+
+BlocksPicture joint_states_picture(const VtkPolyData& now, const VtkPolyData& contacts, double time,
+                                   int width_px) {
+  BlocksPicture p = pale_picture(now, width_px);
   PictureOptions& o = p.options;
-  o.width_px = width_px;
-  o.axes = true;
   const VtkArray* mode = contacts.find_point_array("mode");
   const VtkArray* bonded = contacts.find_point_array("bonded");
   if (mode == nullptr || bonded == nullptr)
@@ -327,16 +332,14 @@ BlocksPicture joint_states_picture(const VtkPolyData& now, const VtkPolyData& co
   int counts[4] = {0, 0, 0, 0};  // open, sliding, locked, bonded
   // A square of 5 px (a third of a percent of the width, at least) at each contact.
   const double half = std::max(2.0, width_px / 600.0 + 1.0);
-  const PictureFrame frame = picture_frame(p.blocks, o);
-  const double h = half / frame.scale;  // in metres
   for (std::size_t i = 0; i < contacts.points.size(); ++i) {
     const int state = bonded->at(i) != 0.0 ? 3 : static_cast<int>(mode->at(i)) == 0 ? 0
                                               : static_cast<int>(mode->at(i)) == 1 ? 1
                                                                                    : 2;
     ++counts[state];
     const Rgb colour = state == 0 ? kOpen : state == 1 ? kSliding : state == 2 ? kLocked : kBonded;
-    const Vec2 c = contacts.points[i];
-    o.lines.push_back({c - Vec2(h, 0.0), c + Vec2(h, 0.0), colour, 2.0 * half});
+    // A line of no length: only its end squares, 2 half wide, are drawn.
+    o.lines.push_back({contacts.points[i], contacts.points[i], colour, 2.0 * half});
   }
   o.title = "joint states at t = " + time_text(time) + " s: " + std::to_string(contacts.points.size()) + " contacts";
   o.legend = {{"open " + std::to_string(counts[0]), kOpen},
@@ -349,11 +352,8 @@ BlocksPicture joint_states_picture(const VtkPolyData& now, const VtkPolyData& co
 
 BlocksPicture force_chain_picture(const VtkPolyData& now, const VtkPolyData& contacts, double time,
                                   int width_px) {
-  BlocksPicture p;
-  p.blocks = pale_blocks(now);
+  BlocksPicture p = pale_picture(now, width_px);
   PictureOptions& o = p.options;
-  o.width_px = width_px;
-  o.axes = true;
   const VtkArray* normal = contacts.find_point_array("normal_force");
   const VtkArray* a = contacts.find_point_array("vertex_block");
   const VtkArray* b = contacts.find_point_array("edge_block");
@@ -378,7 +378,7 @@ BlocksPicture force_chain_picture(const VtkPolyData& now, const VtkPolyData& con
     o.lines.push_back({c0, c1, kChain, 1.0 + 9.0 * n / top});
   }
   o.title = "force chains at t = " + time_text(time) + " s: line width by the normal force between two blocks, " +
-            "the largest " + format(top, "%.3g") + " N/m (10 px)";
+            "the largest " + printf_text(top, "%.3g") + " N/m (10 px)";
   o.legend = {{"fixed block", kFixedGrey}, {"compression between two blocks", kChain}};
   return p;
 }
@@ -389,8 +389,8 @@ std::vector<fs::path> plot_run(const fs::path& run_dir, const fs::path& out_dir,
   std::vector<std::size_t> chosen;
   for (double t : options.times) {
     if (t < frames.front().time)
-      throw std::invalid_argument("plot: --time " + format(t, "%g") + " s is before the first frame (" +
-                                  format(frames.front().time, "%g") + " s)");
+      throw std::invalid_argument("plot: --time " + printf_text(t, "%g") + " s is before the first frame (" +
+                                  printf_text(frames.front().time, "%g") + " s)");
     std::size_t k = frames.size() - 1;
     while (k > 0 && frames[k].time > t) --k;
     chosen.push_back(k);
@@ -427,7 +427,7 @@ std::vector<fs::path> plot_run(const fs::path& run_dir, const fs::path& out_dir,
   }
   for (std::size_t k : chosen) {
     const RunFrame& f = frames[k];
-    const std::string suffix = chosen.size() > 1 ? "_t" + format(f.time, "%g") : "";
+    const std::string suffix = chosen.size() > 1 ? "_t" + printf_text(f.time, "%g") : "";
     const VtkPolyData now = k == 0 ? start : read_vtp(run_dir / f.blocks_file);
     blocks("blocks" + suffix + ".png", blocks_picture(start, now, f.time, each, materials));
     if (!f.contacts_file.empty()) {
