@@ -8,9 +8,10 @@
 #include <iostream>
 #include <optional>
 
-#include "common/printf_text.hpp"
+#include "app/fos_samples.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
+#include "common/printf_text.hpp"
 #include "io/bolt_force_report.hpp"
 #include "io/fos_pictures.hpp"
 #include "io/fos_report.hpp"
@@ -97,7 +98,20 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
                      "runs no search of F, so --method limit-analysis, --dynamic-check and "
                      "--spread do not apply");
   }
+  const bool sampled = options.samples > 0;
+  if (options.at_factor > 0.0 && !sampled) {
+    throw InputError("fos: --at-factor judges each sample of --samples at one F; give --samples N");
+  }
+  if (sampled && (target || method != "strength-reduction" || dynamic_check || options.spread)) {
+    throw InputError("fos: --samples runs trials per sample of the random strengths; "
+                     "--target-factor, --method limit-analysis, --dynamic-check and --spread do "
+                     "not apply");
+  }
   const Scene scene = with_seismic_coefficient(read_scene_file(scene_path), settings.seismic_coefficient);
+  if (sampled && scene.random_strengths.variables.empty()) {
+    throw InputError(scene_path + ": random_strengths: --samples draws the strengths this key "
+                     "describes, and the scene has none (docs/scene-format.md)");
+  }
   if (target) {
     if (scene.bolts.empty()) {
       throw InputError(scene_path + ": bolts: --target-factor finds the force the scene's bolts "
@@ -112,7 +126,8 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   // The output directory before any work: a search of hours whose report cannot be written
   // fails now, not at its end.
   prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
-                                     "last_stable.png", "first_failing.png", "trials.png"});
+                                     "last_stable.png", "first_failing.png", "trials.png",
+                                     "factors.png", "verdicts.png"});
 
   // SIGINT or SIGTERM (watched from the start of main): the consolidation or the running
   // trials stop at their next step, and the report holds the trials judged so far (a second
@@ -165,6 +180,8 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     std::cerr << "dda: " << bond_check_line(info.bond_check) << " ("
               << printf_text(info.bond_check.wall_time_s, "%.1f") << " s)\n";
   }
+
+  if (sampled) return fos_samples_command(scene, out_dir, world, settings, info, options);
 
   // The second factor, from the same consolidated blocks: rigid-block limit analysis, and
   // each free block's own bound.

@@ -3,6 +3,7 @@
 // pictures of the mechanism (docs/factor-of-safety.md).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "studies/strength_reduction.hpp"
@@ -25,6 +26,12 @@ struct FosCommandOptions {
   // --target-factor F: instead of the search, the force each bolt must hold for the slope
   // to stand at F (studies/bolt_force_search.hpp); 0: not asked.
   double target_factor = 0.0;
+  // --samples N: the probabilistic factor (studies/probabilistic_fos.hpp), N samples of the
+  // scene's random_strengths drawn with --seed; 0: not asked. --at-factor F: one trial per
+  // sample at F, its verdict, instead of each sample's search.
+  long samples = 0;
+  std::uint64_t seed = 0;
+  double at_factor = 0.0;
 };
 
 int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,

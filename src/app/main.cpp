@@ -309,6 +309,17 @@ int main(int argc, char** argv) {
                       "Instead of the factor: the force every bolt must hold (pretension = yield "
                       "force) for the slope to stand at this F")
       ->check(finite_range(1e-3, 1e3));
+  fos_app->add_option("--samples", fos_options.samples,
+                      "Probabilistic factor: draw the scene's random_strengths this many times and "
+                      "find each sample's factor (or, with --at-factor, its verdict)")
+      ->check(CLI::Range(1L, 1000000L));
+  fos_app->add_option("--seed", fos_options.seed,
+                      "Seed of the samples' draws (sample k's values depend on seed and k only)")
+      ->capture_default_str();
+  fos_app->add_option("--at-factor", fos_options.at_factor,
+                      "With --samples: one trial per sample at this F (e.g. 1: the probability "
+                      "of failure) instead of each sample's search")
+      ->check(finite_range(1e-3, 1e3));
   fos_app->add_option("--seismic-coefficient", fos.seismic_coefficient,
                       "Pseudo-static horizontal body force, as a share of the weight, along +x "
                       "(negative: along -x)")->capture_default_str()

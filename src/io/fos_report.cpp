@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/probabilistic_report.hpp"
 #include "io/text_file.hpp"
 #include "solver/world.hpp"
 
@@ -326,7 +327,8 @@ std::string settings_spread_markdown(const Scene& scene, const FosResult& result
 void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
                       const FosSettings& s, const ConsolidationInfo& consolidation,
                       const FosResult& result, double wall_time_s, const LimitAnalysisInfo* limit,
-                      const DynamicCheck* dynamic, const SettingsSpread* spread) {
+                      const DynamicCheck* dynamic, const SettingsSpread* spread,
+                      const ProbabilisticResult* probabilistic) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create " + dir.string() + ": " + ec.message());
@@ -403,11 +405,16 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
   }
   report["settings_spread"] = spread != nullptr ? settings_spread_json(*spread)
                                                 : json{{"computed", false}};
+  if (probabilistic != nullptr) {
+    report["probabilistic"] = probabilistic_json(*probabilistic, scene.random_strengths);
+  }
   write_text_file((dir / "report.json").string(), report.dump(2) + "\n");
 
   std::ostringstream md;
   md << "# Factor of safety: " << scene.source << "\n\n";
-  if (result.found) {
+  if (probabilistic != nullptr) {
+    md << probabilistic_markdown(*probabilistic, scene.random_strengths) << "\n## How each trial runs\n\n";
+  } else if (result.found) {
     md << "**F = " << fixed(result.factor_of_safety, 3) << "**, between the last stable trial "
        << fixed(result.last_stable, 4) << " and the first failing " << fixed(result.first_failing, 4)
        << " (tolerance " << general(s.tolerance) << ").\n\n";
@@ -444,7 +451,7 @@ void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
     md << "a mechanism accelerating at " << general(s.detect_acceleration)
        << " g would move in these damped steps (the table's speed limit).\n\n";
   }
-  md << trials_table(result.trials);
+  if (probabilistic == nullptr) md << trials_table(result.trials);
   if (dynamic != nullptr && dynamic->computed) {
     md << "\n## Static and dynamic trials\n\n" << dynamic->text
        << " (dynamic coefficient 1, the same trial time and verdict; docs/factor-of-safety.md).\n\n"

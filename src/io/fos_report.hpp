@@ -10,6 +10,7 @@
 #include "studies/consolidation_bonds.hpp"
 #include "studies/factor_cross_check.hpp"
 #include "studies/limit_analysis.hpp"
+#include "studies/probabilistic_fos.hpp"
 #include "studies/settings_spread.hpp"
 #include "studies/trial_mechanism.hpp"
 #include "studies/strength_reduction.hpp"
@@ -47,13 +48,15 @@ struct LimitAnalysisInfo {
 
 // Writes DIR/report.json and DIR/report.md (creating DIR). Throws std::runtime_error naming
 // the path when it cannot. `limit` may be null (the analysis was not reached); `dynamic` is
-// null unless --dynamic-check ran, `spread` unless --spread did.
+// null unless --dynamic-check ran, `spread` unless --spread did, `probabilistic` unless
+// --samples did (then report.json gains "probabilistic" and report.md leads with it).
 void write_fos_report(const std::filesystem::path& dir, const Scene& scene,
                       const FosSettings& settings, const ConsolidationInfo& consolidation,
                       const FosResult& result, double wall_time_s,
                       const LimitAnalysisInfo* limit = nullptr,
                       const DynamicCheck* dynamic = nullptr,
-                      const SettingsSpread* spread = nullptr);
+                      const SettingsSpread* spread = nullptr,
+                      const ProbabilisticResult* probabilistic = nullptr);
 
 // The consolidation's broken bonds against the elastic solution, one line (no newline):
 // "of the 118 bonds the consolidation broke, 95 are overstressed ...".

@@ -17,6 +17,7 @@
 #include "io/json_input.hpp"
 #include "io/material_reader.hpp"
 #include "io/polygon_input.hpp"
+#include "io/random_strength_reader.hpp"
 #include "kinematics/overlap.hpp"
 #include "kinematics/polygon.hpp"
 #include "materials/material.hpp"
@@ -925,7 +926,7 @@ BaseMotion read_base_motion(const Field& f, const std::string& source) {
 Scene read_scene(const Field& root, const std::string& source) {
   root.expect_keys({"description", "gravity", "plane", "control", "materials",
                     "joint_materials", "blocks", "joints", "pins", "point_loads", "monitors",
-                    "bolts", "stages", "water", "base_motion"});
+                    "bolts", "stages", "water", "base_motion", "random_strengths"});
   Scene scene;
   scene.source = source;
   if (auto g = root.optional_member("description")) g->string();  // free text, checked only
@@ -983,6 +984,9 @@ Scene read_scene(const Field& root, const std::string& source) {
     scene.stages = read_stages(root.member("stages"), scene.control, scene.joint_materials,
                                scene.blocks.size());
     check_staged_run_length(root.member("control"), scene.stages, scene.control);
+  }
+  if (auto random = root.optional_member("random_strengths")) {
+    scene.random_strengths = read_random_strengths(*random, scene.joint_materials, scene.materials);
   }
   scene.warnings = unused_joint_material_warnings(scene, source);
   for (std::string& w : apex_without_return_warnings(scene, source)) scene.warnings.push_back(std::move(w));

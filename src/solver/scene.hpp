@@ -14,6 +14,7 @@
 #include "kinematics/polygon.hpp"
 #include "common/enum_names.hpp"
 #include "kinematics/types.hpp"
+#include "solver/random_strength_spec.hpp"
 #include "solver/base_motion.hpp"
 #include "solver/joint_water.hpp"
 #include "materials/material_types.hpp"
@@ -307,6 +308,9 @@ struct Scene {
   // Stages run in order (empty: none, the run follows `control` alone). With stages,
   // control.end_time is the sum of their durations and control.steps is unset.
   std::vector<StageSpec> stages;
+  // Strengths `dda fos --samples` draws at random (docs/scene-format.md,
+  // "random_strengths"); empty: none. Other commands use the scene's own values.
+  RandomStrengths random_strengths;
   // Things worth telling the user that do not stop the run (e.g. an unused joint material).
   std::vector<std::string> warnings;
 };
