@@ -73,7 +73,7 @@ TEST_CASE("run pictures: a small motion drawn exaggerated by a round number alon
   CHECK(p.options.colour_bar->max == Approx(u.norm()).epsilon(1e-12));
 }
 
-TEST_CASE("run pictures: a large motion drawn true, with the start under it; material and "
+TEST_CASE("run pictures: a large motion drawn true, with the start under it, and the material and "
           "speed colourings",
           "[picture][plot]") {
   const Vec2 u(1.5, 0.0);
