@@ -127,7 +127,8 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   // fails now, not at its end.
   prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
                                      "last_stable.png", "first_failing.png", "trials.png",
-                                     "factors.png", "verdicts.png"});
+                                     "limit_analysis_close.png", "last_stable_close.png",
+                                     "first_failing_close.png", "factors.png", "verdicts.png"});
 
   // SIGINT or SIGTERM (watched from the start of main): the consolidation or the running
   // trials stop at their next step, and the report holds the trials judged so far (a second

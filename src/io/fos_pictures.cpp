@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -64,7 +66,62 @@ PictureOptions slope_options() {
   return options;
 }
 
+struct WorldBox {
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity());
+  Vec2 hi = Vec2::Constant(-std::numeric_limits<double>::infinity());
+  void add(const Vec2& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); }
+  bool contains(const Vec2& p) const { return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all(); }
+  Vec2 size() const { return hi - lo; }
+};
+
+Vec2 vertex_mean(const Polygon& p) {
+  Vec2 m = Vec2::Zero();
+  for (const Vec2& v : p) m += v;
+  return p.empty() ? m : Vec2(m / static_cast<double>(p.size()));
+}
+
+// NAME_close.png beside NAME.png, when there is a close-up to draw.
+void write_close_up(const std::filesystem::path& path, const SlopePicture& whole, double typical_size) {
+  std::filesystem::path out = path;
+  out.replace_filename(path.stem().string() + "_close" + path.extension().string());
+  const std::optional<SlopePicture> close = close_up(whole, typical_size);
+  if (close) {
+    write_block_picture(out.string(), close->blocks, close->options);
+  } else {  // an earlier search's close-up is not this one's
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(std::filesystem::symlink_status(out, ec))) std::filesystem::remove(out, ec);
+  }
+}
+
 }  // namespace
+
+std::optional<SlopePicture> close_up(const SlopePicture& whole, double typical_size) {
+  if (whole.moving_from >= whole.blocks.size()) return std::nullopt;
+  WorldBox slope, moving;
+  for (std::size_t i = 0; i < whole.blocks.size(); ++i)
+    for (const Vec2& v : whole.blocks[i].polygon) (i < whole.moving_from ? slope : moving).add(v);
+  if (moving.size().x() >= 0.4 * slope.size().x() || moving.size().y() >= 0.4 * slope.size().y()) return std::nullopt;
+  const double grow = std::max({moving.size().x(), moving.size().y(), 3.0 * typical_size});
+  WorldBox region = moving;
+  region.lo -= Vec2::Constant(grow);
+  region.hi += Vec2::Constant(grow);
+  SlopePicture close;
+  close.options = whole.options;
+  close.options.arrows.clear();
+  close.options.labels.clear();
+  for (std::size_t i = 0; i < whole.moving_from; ++i)
+    if (region.contains(vertex_mean(whole.blocks[i].polygon))) close.blocks.push_back(whole.blocks[i]);
+  close.moving_from = close.blocks.size();
+  close.blocks.insert(close.blocks.end(), whole.blocks.begin() + static_cast<std::ptrdiff_t>(whole.moving_from),
+                      whole.blocks.end());
+  for (const PictureArrow& a : whole.options.arrows)
+    if (region.contains(a.from)) close.options.arrows.push_back(a);
+  for (const PictureLabel& l : whole.options.labels)
+    if (region.contains(l.at)) close.options.labels.push_back(l);
+  std::erase_if(close.options.lines, [&](const PictureLine& l) { return !region.contains(l.from) && !region.contains(l.to); });
+  close.options.title = "close-up: " + whole.options.title;
+  return close;
+}
 
 SlopePicture mechanism_picture(const World& consolidated, const TrialResult& t, const std::string& what) {
   const std::vector<BlockMotion> moved = moved_blocks(consolidated, t.world);
@@ -72,6 +129,7 @@ SlopePicture mechanism_picture(const World& consolidated, const TrialResult& t, 
   const double shown = 0.25 * std::sqrt(median_free_block_area(consolidated));
   const double x = largest > 0.0 ? shown / largest : 0.0;
   std::vector<PictureBlock> blocks = slope_blocks(consolidated);
+  const std::size_t moving_from = blocks.size();
   PictureOptions options = slope_options();
   add_bolt_lines(t.world, options);
   for (auto it = moved.rbegin(); it != moved.rend(); ++it) {  // the largest on top
@@ -98,19 +156,21 @@ SlopePicture mechanism_picture(const World& consolidated, const TrialResult& t, 
                     {"moving block (outlined, displaced x" + printf_text(x, "%.3g") + ")", kMovingOutline},
                     {"displacement direction", kArrowRed}};
   options.colour_bar = ColourBar{"displacement in the trial (m)", 0.0, largest};
-  return {std::move(blocks), std::move(options)};
+  return {std::move(blocks), std::move(options), moving_from};
 }
 
 void write_mechanism_picture(const std::filesystem::path& path, const World& consolidated,
                              const TrialResult& trial, const std::string& what) {
   const SlopePicture p = mechanism_picture(consolidated, trial, what);
   write_block_picture(path.string(), p.blocks, p.options);
+  write_close_up(path, p, std::sqrt(median_free_block_area(consolidated)));
 }
 
 SlopePicture limit_analysis_picture(const World& world, const LimitAnalysisResult& la) {
   // (A mechanism has free blocks, so the median exists.)
   const double shown = 0.25 * std::sqrt(median_free_block_area(world));
   std::vector<PictureBlock> blocks = slope_blocks(world);
+  const std::size_t moving_from = blocks.size();
   for (auto it = la.mechanism.rbegin(); it != la.mechanism.rend(); ++it) {  // fastest on top
     const Block& b = world.blocks[static_cast<std::size_t>(it->block)];
     blocks.push_back({moved_rigidly(b, shown * it->velocity, shown * it->angular_velocity),
@@ -124,7 +184,7 @@ SlopePicture limit_analysis_picture(const World& world, const LimitAnalysisResul
   options.legend = {{"fixed block", kFixedGrey}, {"free block at rest", kFreePale},
                     {"block of the mechanism (outlined)", kMovingOutline}};
   options.colour_bar = ColourBar{"speed, share of the fastest block's", 0.0, 1.0};
-  return {std::move(blocks), std::move(options)};
+  return {std::move(blocks), std::move(options), moving_from};
 }
 
 void write_limit_analysis_picture(const std::filesystem::path& path, const World& world,
@@ -132,6 +192,7 @@ void write_limit_analysis_picture(const std::filesystem::path& path, const World
   if (la.mechanism.empty()) return;
   const SlopePicture p = limit_analysis_picture(world, la);
   write_block_picture(path.string(), p.blocks, p.options);
+  write_close_up(path, p, std::sqrt(median_free_block_area(world)));
 }
 
 ChartOptions trials_chart(const FosResult& result, double failure_displacement, const LimitAnalysisResult* la) {

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -23,10 +24,10 @@ Rgb pixel(const pic::Decoded& d, const Vec2& p) {
   return {d.pixels.at(i), d.pixels.at(i + 1), d.pixels.at(i + 2)};
 }
 
-// A fixed 10 x 1 m base and a free 2 x 1 m block on it.
-World two_blocks() {
+// A fixed base `length` x `depth` m (its top at y = 1) and a free 2 x 1 m block on it.
+World two_blocks(double length = 10.0, double depth = 1.0) {
   Scene s = dda::test::base_scene(1, 0.01);
-  BlockSpec base = dda::test::block(dda::test::rectangle(0.0, 0.0, 10.0, 1.0));
+  BlockSpec base = dda::test::block(dda::test::rectangle(0.0, 1.0 - depth, length, depth));
   base.fixed = true;
   s.blocks = {base, dda::test::block(dda::test::rectangle(4.0, 1.0, 2.0, 1.0))};
   return make_world(s);
@@ -124,4 +125,37 @@ TEST_CASE("fos pictures: the trials' chart puts each trial at its F on its side 
   int black = 0;
   for (int y = f.top; y < f.top + f.height; ++y) black += img.at(x, y) == (Rgb{0, 0, 0});
   CHECK(black > f.height / 2);
+}
+
+TEST_CASE("fos pictures: a close-up around moving blocks that are small on the slope", "[picture][fos]") {
+  TrialResult t;
+  t.factor = 1.1;
+  t.verdict = "still moving at the end";
+  const Vec2 u(-0.002, 0.0);
+  SECTION("a 2 m block on a 10 m base is not small: no close-up") {
+    const World before = two_blocks();
+    t.world = before;
+    for (Vec2& v : t.world.blocks[1].vertices) v += u;
+    t.world.blocks[1].moments.centroid += u;
+    const SlopePicture p = mechanism_picture(before, t, "trial");
+    CHECK(p.moving_from == 2);
+    CHECK_FALSE(close_up(p, std::sqrt(2.0)));
+  }
+  SECTION("on a 100 x 10 m base it is: the close-up leaves the base out (its middle is 45 m away)") {
+    const World before = two_blocks(100.0, 10.0);
+    t.world = before;
+    for (Vec2& v : t.world.blocks[1].vertices) v += u;
+    t.world.blocks[1].moments.centroid += u;
+    const SlopePicture p = mechanism_picture(before, t, "trial");
+    const std::optional<SlopePicture> close = close_up(p, std::sqrt(2.0));
+    REQUIRE(close);
+    // The free block where it was (its middle at (5, 1.5), in the region) and moved; not the base.
+    CHECK(close->blocks.size() == 2);
+    CHECK(close->moving_from == 1);
+    CHECK(close->options.labels.size() == 1);
+    CHECK(close->options.arrows.size() == 1);
+    const PictureFrame f = picture_frame(close->blocks, close->options);
+    // About 1600 px over the 2.6 m the two drawn blocks span: far closer than 16 px/m.
+    CHECK(f.scale > 300.0);
+  }
 }
