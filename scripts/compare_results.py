@@ -7,13 +7,18 @@ Every text file must be the same but for what changes from one run to the next: 
 JSON keys that hold times (wall, cpu, elapsed, seconds, date), table columns headed by a
 time, and paths (the two directories' own names and the repositories they ran from, which
 same-results.sh writes to repository.txt). PNG pictures are not compared (each is drawn
-from numbers that are). Prints each difference (the first five lines of a file) and exits 1
+from numbers that are). VTK frames (.vtp) are compared by their decoded points, cells and
+arrays (verification/vtk_frames.py), so that a binary frame equals an ASCII one of the same
+numbers: a baseline written before the frames became binary still compares. Prints each difference (the first five lines of a file) and exits 1
 if there is one, 0 if the two runs are the same.
 """
 import json
 import os
 import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "verification"))
+import vtk_frames  # noqa: E402  (the repository's reader of both VTK encodings)
 
 TIMING = re.compile(r"(wall|cpu|elapsed|seconds|_s\b|time_s|date|took|ms a|per_step_ms|duration|ns_per|ns per)", re.I)
 SECONDS = re.compile(r"\b\d+(\.\d+)?(e-?\d+)? ?(s|ms|min)\b")
@@ -28,7 +33,23 @@ def strip_json(value):
     return value
 
 
+def vtp_lines(path):
+    """A frame as text: its points, cells and arrays, numbers with repr (exact)."""
+    frame = vtk_frames.read_vtp(path)
+    lines = ["points " + " ".join(repr(c) for p in frame["points"] for c in p)]
+    for kind in ("verts", "lines", "polys"):
+        if frame[kind] is not None:
+            connectivity, offsets = frame[kind]
+            lines.append("%s %s | %s" % (kind, " ".join(map(str, connectivity)), " ".join(map(str, offsets))))
+    for section in ("point_data", "cell_data"):
+        for name, (components, values) in frame[section].items():
+            lines.append("%s %s %d %s" % (section, name, components, " ".join(repr(float(v)) for v in values)))
+    return lines
+
+
 def text_lines(path, roots, repositories):
+    if path.endswith(".vtp"):
+        return vtp_lines(path)
     with open(path, encoding="utf-8", errors="replace") as f:
         text = f.read()
     for r in sorted(roots, key=len, reverse=True):
