@@ -164,6 +164,17 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
       if (e.share > 0.0) used.insert(e.material);
     }
   }
+  // A joint material drawn at random is the study's even where no edge of the cut takes it:
+  // kept, so that the scene's random_strengths names only what it holds.
+  if (settings.contains("random_strengths")) {
+    for (const char* list : {"variables", "correlations"}) {
+      if (!settings.at("random_strengths").contains(list)) continue;
+      for (const auto& v : settings.at("random_strengths").at(list)) {
+        if (v.is_object() && v.contains("joint_material") && v.at("joint_material").is_string())
+          used.insert(v.at("joint_material").get<std::string>());
+      }
+    }
+  }
   ordered_json joint_materials = ordered_json::object();
   for (const auto& [name, value] : settings.at("joint_materials").items()) {
     if (used.count(name) != 0) {
@@ -224,6 +235,7 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
     }
     scene["base_motion"] = motion;
   }
+  if (settings.contains("random_strengths")) scene["random_strengths"] = ordered_json(settings.at("random_strengths"));
   if (settings.contains("stages")) {
     ordered_json stages = ordered_json(settings.at("stages"));
     // A stage's excavate_region: the blocks whose interior point (as regions place blocks)

@@ -28,7 +28,7 @@ using input::read_polygon;
 
 constexpr std::string_view kSceneKeys[] = {"description",     "gravity", "plane",      "control",
                                            "materials",       "joint_materials", "stages",
-                                           "base_motion"};
+                                           "base_motion",     "random_strengths"};
 
 // Caps on the traces a set may draw, so that a spacing or trace length given in the wrong
 // unit is an error at its key rather than a cut that runs out of memory. A cut of 100 000
@@ -336,7 +336,7 @@ Model read_model(const Field& root, const std::string& source) {
   root.expect_keys({"description", "gravity", "plane", "control", "materials",
                     "joint_materials", "material", "domain", "joint_sets", "seed", "joints",
                     "regions", "fixed", "min_block_area", "stages", "base_motion", "pins",
-                    "point_loads", "monitors", "bolts", "water", "bolt_patterns"});
+                    "point_loads", "monitors", "bolts", "water", "bolt_patterns", "random_strengths"});
   Model model;
   model.source = source;
   const Scene settings =

@@ -190,3 +190,27 @@ TEST_CASE("a model's stage removes the blocks of its excavate_region: the cut's 
   bad["stages"][1]["excavate_region"] = {{50, 50}, {60, 50}, {60, 60}};
   CHECK(model_error(bad).find("model.json: stages[1].excavate_region: holds no block of the cut") == 0);
 }
+
+TEST_CASE("a model's random_strengths go into its scene with every joint material they name",
+          "[cut][model]") {
+  nlohmann::json model = study_model();
+  // "weak" is on no edge of the cut: without its random strength the cut would drop it.
+  model["joint_materials"]["weak"] = {{"friction_angle", 25}, {"cohesion", 0}, {"tensile_strength", 0}};
+  model["random_strengths"] = nlohmann::json::parse(R"({"variables": [
+      {"joint_material": "default", "property": "friction_angle", "distribution": "normal",
+       "mean": 35, "standard_deviation": 3, "min": 20, "max": 50},
+      {"joint_material": "weak", "property": "friction_angle", "distribution": "normal",
+       "mean": 25, "standard_deviation": 2, "min": 15, "max": 35}]})");
+  const Model m = parse_model_text(model.dump(), "model.json");
+  const CutScene out = cut_scene(m, cut_model(m.spec));
+  REQUIRE(out.scene.contains("random_strengths"));
+  CHECK(out.scene["joint_materials"].contains("weak"));
+  const Scene scene = parse_scene_text(scene_text(out.scene), "cut.json");
+  REQUIRE(scene.random_strengths.variables.size() == 2);
+  CHECK(scene.random_strengths.variables[1].mean == 25.0);
+
+  // A name the model does not define is the model's error at its place.
+  model["random_strengths"]["variables"][1]["joint_material"] = "nowhere";
+  const std::string why = model_error(model);
+  CHECK(why.find("model.json: random_strengths.variables[1].joint_material") != std::string::npos);
+}
