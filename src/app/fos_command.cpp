@@ -1,9 +1,6 @@
 #include "app/fos_command.hpp"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>

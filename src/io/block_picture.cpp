@@ -17,7 +17,9 @@
 namespace dda {
 namespace {
 
-// An axis value with the decimals its ticks' step needs (none for whole metres).
+// An axis value with the decimals its ticks' step needs (none for whole metres). Always
+// fixed-point, unlike a chart's tick values (io/chart): a coordinate such as a northing of
+// 4 200 000 m must keep every digit.
 std::string axis_value(double v, const std::vector<double>& ticks) {
   const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : 1.0;
   const int decimals = std::clamp(-static_cast<int>(std::floor(std::log10(step) + 1e-9)), 0, 6);
@@ -89,15 +91,10 @@ Layout lay_out(const std::vector<PictureBlock>& blocks, const PictureOptions& o)
   L.xmin = xmin, L.xmax = xmax, L.ymin = ymin, L.ymax = ymax;
   int axis_left = 0;
   if (o.axes) {
-    const auto inside = [](std::vector<double> ticks, double lo, double hi) {
-      const double slack = 1e-9 * std::max(1.0, hi - lo);
-      std::erase_if(ticks, [&](double t) { return t < lo - slack || t > hi + slack; });
-      return ticks;
-    };
     const int across = std::max(2, o.width_px / 200);
     const double aspect = xmax > xmin ? (ymax - ymin) / (xmax - xmin) : 1.0;
-    L.x_ticks = inside(nice_ticks(xmin, xmax, across), xmin, xmax);
-    L.y_ticks = inside(nice_ticks(ymin, ymax, std::clamp(static_cast<int>(std::lround(across * aspect)), 2, 3 * across)), ymin, ymax);
+    L.x_ticks = ticks_within(nice_ticks(xmin, xmax, across), xmin, xmax);
+    L.y_ticks = ticks_within(nice_ticks(ymin, ymax, std::clamp(static_cast<int>(std::lround(across * aspect)), 2, 3 * across)), ymin, ymax);
     for (double t : L.y_ticks) axis_left = std::max(axis_left, text_width(axis_value(t, L.y_ticks), m.text_scale));
     axis_left += 6 * m.text_scale;
     L.y_label_y = y;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "io/bitmap_font.hpp"
 #include "io/picture_layout.hpp"
@@ -115,12 +116,8 @@ Layout lay_out(const ChartOptions& o) {
     const double dx = 0.03 * (xhi > xlo ? xhi - xlo : f.xmax - f.xmin);
     const double dy = 0.03 * (yhi > ylo ? yhi - ylo : f.ymax - f.ymin);
     f.xmin = xlo - dx, f.xmax = xhi + dx, f.ymin = ylo - dy, f.ymax = yhi + dy;
-    const auto inside = [](std::vector<double>& ticks, double lo, double hi) {
-      const double slack = 1e-9 * (hi - lo);
-      std::erase_if(ticks, [&](double t) { return t < lo - slack || t > hi + slack; });
-    };
-    inside(f.x_ticks, f.xmin, f.xmax);
-    inside(f.y_ticks, f.ymin, f.ymax);
+    f.x_ticks = ticks_within(std::move(f.x_ticks), f.xmin, f.xmax);
+    f.y_ticks = ticks_within(std::move(f.y_ticks), f.ymin, f.ymax);
   }
 
   // Text a size larger than a block picture's of the same width: a chart is read from its
@@ -197,6 +194,13 @@ std::vector<double> nice_ticks(double lo, double hi, int at_most) {
   const double first = std::floor(lo / step + 1e-9), last = std::ceil(hi / step - 1e-9);
   std::vector<double> ticks;
   for (double k = first; k <= last + 0.5; k += 1.0) ticks.push_back(k * step);
+  return ticks;
+}
+
+std::vector<double> ticks_within(std::vector<double> ticks, double lo, double hi) {
+  // k * step carries round-off relative to the values, not to the range.
+  const double slack = 1e-9 * std::max({hi - lo, std::abs(lo), std::abs(hi)});
+  std::erase_if(ticks, [&](double t) { return t < lo - slack || t > hi + slack; });
   return ticks;
 }
 

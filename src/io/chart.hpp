@@ -68,6 +68,10 @@ struct ChartFrame {
 // `hi`, at most `at_most` + 1 of them (at_most >= 2). lo == hi gives a range around them.
 std::vector<double> nice_ticks(double lo, double hi, int at_most);
 
+// `ticks` less those outside [lo, hi]; a tick off by round-off (1e-9 of the values' size)
+// stays. For an axis that runs over the data rather than over round ticks.
+std::vector<double> ticks_within(std::vector<double> ticks, double lo, double hi);
+
 // The frame draw_chart uses. Throws std::invalid_argument when there is no finite point to
 // draw, a series' x and y differ in length, or the picture is smaller than 200 x 150 px.
 ChartFrame chart_frame(const ChartOptions& options);

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -11,6 +9,7 @@
 #include "common/printf_text.hpp"
 #include "io/block_picture.hpp"
 #include "io/chart.hpp"
+#include "kinematics/polygon.hpp"
 #include "studies/trial_mechanism.hpp"
 
 namespace dda {
@@ -66,13 +65,11 @@ PictureOptions slope_options() {
   return options;
 }
 
-struct WorldBox {
-  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity());
-  Vec2 hi = Vec2::Constant(-std::numeric_limits<double>::infinity());
-  void add(const Vec2& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); }
-  bool contains(const Vec2& p) const { return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all(); }
-  Vec2 size() const { return hi - lo; }
-};
+// The box of both, and whether a point lies in a box (kinematics/polygon's Box).
+Box joined(const Box& a, const Box& b) { return {a.min.cwiseMin(b.min), a.max.cwiseMax(b.max)}; }
+bool inside(const Box& b, const Vec2& p) {
+  return (p.array() >= b.min.array()).all() && (p.array() <= b.max.array()).all();
+}
 
 Vec2 vertex_mean(const Polygon& p) {
   Vec2 m = Vec2::Zero();
@@ -81,10 +78,10 @@ Vec2 vertex_mean(const Polygon& p) {
 }
 
 // NAME_close.png beside NAME.png, when there is a close-up to draw.
-void write_close_up(const std::filesystem::path& path, const SlopePicture& whole, double typical_size) {
+void write_close_up(const std::filesystem::path& path, const SlopePicture& whole) {
   std::filesystem::path out = path;
   out.replace_filename(path.stem().string() + "_close" + path.extension().string());
-  const std::optional<SlopePicture> close = close_up(whole, typical_size);
+  const std::optional<SlopePicture> close = close_up(whole);
   if (close) {
     write_block_picture(out.string(), close->blocks, close->options);
   } else {  // an earlier search's close-up is not this one's
@@ -95,30 +92,33 @@ void write_close_up(const std::filesystem::path& path, const SlopePicture& whole
 
 }  // namespace
 
-std::optional<SlopePicture> close_up(const SlopePicture& whole, double typical_size) {
+std::optional<SlopePicture> close_up(const SlopePicture& whole) {
   if (whole.moving_from >= whole.blocks.size()) return std::nullopt;
-  WorldBox slope, moving;
-  for (std::size_t i = 0; i < whole.blocks.size(); ++i)
-    for (const Vec2& v : whole.blocks[i].polygon) (i < whole.moving_from ? slope : moving).add(v);
-  if (moving.size().x() >= 0.4 * slope.size().x() || moving.size().y() >= 0.4 * slope.size().y()) return std::nullopt;
-  const double grow = std::max({moving.size().x(), moving.size().y(), 3.0 * typical_size});
-  WorldBox region = moving;
-  region.lo -= Vec2::Constant(grow);
-  region.hi += Vec2::Constant(grow);
+  const Box none{Vec2::Constant(INFINITY), Vec2::Constant(-INFINITY)};
+  Box slope = none, moving = none;
+  for (std::size_t i = 0; i < whole.blocks.size(); ++i) {
+    Box& b = i < whole.moving_from ? slope : moving;
+    b = joined(b, bounding_box(whole.blocks[i].polygon));
+  }
+  const Vec2 slope_size = slope.max - slope.min, moving_size = moving.max - moving.min;
+  if (moving_size.x() >= 0.4 * slope_size.x() || moving_size.y() >= 0.4 * slope_size.y()) return std::nullopt;
+  const double grow = std::max({moving_size.x(), moving_size.y(), 3.0 * whole.typical_size});
+  const Box region{moving.min - Vec2::Constant(grow), moving.max + Vec2::Constant(grow)};
   SlopePicture close;
+  close.typical_size = whole.typical_size;
   close.options = whole.options;
   close.options.arrows.clear();
   close.options.labels.clear();
   for (std::size_t i = 0; i < whole.moving_from; ++i)
-    if (region.contains(vertex_mean(whole.blocks[i].polygon))) close.blocks.push_back(whole.blocks[i]);
+    if (inside(region, vertex_mean(whole.blocks[i].polygon))) close.blocks.push_back(whole.blocks[i]);
   close.moving_from = close.blocks.size();
   close.blocks.insert(close.blocks.end(), whole.blocks.begin() + static_cast<std::ptrdiff_t>(whole.moving_from),
                       whole.blocks.end());
   for (const PictureArrow& a : whole.options.arrows)
-    if (region.contains(a.from)) close.options.arrows.push_back(a);
+    if (inside(region, a.from)) close.options.arrows.push_back(a);
   for (const PictureLabel& l : whole.options.labels)
-    if (region.contains(l.at)) close.options.labels.push_back(l);
-  std::erase_if(close.options.lines, [&](const PictureLine& l) { return !region.contains(l.from) && !region.contains(l.to); });
+    if (inside(region, l.at)) close.options.labels.push_back(l);
+  std::erase_if(close.options.lines, [&](const PictureLine& l) { return !inside(region, l.from) && !inside(region, l.to); });
   close.options.title = "close-up: " + whole.options.title;
   return close;
 }
@@ -126,7 +126,8 @@ std::optional<SlopePicture> close_up(const SlopePicture& whole, double typical_s
 SlopePicture mechanism_picture(const World& consolidated, const TrialResult& t, const std::string& what) {
   const std::vector<BlockMotion> moved = moved_blocks(consolidated, t.world);
   const double largest = moved.empty() ? 0.0 : moved.front().displacement.norm();
-  const double shown = 0.25 * std::sqrt(median_free_block_area(consolidated));
+  const double typical = std::sqrt(median_free_block_area(consolidated));
+  const double shown = 0.25 * typical;
   const double x = largest > 0.0 ? shown / largest : 0.0;
   std::vector<PictureBlock> blocks = slope_blocks(consolidated);
   const std::size_t moving_from = blocks.size();
@@ -156,19 +157,20 @@ SlopePicture mechanism_picture(const World& consolidated, const TrialResult& t, 
                     {"moving block (outlined, displaced x" + printf_text(x, "%.3g") + ")", kMovingOutline},
                     {"displacement direction", kArrowRed}};
   options.colour_bar = ColourBar{"displacement in the trial (m)", 0.0, largest};
-  return {std::move(blocks), std::move(options), moving_from};
+  return {std::move(blocks), std::move(options), moving_from, typical};
 }
 
 void write_mechanism_picture(const std::filesystem::path& path, const World& consolidated,
                              const TrialResult& trial, const std::string& what) {
   const SlopePicture p = mechanism_picture(consolidated, trial, what);
   write_block_picture(path.string(), p.blocks, p.options);
-  write_close_up(path, p, std::sqrt(median_free_block_area(consolidated)));
+  write_close_up(path, p);
 }
 
 SlopePicture limit_analysis_picture(const World& world, const LimitAnalysisResult& la) {
   // (A mechanism has free blocks, so the median exists.)
-  const double shown = 0.25 * std::sqrt(median_free_block_area(world));
+  const double typical = std::sqrt(median_free_block_area(world));
+  const double shown = 0.25 * typical;
   std::vector<PictureBlock> blocks = slope_blocks(world);
   const std::size_t moving_from = blocks.size();
   for (auto it = la.mechanism.rbegin(); it != la.mechanism.rend(); ++it) {  // fastest on top
@@ -184,7 +186,7 @@ SlopePicture limit_analysis_picture(const World& world, const LimitAnalysisResul
   options.legend = {{"fixed block", kFixedGrey}, {"free block at rest", kFreePale},
                     {"block of the mechanism (outlined)", kMovingOutline}};
   options.colour_bar = ColourBar{"speed, share of the fastest block's", 0.0, 1.0};
-  return {std::move(blocks), std::move(options), moving_from};
+  return {std::move(blocks), std::move(options), moving_from, typical};
 }
 
 void write_limit_analysis_picture(const std::filesystem::path& path, const World& world,
@@ -192,7 +194,7 @@ void write_limit_analysis_picture(const std::filesystem::path& path, const World
   if (la.mechanism.empty()) return;
   const SlopePicture p = limit_analysis_picture(world, la);
   write_block_picture(path.string(), p.blocks, p.options);
-  write_close_up(path, p, std::sqrt(median_free_block_area(world)));
+  write_close_up(path, p);
 }
 
 ChartOptions trials_chart(const FosResult& result, double failure_displacement, const LimitAnalysisResult* la) {

@@ -22,14 +22,15 @@ struct SlopePicture {
   std::vector<PictureBlock> blocks;
   PictureOptions options;
   std::size_t moving_from = 0;  // blocks[moving_from..] are the moving ones, drawn moved
+  double typical_size = 1.0;    // m: the square root of the median free block's area
 };
 
 // The same picture around its moving blocks, when they cover less than 40 % of the slope's
 // width and height: the box of the moving blocks grown on every side by its own size or
-// three typical blocks (`typical_size`, m), whichever is more; the slope's blocks whose
+// three typical blocks, whichever is more; the slope's blocks whose
 // vertices' mean lies in it, the moving ones, and the arrows and labels starting in it.
 // Nothing when there are no moving blocks or they are not small on the slope.
-std::optional<SlopePicture> close_up(const SlopePicture& whole, double typical_size);
+std::optional<SlopePicture> close_up(const SlopePicture& whole);
 
 // Each writer below also writes NAME_close.png beside NAME.png when close_up gives one.
 

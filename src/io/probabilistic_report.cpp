@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
+#include "common/printf_text.hpp"
 #include "io/chart.hpp"
 
 namespace dda {
@@ -12,11 +12,7 @@ namespace {
 
 using json = nlohmann::json;
 
-std::string general(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
+std::string general(double x) { return printf_text(x, "%.4g"); }
 
 json bound_json(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 

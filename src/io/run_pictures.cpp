@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -14,6 +13,7 @@
 #include "common/printf_text.hpp"
 #include "io/colour_maps.hpp"
 #include "io/vtk_reader.hpp"
+#include "kinematics/polygon.hpp"
 
 namespace dda {
 namespace {
@@ -77,6 +77,9 @@ bool flag(const VtkPolyData& d, const char* name, std::size_t i) {
   return a != nullptr && a->at(i) != 0.0;
 }
 
+// A polygon's centroid, as polygon_moments gives it but safe for what a file may hold:
+// a polygon of fewer than three points or of no area gives a point of its own (its first)
+// rather than an assertion or a division by zero.
 Vec2 centroid(const std::vector<Vec2>& p) {
   double a = 0.0;
   Vec2 c = Vec2::Zero();
@@ -91,16 +94,6 @@ Vec2 centroid(const std::vector<Vec2>& p) {
   return c / (3.0 * a);
 }
 
-double area(const std::vector<Vec2>& p) {
-  double a = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec2& u = p[i];
-    const Vec2& v = p[(i + 1) % p.size()];
-    a += u.x() * v.y() - v.x() * u.y();
-  }
-  return 0.5 * std::abs(a);
-}
-
 // The square root of the median area of the free blocks still there (of all, if none is
 // free): the typical block size the exaggeration and the arrows are scaled to.
 double typical_size(const VtkPolyData& d) {
@@ -108,7 +101,7 @@ double typical_size(const VtkPolyData& d) {
   const std::size_t n = d.polys ? d.polys->size() : 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (flag(d, "excavated", i)) continue;
-    const double a = area(d.polygon(i));
+    const double a = std::abs(signed_area(d.polygon(i)));
     all.push_back(a);
     if (!flag(d, "fixed", i)) areas.push_back(a);
   }

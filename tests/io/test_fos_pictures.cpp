@@ -139,7 +139,7 @@ TEST_CASE("fos pictures: a close-up around moving blocks that are small on the s
     t.world.blocks[1].moments.centroid += u;
     const SlopePicture p = mechanism_picture(before, t, "trial");
     CHECK(p.moving_from == 2);
-    CHECK_FALSE(close_up(p, std::sqrt(2.0)));
+    CHECK_FALSE(close_up(p));
   }
   SECTION("on a 100 x 10 m base it is: the close-up leaves the base out (its middle is 45 m away)") {
     const World before = two_blocks(100.0, 10.0);
@@ -147,7 +147,8 @@ TEST_CASE("fos pictures: a close-up around moving blocks that are small on the s
     for (Vec2& v : t.world.blocks[1].vertices) v += u;
     t.world.blocks[1].moments.centroid += u;
     const SlopePicture p = mechanism_picture(before, t, "trial");
-    const std::optional<SlopePicture> close = close_up(p, std::sqrt(2.0));
+    CHECK(p.typical_size == Approx(std::sqrt(2.0)).epsilon(1e-12));  // the one free block's 2 m^2
+    const std::optional<SlopePicture> close = close_up(p);
     REQUIRE(close);
     // The free block where it was (its middle at (5, 1.5), in the region) and moved; not the base.
     CHECK(close->blocks.size() == 2);
