@@ -68,7 +68,7 @@ json probabilistic_json(const ProbabilisticResult& r, const RandomStrengths& spe
   const ProbabilisticSummary& s = r.summary;
   json variables = json::array();
   for (const RandomStrength& v : spec.variables) {
-    variables.push_back({{"owner", v.owner == StrengthOwner::JointMaterial ? "joint_material" : "material"},
+    variables.push_back({{"owner", strength_owner_name(v.owner)},
                          {"name", v.name},
                          {"property", strength_property_name(v.property)},
                          {"distribution", strength_distribution_name(v.distribution)},

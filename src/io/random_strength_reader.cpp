@@ -50,15 +50,24 @@ struct Owner {
   std::string name;
 };
 
+// The variable's owner: exactly one of "joint_material", "material" and (variables only:
+// a correlation pairs two properties of one owner, and the water has one) "water".
 Owner read_owner(const Field& f, const std::vector<JointMaterial>& joints,
-                 const std::vector<Material>& materials) {
+                 const std::vector<Material>& materials, bool water_allowed) {
   const bool joint = f.has("joint_material"), block = f.has("material");
-  if (joint == block) {
-    f.fail("give exactly one of \"joint_material\" (a joint material's name) and \"material\" "
-           "(a plastic block material's name)");
+  const bool water = water_allowed && f.has("water");
+  if (int(joint) + int(block) + int(water) != 1) {
+    f.fail(water_allowed
+               ? "give exactly one of \"joint_material\" (a joint material's name), \"material\" "
+                 "(a plastic block material's name) and \"water\" (\"fill\": the water table's)"
+               : "give exactly one of \"joint_material\" (a joint material's name) and "
+                 "\"material\" (a plastic block material's name)");
   }
   Owner o;
-  if (joint) {
+  if (water) {
+    o.kind = StrengthOwner::Water;
+    o.name = "water";
+  } else if (joint) {
     o.index = owner_index(f.member("joint_material"), joints, "joint material");
     o.name = joints[static_cast<std::size_t>(o.index)].name;
   } else {
@@ -112,7 +121,8 @@ StrengthDistribution read_distribution(const Field& f) {
                input::quoted_list({"normal", "lognormal"}), ")"}));
 }
 
-// The property's valid range: a friction angle in [0, 90) degrees, a strength >= 0.
+// The property's valid range: a friction angle in [0, 90) degrees, a strength >= 0, a fill
+// in [0, 1].
 struct Range {
   double lo = 0.0;
   double hi = std::numeric_limits<double>::infinity();
@@ -122,19 +132,44 @@ Range valid_range(StrengthProperty p) {
   if (p == StrengthProperty::FrictionAngle) {
     return {0.0, std::nextafter(90.0, 0.0), "at least 0 and below 90 (degrees)"};
   }
+  if (p == StrengthProperty::WaterFill) return {0.0, 1.0, "in [0, 1]"};
   return {};
 }
 
+// "water": "fill", the water table's share of the way from its dry line to its phreatic line:
+// the scene must have water with a dry line. The water has no other property to draw.
+StrengthProperty read_water_property(const Field& f, const std::optional<WaterTable>& water) {
+  if (f.string() != "fill") {
+    f.fail(join({"unknown water property ", input::quoted_text(f.string()),
+                 " (known: \"fill\", the share of the way from the dry line up to the phreatic "
+                 "line)"}));
+  }
+  if (!water) f.fail("the scene has no \"water\" to fill");
+  if (water->dry_line.empty()) {
+    f.fail("the scene's \"water\" has no \"dry_line\": a drawn fill is the share of the way "
+           "from it up to the phreatic line");
+  }
+  return StrengthProperty::WaterFill;
+}
+
 RandomStrength read_variable(const Field& f, const std::vector<JointMaterial>& joints,
-                             const std::vector<Material>& materials) {
-  f.expect_keys({"joint_material", "material", "property", "distribution", "mean",
+                             const std::vector<Material>& materials,
+                             const std::optional<WaterTable>& water) {
+  f.expect_keys({"joint_material", "material", "water", "property", "distribution", "mean",
                  "standard_deviation", "min", "max"});
-  const Owner o = read_owner(f, joints, materials);
+  const Owner o = read_owner(f, joints, materials, true);
   RandomStrength v;
   v.owner = o.kind;
   v.index = o.index;
   v.name = o.name;
-  v.property = read_property(f.member("property"), o, materials);
+  if (o.kind == StrengthOwner::Water) {
+    if (f.has("property")) {
+      f.member("property").fail("a water variable names its property in \"water\" (\"fill\")");
+    }
+    v.property = read_water_property(f.member("water"), water);
+  } else {
+    v.property = read_property(f.member("property"), o, materials);
+  }
   v.distribution = read_distribution(f.member("distribution"));
   const Range valid = valid_range(v.property);
   const Field mean = f.member("mean");
@@ -163,8 +198,10 @@ RandomStrength read_variable(const Field& f, const std::vector<JointMaterial>& j
                                 ") to truncate it"}));
   }
   if (above > kLargestSilentTail) {
-    (max ? *max : f).fail(join({"a ", what, " reaches 90 degrees with probability ",
-                                format_number(above), ": give \"max\" (below 90) to truncate it"}));
+    const bool angle = v.property == StrengthProperty::FrictionAngle;
+    (max ? *max : f).fail(join({"a ", what, angle ? " reaches 90 degrees" : " exceeds 1",
+                                " with probability ", format_number(above), ": give \"max\" (",
+                                angle ? "below 90" : "at most 1", ") to truncate it"}));
   }
   v.min = std::max(lo, valid.lo);
   v.max = std::min(hi, valid.hi);
@@ -182,7 +219,7 @@ StrengthCorrelation read_correlation(const Field& f, const RandomStrengths& out,
                                      const std::vector<Material>& materials,
                                      std::vector<bool>& paired) {
   f.expect_keys({"joint_material", "material", "properties", "coefficient"});
-  const Owner o = read_owner(f, joints, materials);
+  const Owner o = read_owner(f, joints, materials, false);
   const Field props = f.member("properties");
   const char* two = "must name two properties, e.g. [\"cohesion\", \"friction_angle\"]";
   const std::vector<Field> names = props.elements(2, two);
@@ -217,11 +254,12 @@ StrengthCorrelation read_correlation(const Field& f, const RandomStrengths& out,
 }  // namespace
 
 RandomStrengths read_random_strengths(const Field& f, const std::vector<JointMaterial>& joints,
-                                      const std::vector<Material>& materials) {
+                                      const std::vector<Material>& materials,
+                                      const std::optional<WaterTable>& water) {
   f.expect_keys({"variables", "correlations"});
   RandomStrengths out;
   for (const Field& v : f.member("variables").elements(1, "list at least one variable")) {
-    RandomStrength r = read_variable(v, joints, materials);
+    RandomStrength r = read_variable(v, joints, materials, water);
     for (const RandomStrength& other : out.variables) {
       if (other.owner == r.owner && other.index == r.index && other.property == r.property) {
         v.fail(join({"draws ", input::quoted_text(r.name), "'s ", strength_property_name(r.property),

@@ -798,29 +798,48 @@ BoltSpec read_bolt(const Field& f, const std::vector<BlockSpec>& blocks,
   return bolt;
 }
 
-// The water table: a phreatic line of at least two points with x strictly increasing (it is
-// a function of x), and the water's unit weight. Its points are coordinates (bounded as the
-// vertices are), and the pressure it can put on a joint, unit weight x (the line's highest
-// point - the lowest vertex), is a stress (bounded as stresses are).
-WaterTable read_water(const Field& f, const std::vector<BlockSpec>& blocks) {
-  f.expect_keys({"phreatic_line", "unit_weight"});
-  WaterTable water;
-  const Field line = f.member("phreatic_line");
+// A water line: at least two points with x strictly increasing (it gives one water height per
+// x). Its points are coordinates, bounded as the vertices are.
+std::vector<Vec2> read_water_line(const Field& line, const char* what) {
+  std::vector<Vec2> out;
   const std::vector<Field> points = line.elements(2, "list at least two points [x, y]");
   for (std::size_t i = 0; i < points.size(); ++i) {
-    water.phreatic_line.push_back(
-        within_limit(points[i], points[i].vec2("[x, y]"), input::kLargestCoordinate, "m"));
-    if (i > 0 && !(water.phreatic_line[i].x() > water.phreatic_line[i - 1].x())) {
-      points[i].fail("x must increase along the phreatic line (it gives one water height per x), "
-                     "got " + input::format_number(water.phreatic_line[i].x()) + " after " +
-                     input::format_number(water.phreatic_line[i - 1].x()));
+    out.push_back(within_limit(points[i], points[i].vec2("[x, y]"), input::kLargestCoordinate, "m"));
+    if (i > 0 && !(out[i].x() > out[i - 1].x())) {
+      std::string why = "x must increase along the ";
+      why += what;
+      why += " (it gives one water height per x), got ";
+      why += input::format_number(out[i].x());
+      why += " after ";
+      why += input::format_number(out[i - 1].x());
+      points[i].fail(why);
     }
+  }
+  return out;
+}
+
+// The water table: a phreatic line, optionally a dry line and the share `fill` of the way
+// from it up to the phreatic line, and the water's unit weight. The pressure it can put on a
+// joint, unit weight x (the lines' highest point - the lowest vertex), is a stress (bounded
+// as stresses are).
+WaterTable read_water(const Field& f, const std::vector<BlockSpec>& blocks) {
+  f.expect_keys({"phreatic_line", "unit_weight", "dry_line", "fill"});
+  WaterTable water;
+  water.phreatic_line = read_water_line(f.member("phreatic_line"), "phreatic line");
+  if (auto dry = f.optional_member("dry_line")) water.dry_line = read_water_line(*dry, "dry line");
+  if (auto fill = f.optional_member("fill")) {
+    if (water.dry_line.empty()) {
+      fill->fail("needs \"dry_line\": the fill is the share of the way from the dry line up to "
+                 "the phreatic line");
+    }
+    water.fill = input::number_in_range(*fill, 0.0, false, 1.0, false, "in [0, 1]");
   }
   if (auto g = f.optional_member("unit_weight")) {
     water.unit_weight = within_limit(*g, positive_number(*g), input::kLargestUnitWeight, "N/m^3");
   }
   double top = -std::numeric_limits<double>::infinity();
   for (const Vec2& p : water.phreatic_line) top = std::max(top, p.y());
+  for (const Vec2& p : water.dry_line) top = std::max(top, p.y());
   double bottom = top;
   for (const BlockSpec& b : blocks) {
     for (const Vec2& v : b.vertices) bottom = std::min(bottom, v.y());
@@ -830,7 +849,7 @@ WaterTable read_water(const Field& f, const std::vector<BlockSpec>& blocks) {
     f.fail("the water pressure on the joints reaches up to " + format_number(pressure) +
            " Pa (unit weight " + format_number(water.unit_weight) + " N/m^3 x " +
            format_number(top - bottom) +
-           " m from the lowest vertex up to the phreatic line's highest point), beyond what "
+           " m from the lowest vertex up to the water lines' highest point), beyond what "
            "this program computes with: at most " + format_number(input::kLargestStress) +
            " Pa (see docs/scene-format.md, \"Limits\")");
   }
@@ -986,7 +1005,7 @@ Scene read_scene(const Field& root, const std::string& source) {
     check_staged_run_length(root.member("control"), scene.stages, scene.control);
   }
   if (auto random = root.optional_member("random_strengths")) {
-    scene.random_strengths = read_random_strengths(*random, scene.joint_materials, scene.materials);
+    scene.random_strengths = read_random_strengths(*random, scene.joint_materials, scene.materials, scene.water);
   }
   scene.warnings = unused_joint_material_warnings(scene, source);
   for (std::string& w : apex_without_return_warnings(scene, source)) scene.warnings.push_back(std::move(w));

@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <initializer_list>
 
 #include "contact/narrow_phase.hpp"
 #include "solver/world.hpp"
 
 namespace dda {
 
-double phreatic_height(const WaterTable& water, double x) {
-  const std::vector<Vec2>& p = water.phreatic_line;
+double polyline_height(const std::vector<Vec2>& p, double x) {
   assert(p.size() >= 2);
   if (x <= p.front().x()) return p.front().y();
   if (x >= p.back().x()) return p.back().y();
@@ -21,20 +21,29 @@ double phreatic_height(const WaterTable& water, double x) {
   return a.y() + (b.y() - a.y()) * (x - a.x()) / (b.x() - a.x());
 }
 
+double phreatic_height(const WaterTable& water, double x) {
+  const double full = polyline_height(water.phreatic_line, x);
+  if (water.dry_line.empty()) return full;
+  const double dry = polyline_height(water.dry_line, x);
+  return dry + water.fill * (full - dry);
+}
+
 SegmentPressure segment_pressure(const WaterTable& water, const Vec2& a, const Vec2& b) {
   const double length = (b - a).norm();
   SegmentPressure out;
   out.centre = 0.5 * (a + b);
   if (length == 0.0) return out;
   // Along the segment (parameter s in [0, 1]) the head h(x) - y is linear between the
-  // segment's crossings of the line's vertices' x: split there, then clip each piece where
+  // segment's crossings of the lines' vertices' x: split there, then clip each piece where
   // the head turns negative, and integrate the linear head exactly (force and moment).
   std::vector<double> cuts{0.0, 1.0};
   const double dx = b.x() - a.x();
   if (dx != 0.0) {
-    for (const Vec2& q : water.phreatic_line) {
-      const double s = (q.x() - a.x()) / dx;
-      if (s > 0.0 && s < 1.0) cuts.push_back(s);
+    for (const std::vector<Vec2>* line : {&water.phreatic_line, &water.dry_line}) {
+      for (const Vec2& q : *line) {
+        const double s = (q.x() - a.x()) / dx;
+        if (s > 0.0 && s < 1.0) cuts.push_back(s);
+      }
     }
   }
   std::sort(cuts.begin(), cuts.end());

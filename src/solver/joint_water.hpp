@@ -14,13 +14,22 @@ namespace dda {
 
 struct World;
 
-// The water table: a polyline with increasing x, extended flat beyond its ends.
+// The water table: a polyline with increasing x, extended flat beyond its ends. With a dry
+// line, the table lies the share `fill` of the way from it up to the phreatic line at every
+// x: a tension crack filled to a random depth (`dda fos --samples`) is one number between a
+// dry table and a full one.
 struct WaterTable {
   std::vector<Vec2> phreatic_line;  // at least 2 points, x strictly increasing
   double unit_weight = 9810.0;      // N/m^3 (1000 kg/m^3 x 9.81 m/s^2)
+  std::vector<Vec2> dry_line;       // empty, or at least 2 points, x strictly increasing
+  double fill = 1.0;                // [0, 1]; 1 without a dry line
 };
 
-// Height of the phreatic line at x (m).
+// Height at x of a polyline with increasing x, flat beyond its ends (m).
+double polyline_height(const std::vector<Vec2>& line, double x);
+
+// Height of the water table at x (m): the phreatic line's, or with a dry line
+// dry(x) + fill (phreatic(x) - dry(x)).
 double phreatic_height(const WaterTable& water, double x);
 
 // The pressure force on a segment a-b of a joint face: its size (N per metre, the integral of

@@ -51,6 +51,7 @@ void set_joint_property(JointMaterial& j, StrengthProperty p, double x) {
     case StrengthProperty::FrictionAngle: j.friction_angle = x; break;
     case StrengthProperty::Cohesion: j.cohesion = x; break;
     case StrengthProperty::TensileStrength: j.tensile_strength = x; break;
+    case StrengthProperty::WaterFill: break;  // the reader gives it the water only
   }
 }
 
@@ -67,6 +68,7 @@ void set_material_property(MaterialParameters& m, StrengthProperty p, double x) 
     case StrengthProperty::TensileStrength:
       if (auto* mc = std::get_if<MohrCoulombParameters>(&m.model_parameters)) mc->tensile_strength = x;
       break;
+    case StrengthProperty::WaterFill: break;  // the reader gives it the water only
   }
 }
 
@@ -163,6 +165,10 @@ World with_sampled_strengths(const World& consolidated,
     const auto k = static_cast<std::size_t>(v.index);
     if (v.owner == StrengthOwner::JointMaterial) {
       set_joint_property(joints[k], v.property, values[i]);
+    } else if (v.owner == StrengthOwner::Water) {
+      // The trial starts from the consolidation's state under the scene's own table and
+      // finds its balance (or fails) under the drawn one, as under reduced strengths.
+      if (w.water) w.water->fill = values[i];
     } else {
       set_material_property(w.materials[k].parameters, v.property, values[i]);
     }

@@ -56,7 +56,7 @@ std::vector<double> draw_sample(const RandomStrengths& spec, std::uint64_t seed,
 // `consolidated` (from consolidate()) with the scene's joint materials and the world's
 // materials taking the sample's values: the trials' joint laws (scene_joint_laws) rebuilt
 // from `scene_joints` with the drawn properties; a plastic material's cohesion, friction
-// angle (its dilation angle kept no larger) or tension cut-off set.
+// angle (its dilation angle kept no larger) or tension cut-off set; the water table's fill.
 World with_sampled_strengths(const World& consolidated,
                              const std::vector<JointMaterial>& scene_joints,
                              const RandomStrengths& spec, const std::vector<double>& values);

@@ -131,3 +131,80 @@ TEST_CASE("the water table is checked where it is read", "[water][input]") {
   CHECK_THROWS_WITH(parse_scene_text(scene(R"({"phreatic": [[0, 2], [1, 2]]})"), "s.json"),
                     Catch::Contains("water"));
 }
+
+TEST_CASE("a table filled a share of the way from its dry line presses as the line between",
+          "[water]") {
+  // Hoek & Bray's drained tension crack: the full line from the toe (0, 0) to the crack's top
+  // (10, 14), the dry one to its bottom (10, 0). Filled 0.5, the table is the straight line to
+  // (10, 7): the crack's face from (10, 0) up carries gamma zw^2 / 2 with zw = 7, and a base
+  // segment along y = 0 the triangle gamma 7 x / 10 integrated, as the explicit line does.
+  WaterTable table;
+  table.phreatic_line = {{0.0, 0.0}, {10.0, 14.0}};
+  table.dry_line = {{0.0, 0.0}, {10.0, 0.0}};
+  table.fill = 0.5;
+  table.unit_weight = 1e4;
+  WaterTable line;
+  line.phreatic_line = {{0.0, 0.0}, {10.0, 7.0}};
+  line.unit_weight = 1e4;
+  CHECK(phreatic_height(table, 4.0) == Approx(2.8).epsilon(1e-15));
+  CHECK(phreatic_height(table, 20.0) == Approx(7.0).epsilon(1e-15));  // flat beyond the ends
+  const SegmentPressure crack = segment_pressure(table, {10.0, 14.0}, {10.0, 0.0});
+  CHECK(crack.force == Approx(0.5 * 1e4 * 49.0).epsilon(1e-13));
+  const SegmentPressure base = segment_pressure(table, {0.0, 0.0}, {10.0, 0.0});
+  CHECK(base.force == Approx(segment_pressure(line, {0.0, 0.0}, {10.0, 0.0}).force).epsilon(1e-13));
+  CHECK(base.force == Approx(0.5 * 1e4 * 7.0 * 10.0).epsilon(1e-13));
+  // Dry lines with vertices of their own: the head is linear only between both lines'
+  // vertices, where the integral splits. A dry line kinked at x = 5 (down to y = -2) filled
+  // 0 is the dry line itself: a base along y = -0.5 has the head 0.5 - 2x/5 up to x = 5 and
+  // is wet only up to x = 1.25 (and from 8.75 on, alike); one along y = -3 carries the head
+  // 3 - 2x/5, 1 at the kink, 3 again at x = 10.
+  WaterTable kinked;
+  kinked.phreatic_line = {{0.0, 0.0}, {10.0, 0.0}};
+  kinked.dry_line = {{0.0, 0.0}, {5.0, -2.0}, {10.0, 0.0}};
+  kinked.fill = 0.0;
+  kinked.unit_weight = 1.0;
+  CHECK(segment_pressure(kinked, {0.0, -0.5}, {10.0, -0.5}).force ==
+        Approx(2.0 * (0.5 * 0.5 * 1.25)).epsilon(1e-13));  // two triangles, head 0.5 at the ends
+  CHECK(segment_pressure(kinked, {0.0, -3.0}, {10.0, -3.0}).force ==
+        Approx(10.0 * 3.0 - 0.5 * 10.0 * 2.0).epsilon(1e-13));  // 3 over 10 m less the dip's triangle
+}
+
+TEST_CASE("a dry line and a fill are checked where they are read", "[water][input]") {
+  const std::string blocks =
+      R"("control": {"time_step": 0.01, "steps": 1},
+         "materials": {"rock": {"model": "elastic", "density": 2500, "young": 1e9, "poisson": 0.25}},
+         "joint_materials": {"default": {"friction_angle": 30, "cohesion": 0, "tensile_strength": 0}},
+         "blocks": [{"vertices": [[0,0],[1,0],[1,1],[0,1]], "material": "rock"}])";
+  auto scene = [&](const std::string& water, const std::string& random = "") {
+    std::string text = "{" + blocks + ", \"water\": " + water;
+    if (!random.empty()) {
+      text += R"(, "random_strengths": {"variables": [)";
+      text += random;
+      text += "]}";
+    }
+    text += "}";
+    return text;
+  };
+  const std::string both = R"({"phreatic_line": [[0, 2], [5, 3]], "dry_line": [[0, 0], [5, 0]], "fill": 0.25})";
+  CHECK(parse_scene_text(scene(both), "s.json").water->fill == 0.25);
+  CHECK_THROWS_WITH(parse_scene_text(scene(R"({"phreatic_line": [[0, 2], [5, 3]], "fill": 0.5})"), "s.json"),
+                    Catch::Contains("s.json: water.fill: needs \"dry_line\""));
+  CHECK_THROWS_WITH(parse_scene_text(scene(R"({"phreatic_line": [[0, 2], [5, 3]], "dry_line": [[0, 0], [5, 0]], "fill": 1.5})"), "s.json"),
+                    Catch::Contains("water.fill"));
+  CHECK_THROWS_WITH(parse_scene_text(scene(R"({"phreatic_line": [[0, 2], [5, 3]], "dry_line": [[1, 0], [0, 0]]})"), "s.json"),
+                    Catch::Contains("water.dry_line[1]: x must increase along the dry line"));
+  const std::string fill = R"({"water": "fill", "distribution": "normal", "mean": 0.5, "standard_deviation": 0.1})";
+  const Scene drawn = parse_scene_text(scene(both, fill), "s.json");
+  REQUIRE(drawn.random_strengths.variables.size() == 1);
+  CHECK(drawn.random_strengths.variables[0].owner == StrengthOwner::Water);
+  CHECK(drawn.random_strengths.variables[0].max == 1.0);
+  CHECK_THROWS_WITH(parse_scene_text(scene(R"({"phreatic_line": [[0, 2], [5, 3]]})", fill), "s.json"),
+                    Catch::Contains("random_strengths.variables[0].water: the scene's \"water\" has no \"dry_line\""));
+  CHECK_THROWS_WITH(parse_scene_text(scene(both, R"({"water": "level", "distribution": "normal", "mean": 0.5, "standard_deviation": 0.1})"), "s.json"),
+                    Catch::Contains("unknown water property \"level\""));
+  // N(0.5, 0.3) reaches beyond 1 with probability 0.048: the bound must be given.
+  CHECK_THROWS_WITH(parse_scene_text(scene(both, R"({"water": "fill", "distribution": "normal", "mean": 0.5, "standard_deviation": 0.3, "min": 0})"), "s.json"),
+                    Catch::Contains("exceeds 1"));
+  CHECK_THROWS_WITH(parse_scene_text(scene(both, R"({"water": "fill", "property": "fill", "distribution": "normal", "mean": 0.5, "standard_deviation": 0.1})"), "s.json"),
+                    Catch::Contains("random_strengths.variables[0].property"));
+}
