@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -33,6 +34,30 @@ namespace {
 void warn_about(const Scene& scene) {
   const py::object warn = py::module_::import("warnings").attr("warn");
   for (const std::string& w : scene.warnings) warn(w, py::module_::import("builtins").attr("UserWarning"), 2);
+}
+
+// A Simulation works without the GIL: a second Python thread could call it while it runs.
+// One call at a time; the other is refused (a RuntimeError) rather than left to race.
+class OneCallAtATime {
+ public:
+  explicit OneCallAtATime(std::atomic<bool>& busy) : busy_(busy) {
+    if (busy_.exchange(true)) throw std::runtime_error("this Simulation is running in another thread");
+  }
+  ~OneCallAtATime() { busy_ = false; }
+  OneCallAtATime(const OneCallAtATime&) = delete;
+  OneCallAtATime& operator=(const OneCallAtATime&) = delete;
+
+ private:
+  std::atomic<bool>& busy_;
+};
+
+// A reader of the simulation's state, refused while another thread steps it.
+template <class Read>
+auto guarded(Read read) {
+  return [read](const Simulation& sim) {
+    const OneCallAtATime guard(sim.busy);
+    return read(sim);
+  };
 }
 
 std::unique_ptr<Simulation> make_simulation(const py::object& scene_object) {
@@ -289,6 +314,7 @@ PYBIND11_MODULE(dda, m) {
       .def(
           "step",
           [](Simulation& sim, int n) {
+            const OneCallAtATime guard(sim.busy);
             int made = 0;
             call_on_this_thread([&](const StopQuery& stop) { made = sim.step(n, stop); });
             return made;
@@ -297,6 +323,7 @@ PYBIND11_MODULE(dda, m) {
       .def(
           "run",
           [](Simulation& sim, std::optional<double> until) {
+            const OneCallAtATime guard(sim.busy);
             int made = 0;
             call_on_this_thread([&](const StopQuery& stop) { made = sim.run(until, stop); });
             return made;
@@ -304,8 +331,9 @@ PYBIND11_MODULE(dda, m) {
           py::arg("until") = py::none(),
           "Steps to time `until` (s; the first step at or past it) or to the scene's end; "
           "returns the steps made")
-      .def_property_readonly("time", [](const Simulation& sim) { return sim.world().time; }, "Simulated time (s)")
-      .def_property_readonly("step_count", [](const Simulation& sim) { return sim.world().step; },
+      .def_property_readonly("time", guarded([](const Simulation& sim) { return sim.world().time; }),
+                             "Simulated time (s)")
+      .def_property_readonly("step_count", guarded([](const Simulation& sim) { return sim.world().step; }),
                              "Completed steps")
       .def_property_readonly("finished", &Simulation::finished, "The scene's end reached")
       .def_property_readonly("block_count", [](const Simulation& sim) { return sim.world().blocks.size(); })
@@ -317,19 +345,23 @@ PYBIND11_MODULE(dda, m) {
             return names;
           },
           "The scene's material names, indexed by blocks()['material']")
-      .def("blocks", [](const Simulation& sim) { return block_arrays(sim.world()); },
+      .def("blocks", guarded([](const Simulation& sim) { return block_arrays(sim.world()); }),
            "The blocks' state as numpy arrays (docs/python.md)")
-      .def("block_vertices", [](const Simulation& sim, long i) { return block_vertices(sim.world(), i); },
+      .def("block_vertices",
+           [](const Simulation& sim, long i) {
+             const OneCallAtATime guard(sim.busy);
+             return block_vertices(sim.world(), i);
+           },
            py::arg("i"), "Block i's vertices now, (m, 2) in metres")
-      .def("contacts", [](const Simulation& sim) { return contact_arrays(sim.world()); },
+      .def("contacts", guarded([](const Simulation& sim) { return contact_arrays(sim.world()); }),
            "The contacts of the last step as numpy arrays")
-      .def("energy", [](const Simulation& sim) { return energy_terms(sim.world()); },
+      .def("energy", guarded([](const Simulation& sim) { return energy_terms(sim.world()); }),
            "The energy account's terms (J/m)")
-      .def("monitors", [](const Simulation& sim) { return monitor_arrays(sim.world()); },
+      .def("monitors", guarded([](const Simulation& sim) { return monitor_arrays(sim.world()); }),
            "The monitoring points: names, position, displacement, velocity")
-      .def("bolts", [](const Simulation& sim) { return bolt_arrays(sim.world()); },
+      .def("bolts", guarded([](const Simulation& sim) { return bolt_arrays(sim.world()); }),
            "The bolts: names, force, plastic extension, broken, length")
-      .def("stats", &stats_dict, "What the run has counted: steps, cut steps, solves, wall time")
+      .def("stats", guarded(&stats_dict), "What the run has counted: steps, cut steps, solves, wall time")
       .def("__repr__", [](const Simulation& sim) {
         return "<dda.Simulation of " + std::to_string(sim.world().blocks.size()) + " blocks at step " +
                std::to_string(sim.world().step) + ", t = " + std::string(py::str(py::float_(sim.world().time))) +

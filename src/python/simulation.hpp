@@ -4,6 +4,7 @@
 // the bindings (module.cpp) release the GIL around these calls.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -47,6 +48,9 @@ class Simulation {
   const World& world() const { return world_; }
   const RunStats& stats() const { return stats_; }
   double wall_time_s() const { return wall_time_s_; }
+
+  // Set while a call steps it (the bindings' guard against a second thread).
+  mutable std::atomic<bool> busy{false};
 
  private:
   // Runs steps until `reached` says so after one (or the scene ends, or `stop` asks).

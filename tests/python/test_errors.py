@@ -72,11 +72,21 @@ def test_bad_fos_settings_name_the_setting():
 
 def test_a_run_that_fails_raises_diverged_error():
     # The block's weight on its contact springs penetrates them about m g / p = 3e-7 m; an
-    # allowed penetration of 1e-12 m without augmentation rounds cannot be met by cutting
+    # allowed penetration of 1e-9 m without augmentation rounds cannot be met by cutting
     # the step, and the run stops as diverged (exit 3 on the command line).
     scene = scene_dict("incline")
-    scene["control"].update({"allowed_penetration": 1e-12, "max_augmentations": 0})
+    scene["control"].update({"allowed_penetration": 1e-9, "max_augmentations": 0})
     with pytest.raises(dda.DivergedError) as raised:
         dda.run(scene)
     assert isinstance(raised.value, RuntimeError)
-    assert str(raised.value).startswith("the run diverged at ")
+    assert str(raised.value).startswith("the run diverged at step ")
+    assert "allowed_penetration" in str(raised.value)
+    # The simulation keeps its last good step and refuses to go on.
+    sim = dda.Simulation(scene)
+    with pytest.raises(dda.DivergedError):
+        sim.run()
+    kept = sim.step_count
+    assert kept > 0
+    with pytest.raises(dda.DivergedError):
+        sim.step()
+    assert sim.step_count == kept

@@ -70,3 +70,31 @@ def test_ctrl_c_raises_keyboard_interrupt_at_once(call):
         step = int(words[words.index("step") + 1])
         assert step > 0 and "finished False" in out
         assert f"stepped to {step + 3}" in out
+
+
+def test_a_run_releases_the_gil_and_refuses_a_second_caller():
+    # A block at rest on the incline (friction 40 degrees > 30) for 20 000 steps, about
+    # half a second, in a thread: the main thread runs meanwhile (the GIL is released), and
+    # reading the simulation while it steps is refused rather than left to race.
+    import json
+    import threading
+    import dda
+    scene = json.load(open(SOURCE_DIR / "scenes" / "incline.json"))
+    scene["joint_materials"]["default"]["friction_angle"] = 40.0
+    scene["control"]["end_time"] = 40.0
+    sim = dda.Simulation(scene)
+    worker = threading.Thread(target=sim.run)
+    worker.start()
+    refused = False
+    while worker.is_alive() and not refused:
+        try:
+            sim.blocks()
+        except RuntimeError as e:
+            refused = "another thread" in str(e)
+        time.sleep(0.01)
+    worker.join()
+    assert refused
+    assert sim.finished and sim.step_count == 20000
+    # At rest on the plane: it has not moved beyond its contact springs' compliance
+    # (m g / p = 2700 x 0.5 x 9.81 / 5e10 = 2.6e-7 m).
+    assert abs(sim.blocks()["translation"][1]).max() < 1e-5
