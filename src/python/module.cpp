@@ -265,9 +265,11 @@ py::object cut(const py::object& model_object) {
   std::string text;
   call_on_worker([&](const StopQuery&) {
     // CGAL's arrangement has no place to stop: Ctrl-C is raised once the cut is done.
+    // The scene is a dict, whose file names (a base_motion record) are read relative to the
+    // current directory: named as for a scene file there.
     const CutModel blocks = cut_model(model.spec);
-    text = scene_text(cut_scene(model, blocks).scene);
-    read_back_cut_scene(text, "the cut of " + model.source, model.source);
+    text = scene_text(cut_scene(model, blocks, kSceneDictName).scene);
+    read_back_cut_scene(text, kSceneDictName, model.source);
   });
   return json_loads(text);
 }
