@@ -33,6 +33,11 @@ std::string json_text(const py::handle& value, const std::string& what) {
   }
 }
 
+void warn_about(const Scene& scene) {
+  const py::object warn = py::module_::import("warnings").attr("warn");
+  for (const std::string& w : scene.warnings) warn(w, py::module_::import("builtins").attr("UserWarning"), 2);
+}
+
 py::object json_loads(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }

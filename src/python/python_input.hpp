@@ -24,6 +24,10 @@ std::string json_text(const pybind11::handle& value, const std::string& what);
 Scene scene_from_python(const pybind11::handle& scene);
 Model model_from_python(const pybind11::handle& model);
 
+// Passes the scene's warnings (an unused joint material, ...) to Python's warnings, as
+// UserWarning.
+void warn_about(const Scene& scene);
+
 // Python's json.loads of a JSON text: a dict for an object.
 pybind11::object json_loads(const std::string& text);
 
