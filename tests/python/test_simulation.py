@@ -139,3 +139,19 @@ def test_block_vertices_and_index_errors():
     assert cx == pytest.approx(sim.blocks()["centroid"][1][0], abs=1e-12)
     with pytest.raises(IndexError):
         sim.block_vertices(2)
+
+
+def test_run_until_stops_at_the_first_step_past_it_and_goes_on_as_one_run():
+    scene = scene_dict("incline")
+    scene["control"]["end_time"] = 0.5
+    sim = dda.Simulation(scene)
+    assert sim.run(until=0.2001) == 101  # dt 2 ms: step 101 ends at 0.202 s, the first past
+    assert 0.2001 <= sim.time < 0.2001 + 0.002 and not sim.finished
+    assert sim.run(until=0.1) == 0  # already past it
+    sim.run()
+    whole = dda.run(scene)
+    assert sim.step_count == whole.step_count == 250
+    # The same steps whether stopped on the way or not, to the last bit.
+    for key in ("centroid", "velocity", "stress"):
+        assert (sim.blocks()[key] == whole.blocks()[key]).all(), key
+    assert sim.energy() == whole.energy()
