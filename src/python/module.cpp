@@ -7,7 +7,6 @@
 #include <pybind11/stl.h>
 
 #include <atomic>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,7 +20,6 @@
 #include "python/signal_watch.hpp"
 #include "python/simulation.hpp"
 #include "python/world_arrays.hpp"
-#include "solver/step.hpp"
 
 namespace py = pybind11;
 using namespace dda;
