@@ -9,6 +9,7 @@ pkgs=(
   libcgal-dev coinor-libclp-dev zlib1g-dev
   catch2 nlohmann-json3-dev libcli11-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib
+  python3-dev pybind11-dev python3-pybind11 python3-pytest
 )
 missing=()
 for p in "${pkgs[@]}"; do

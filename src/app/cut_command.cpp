@@ -15,7 +15,7 @@
 #include "io/text_file.hpp"
 #include "io/json_input.hpp"
 #include "io/model_reader.hpp"
-#include "io/scene_reader.hpp"
+#include "io/input_error.hpp"
 #include "kinematics/polygon.hpp"
 
 namespace dda {
@@ -163,28 +163,9 @@ int cut_command(const std::string& model_path, const std::string& out_path) {
   const std::string text = scene_text(scene.scene);
   exit_at_once_on_interrupt(nullptr);
   write_text_file(out_path, text);
-  // The scene is read back as `dda run` reads it. A cut whose blocks a scene cannot hold
-  // (e.g. a block too thin to have an area at the reader's tolerance) is the model's doing:
-  // an input error, with the scene left for inspection.
-  try {
-    const Scene check = parse_scene_text(text, out_path);
-    if (!check.warnings.empty()) throw InputError(check.warnings.front());
-  } catch (const InputError& e) {
-    // A key the model carries into the scene (a pin, a bolt, a phreatic line) that does not
-    // fit the cut's blocks is the model's error at the same place.
-    const std::string what = e.what();
-    const std::string prefix = out_path + ": ";
-    if (what.rfind(prefix, 0) == 0) {
-      const std::string place = what.substr(prefix.size());
-      for (std::string_view key : kKeysInBlocks) {
-        if (place.rfind(std::string(key), 0) == 0) {
-          throw InputError(model_path + ": " + place + " (on the blocks of the cut)");
-        }
-      }
-    }
-    throw InputError(model_path + ": the cut gives a scene that dda run does not accept as it "
-                     "is (" + what + "); a larger min_block_area may help");
-  }
+  // The scene is read back as `dda run` reads it: one it does not accept is the model's
+  // error (with the scene left for inspection).
+  read_back_cut_scene(text, out_path, model_path);
   print_statistics(model, cut, scene, out_path);
   if (!scene_is_file) {
     std::cerr << "dda: cut: no picture of the blocks: the scene went into " << out_path

@@ -9,6 +9,7 @@
 
 #include "io/input_error.hpp"
 #include "io/json_input.hpp"
+#include "io/scene_reader.hpp"
 #include "cutting/block_labels.hpp"
 #include "kinematics/polygon.hpp"
 
@@ -264,5 +265,27 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
 }
 
 std::string scene_text(const ordered_json& scene) { return layout(scene, "") + "\n"; }
+
+Scene read_back_cut_scene(const std::string& text, const std::string& scene_name,
+                          const std::string& model_source) {
+  try {
+    Scene scene = parse_scene_text(text, scene_name);
+    if (!scene.warnings.empty()) throw InputError(scene.warnings.front());
+    return scene;
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    const std::string prefix = scene_name + ": ";
+    if (what.rfind(prefix, 0) == 0) {
+      const std::string place = what.substr(prefix.size());
+      for (std::string_view key : kKeysInBlocks) {
+        if (place.rfind(std::string(key), 0) == 0) {
+          throw InputError(model_source + ": " + place + " (on the blocks of the cut)");
+        }
+      }
+    }
+    throw InputError(model_source + ": the cut gives a scene that dda run does not accept as it "
+                     "is (" + what + "); a larger min_block_area may help");
+  }
+}
 
 }  // namespace dda

@@ -10,6 +10,7 @@
 
 #include "cutting/model.hpp"
 #include "io/model_reader.hpp"
+#include "solver/scene.hpp"
 
 namespace dda {
 
@@ -37,5 +38,13 @@ CutScene cut_scene(const Model& model, const CutModel& cut, const std::string& s
 // The scene's text: objects indented by 2, one key a line; each block and each joint on
 // one line; numbers as the shortest text that reads back as the same double.
 std::string scene_text(const nlohmann::ordered_json& scene);
+
+// The cut's scene text read back as `dda run` reads it, `scene_name` naming it. A cut whose
+// blocks a scene cannot hold (a block too thin to have an area at the reader's tolerance),
+// or a key the model carries into the scene (a pin, a bolt, a phreatic line) that does not
+// fit the cut's blocks, is the model's doing: an InputError naming `model_source`, at the
+// key's place when there is one. A warning of the reader's is such an error too.
+Scene read_back_cut_scene(const std::string& text, const std::string& scene_name,
+                          const std::string& model_source);
 
 }  // namespace dda

@@ -361,15 +361,19 @@ void OutputWriter::record(const World& world) {
   }
 }
 
+Vec2 monitor_velocity(const World& world, const Monitor& monitor) {
+  const Block& b = world.blocks[static_cast<std::size_t>(monitor.block)];
+  if (b.fixed) return Vec2::Zero();
+  return shi_t().at(monitor.current - b.moments.centroid) * b.velocity;
+}
+
 // One row per monitor: where its material point is, how far it has moved since the start,
 // and its velocity, Shi's first-order T at the point times the block's velocity (u0, v0,
 // r0 and the strain rates, end of step; zero for a fixed block).
 void OutputWriter::record_monitors(const World& world) {
-  const LinearT t = shi_t();
   for (const Monitor& m : world.monitors) {
-    const Block& b = world.blocks[static_cast<std::size_t>(m.block)];
     const Vec2 u = m.current - m.initial;
-    const Vec2 v = b.fixed ? Vec2::Zero() : Vec2(t.at(m.current - b.moments.centroid) * b.velocity);
+    const Vec2 v = monitor_velocity(world, m);
     monitors_->append(std::to_string(world.step));
     monitors_->append(',');
     monitors_->append(num(world.time));

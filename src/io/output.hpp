@@ -15,6 +15,10 @@
 
 namespace dda {
 
+// A monitor's velocity (m/s): Shi's first-order T at the point times its block's velocity
+// (u0, v0, r0 and the strain rates, end of step); zero on a fixed block. monitors.csv's vx, vy.
+Vec2 monitor_velocity(const World& world, const Monitor& monitor);
+
 // A number as the CSV and VTK files write it: the shortest text that reads back as the same
 // double.
 std::string format_full_precision(double x);

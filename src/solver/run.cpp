@@ -8,11 +8,15 @@
 namespace dda {
 
 void run(World& world, const RunHook& hook, RunStats& stats) {
+  StepWorkspace ws;
+  run(world, ws, hook, stats);
+}
+
+void run(World& world, StepWorkspace& ws, const RunHook& hook, RunStats& stats) {
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  StepWorkspace ws;
   bool keep_going = !hook.at_start || hook.at_start(world, stats);
   while (keep_going) {
     // Stages (solver/stages.hpp): at the end of one the next takes over, and forms its bonds

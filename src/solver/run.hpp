@@ -26,9 +26,16 @@ struct RunHook {
   std::function<bool(const World&, const RunStats&)> after_step;
 };
 
+struct StepWorkspace;  // solver/step.hpp
+
 // Runs `world` to its end, a failed step or a hook's stop, counting into `stats` (which
 // keeps what the steps counted so far should a step throw).
 void run(World& world, const RunHook& hook, RunStats& stats);
+// The same with the step loop's workspace (its buffers, its factorisation's analysis, the
+// contact search's cache) given by the caller: a driver that runs a world a few steps at a
+// time (the Python module's Simulation.step) keeps it between calls, so that its steps are
+// those of one run. `stats.wall_time_s` is this call's.
+void run(World& world, StepWorkspace& ws, const RunHook& hook, RunStats& stats);
 RunStats run(World& world, const RunHook& hook);
 
 // Called with the world after each completed step (and once before the first step with

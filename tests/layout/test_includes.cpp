@@ -18,7 +18,8 @@ namespace {
 
 // Each room and the rooms it may include (besides itself): the order of the README's
 // "Layout" (common, what every room may use; kinematics, then materials, contact and
-// cutting, then solver, the studies that run it many times, io, app).
+// cutting, then solver, the studies that run it many times, io, then the two front ends
+// beside each other: app, the command line, and python, the Python module).
 const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"common", {}},
     {"kinematics", {"common"}},
@@ -29,6 +30,7 @@ const std::map<std::string, std::set<std::string>> kMayInclude = {
     {"studies", {"common", "kinematics", "materials", "contact", "solver"}},
     {"io", {"common", "kinematics", "materials", "contact", "cutting", "solver", "studies"}},
     {"app", {"common", "kinematics", "materials", "contact", "cutting", "solver", "studies", "io"}},
+    {"python", {"common", "kinematics", "materials", "contact", "cutting", "solver", "studies", "io"}},
 };
 
 struct Include {
