@@ -20,8 +20,8 @@ inline std::string checkpoint_scene(const std::string& dynamic_duration = "0.08"
               "linear_solver": "SOLVER"},
   "materials": {
     "soil": {"model": "mohr_coulomb", "density": 20.0, "young": 5.0e7, "poisson": 0.3,
-             "cohesion": 2.0e4, "friction_angle": 30.0, "dilation_angle": 30.0,
-             "hardening": [[0.0, 2.0e4], [0.01, 6.0e4]]},
+             "cohesion": 2.0e3, "friction_angle": 10.0, "dilation_angle": 10.0,
+             "hardening": [[0.0, 2.0e3], [0.01, 6.0e3]]},
     "weight": {"model": "elastic", "density": 20000.0, "young": 1.0e9, "poisson": 0.25},
     "rock": {"model": "elastic", "density": 2700.0, "young": 1.0e9, "poisson": 0.25}
   },
