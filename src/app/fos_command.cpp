@@ -187,8 +187,13 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     return interrupted_exit_code();
   }
   if (consolidating) {
-    write_file_whole(std::filesystem::path(out_dir) / kConsolidationCheckpointName,
-                     encode_consolidation(scene_text, scene, made_at, consolidation));
+    // An extra for later searches: one that cannot be written does not stop this one.
+    try {
+      write_file_whole(std::filesystem::path(out_dir) / kConsolidationCheckpointName,
+                       encode_consolidation(scene_text, scene, made_at, consolidation));
+    } catch (const std::exception& e) {
+      std::cerr << "dda: warning: the consolidation is not kept: " << e.what() << "\n";
+    }
   }
   std::cerr << "dda: the consolidation broke " << info.bonds_broken << " bonds"
             << settling_phrase(info.settling) << "\n";

@@ -185,7 +185,13 @@ int run_command(const std::string& scene_path, const std::string& out_dir,
   if (stats.interrupted || stats.diverged) {
     // Before the last state below is recorded: the checkpoint's output ends where the run
     // in one piece would have had it.
-    checkpoint_left = saved.at_stop(world, stats, writer.progress(), stats.diverged);
+    // A checkpoint that cannot be written costs the restart, not the results: said, and the
+    // summary is still written.
+    try {
+      checkpoint_left = saved.at_stop(world, stats, writer.progress(), stats.diverged);
+    } catch (const std::exception& e) {
+      std::cerr << "dda: warning: no checkpoint left: " << e.what() << "\n";
+    }
   }
   const bool last_recorded = world.step % every == 0 || dda::is_finished(world);
   if ((stats.diverged || stats.interrupted) && !last_recorded) writer.record(world);  // keep the last state
@@ -297,7 +303,8 @@ int main(int argc, char** argv) {
                   "Write the run's state to DIR/checkpoint.ddack every N steps (docs/checkpoint.md)")
       ->check(CLI::Range(1, std::numeric_limits<int>::max()));
   run->add_option("--restart", checkpoints.restart,
-                  "Continue the run stored in this checkpoint (no scene file with it)");
+                  "Continue the run stored in this checkpoint (no scene file with it; --out "
+                  "defaults to the checkpoint's directory)");
 
   std::string plot_run_dir;
   dda::PlotCommandOptions plot_options;
@@ -407,6 +414,11 @@ int main(int argc, char** argv) {
   }
 
   try {
+    // A restart without --out continues in the directory its checkpoint is in.
+    if (run->parsed() && !checkpoints.restart.empty() && run->get_option("--out")->count() == 0) {
+      const std::filesystem::path home = std::filesystem::path(checkpoints.restart).parent_path();
+      out_dir = home.empty() ? "." : home.string();
+    }
     if (run->parsed()) require_output_path(out_dir, "run");
     if (point->parsed()) require_output_path(csv_file, "material-point");
     if (fos_app->parsed()) require_output_path(fos_dir, "fos");

@@ -85,10 +85,9 @@ TEST_CASE("dda run split at a checkpoint and restarted leaves what the run in on
   CHECK(after.size() == 1 + 5 * 2);  // steps 24 and 26 recorded (output every 3, and the end)
   CHECK(dda::test::read_lines(fresh / "history.csv") == after);
   CHECK(summary_of(fresh) == summary_of(whole));
-  // Restarted into its own directory, which holds rows and frames up to step 26: cut back to
-  // step 21 and continued, it is the run in one piece.
-  REQUIRE(dda_run("--restart " + shell_quote(checkpoint.string()) + " --out " +
-                  shell_quote(split.string())).exit_code == 0);
+  // Restarted into its own directory (no --out: the checkpoint's), which holds rows and
+  // frames up to step 26: cut back to step 21 and continued, it is the run in one piece.
+  REQUIRE(dda_run("--restart " + shell_quote(checkpoint.string())).exit_code == 0);
   require_same_output(whole, split);
 }
 
