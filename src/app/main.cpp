@@ -154,8 +154,18 @@ int run_command(const std::string& scene_path, const std::string& out_dir,
     output.emplace(out_dir, scene);
   }
   dda::OutputWriter& writer = *output;
+  // The counts go on from the checkpoint's; how that run ended is not this one's. The run
+  // loop times this process's part: the earlier part's time is added to it.
+  dda::RunStats stats;
+  double earlier_wall_time = 0.0;
+  if (resumed) {
+    stats = resumed->stats;
+    stats.interrupted = stats.diverged = false;
+    stats.message.clear();
+    earlier_wall_time = stats.wall_time_s;
+  }
   dda::RunCheckpoints saved(std::filesystem::path(out_dir) / dda::kRunCheckpointName,
-                            checkpoints.every, scene_text, scene);
+                            checkpoints.every, scene_text, scene, earlier_wall_time);
   dda::ProgressBar progress(dda::run_length(scene), dda::run_unit(scene));
   const int every = scene.control.output_every;
   const auto observe = [&](const dda::World& w, const dda::RunStats& s) {
@@ -164,13 +174,6 @@ int run_command(const std::string& scene_path, const std::string& out_dir,
     progress.update(dda::run_position(scene, w));
     return dda::interrupt_signal() == 0;  // stop after this step, keeping what was written
   };
-  dda::RunStats stats;
-  if (resumed) {
-    // The counts go on from the checkpoint's; how that run ended is not this one's.
-    stats = resumed->stats;
-    stats.interrupted = stats.diverged = false;
-    stats.message.clear();
-  }
   // A restarted run's first state was recorded by the run it continues.
   const auto at_start = [&](const dda::World& w, const dda::RunStats& s) {
     return resumed ? dda::interrupt_signal() == 0 : observe(w, s);
@@ -195,6 +198,7 @@ int run_command(const std::string& scene_path, const std::string& out_dir,
   }
   const bool last_recorded = world.step % every == 0 || dda::is_finished(world);
   if ((stats.diverged || stats.interrupted) && !last_recorded) writer.record(world);  // keep the last state
+  stats.wall_time_s += earlier_wall_time;  // after the checkpoint, which adds it itself
   writer.finish(world, stats);
   if (stats.interrupted) {
     std::cerr << "dda: " << stats.message << " at t = " << world.time << " s; results up to there are in "

@@ -5,12 +5,24 @@
 namespace dda {
 
 RunCheckpoints::RunCheckpoints(std::filesystem::path file, int every, const std::string& scene_text,
-                               const Scene& scene)
-    : file_(std::move(file)), every_(every), scene_text_(scene_text), scene_(scene) {}
+                               const Scene& scene, double earlier_wall_time)
+    : file_(std::move(file)),
+      every_(every),
+      scene_text_(scene_text),
+      scene_(scene),
+      earlier_wall_time_(earlier_wall_time) {}
+
+std::string RunCheckpoints::encode(const World& world, const RunStats& stats,
+                                   const OutputProgress& output) const {
+  if (earlier_wall_time_ == 0.0) return encode_checkpoint({scene_text_, scene_, world, stats, output});
+  RunStats whole = stats;
+  whole.wall_time_s += earlier_wall_time_;
+  return encode_checkpoint({scene_text_, scene_, world, whole, output});
+}
 
 void RunCheckpoints::after_step(const World& world, const RunStats& stats, const OutputProgress& output) {
   if (every_ <= 0) return;
-  last_ = encode_checkpoint({scene_text_, scene_, world, stats, output});
+  last_ = encode(world, stats, output);
   last_step_ = world.step;
   if (world.step % every_ == 0) write_checkpoint_file(file_, last_);
 }
@@ -23,7 +35,7 @@ bool RunCheckpoints::at_stop(const World& world, const RunStats& stats, const Ou
     if (last_step_ == world.step && !last_.empty()) {
       write_checkpoint_file(file_, last_);
     } else {
-      write_checkpoint_file(file_, encode_checkpoint({scene_text_, scene_, world, stats, output}));
+      write_checkpoint_file(file_, encode(world, stats, output));
     }
     return true;
   }

@@ -14,8 +14,10 @@ namespace dda {
 class RunCheckpoints {
  public:
   // `every` 0: none on the way, and only an interrupted run leaves one.
+  // `earlier_wall_time`: the seconds the run had taken before this process (a restart's),
+  // added to the wall time stored.
   RunCheckpoints(std::filesystem::path file, int every, const std::string& scene_text,
-                 const Scene& scene);
+                 const Scene& scene, double earlier_wall_time);
 
   // After each completed step, once its output is recorded: keeps the step's state (when
   // checkpoints are taken on the way) and writes it every `every` steps.
@@ -36,6 +38,8 @@ class RunCheckpoints {
   int every_;
   const std::string& scene_text_;
   const Scene& scene_;
+  double earlier_wall_time_;
+  std::string encode(const World& world, const RunStats& stats, const OutputProgress& output) const;
   std::string last_;  // the encoded state of the last completed step (with `every` > 0)
   int last_step_ = -1;
 };

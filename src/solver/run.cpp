@@ -9,10 +9,8 @@ namespace dda {
 
 void run(World& world, const RunHook& hook, RunStats& stats) {
   const auto start = std::chrono::steady_clock::now();
-  // Counted on from `stats`: a run restarted from a checkpoint reports both parts' time.
-  const double before = stats.wall_time_s;
   auto elapsed = [&] {
-    return before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   StepWorkspace ws;
   bool keep_going = !hook.at_start || hook.at_start(world, stats);

@@ -27,8 +27,7 @@ struct RunHook {
 };
 
 // Runs `world` to its end, a failed step or a hook's stop, counting into `stats` (which
-// keeps what the steps counted so far should a step throw). The counts, the wall time
-// included, go on from what `stats` holds: a run continued from a checkpoint passes its.
+// keeps what the steps counted so far should a step throw).
 void run(World& world, const RunHook& hook, RunStats& stats);
 RunStats run(World& world, const RunHook& hook);
 
