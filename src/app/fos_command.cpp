@@ -10,8 +10,10 @@
 #include "app/progress.hpp"
 #include "common/printf_text.hpp"
 #include "io/bolt_force_report.hpp"
+#include "io/checkpoint.hpp"
 #include "io/fos_pictures.hpp"
 #include "io/fos_report.hpp"
+#include "io/json_input.hpp"
 #include "io/output_file.hpp"
 #include "io/scene_reader.hpp"
 #include "solver/energy.hpp"
@@ -104,7 +106,9 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
                      "--target-factor, --method limit-analysis, --dynamic-check and --spread do "
                      "not apply");
   }
-  const Scene scene = with_seismic_coefficient(read_scene_file(scene_path), settings.seismic_coefficient);
+  const std::string scene_text = input::read_input_file(scene_path, "a scene file");
+  const Scene scene = with_seismic_coefficient(parse_scene_text(scene_text, scene_path),
+                                               settings.seismic_coefficient);
   if (sampled && scene.random_strengths.variables.empty()) {
     throw InputError(scene_path + ": random_strengths: --samples draws the strengths this key "
                      "describes, and the scene has none (docs/scene-format.md)");
@@ -125,20 +129,32 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
                                      "last_stable.png", "first_failing.png", "trials.png",
                                      "limit_analysis_close.png", "last_stable_close.png",
-                                     "first_failing_close.png", "factors.png", "verdicts.png"});
+                                     "first_failing_close.png", "factors.png", "verdicts.png",
+                                     kConsolidationCheckpointName});
 
   // SIGINT or SIGTERM (watched from the start of main): the consolidation or the running
   // trials stop at their next step, and the report holds the trials judged so far (a second
   // signal ends the program at once).
   const auto interrupted = [] { return interrupt_signal() != 0; };
-  std::cerr << "dda: consolidating " << scene_path << " at F = " << settings.consolidation_factor << "\n";
-  ProgressBar progress(run_length(scene), run_unit(scene));
-  const Consolidation consolidation =
-      consolidate(scene, settings.consolidation_factor, [&](const World& w, const RunStats&) {
-        progress.update(run_position(scene, w));
-        return !interrupted();
-      });
-  progress.finish();
+  // The consolidation: made here (and kept in OUT/consolidated.ddack for a later dda fos of
+  // the same scene), or read from --consolidated (docs/checkpoint.md).
+  const ConsolidationSettings made_at{settings.consolidation_factor, settings.seismic_coefficient};
+  const bool consolidating = options.consolidated.empty();
+  const Consolidation consolidation = [&] {
+    if (!consolidating) {
+      std::cerr << "dda: the consolidation of " << scene_path << " from " << options.consolidated << "\n";
+      return read_consolidation(options.consolidated, scene_text, scene, made_at);
+    }
+    std::cerr << "dda: consolidating " << scene_path << " at F = " << settings.consolidation_factor << "\n";
+    ProgressBar progress(run_length(scene), run_unit(scene));
+    Consolidation made =
+        consolidate(scene, settings.consolidation_factor, [&](const World& w, const RunStats&) {
+          progress.update(run_position(scene, w));
+          return !interrupted();
+        });
+    progress.finish();
+    return made;
+  }();
   if (consolidation.stats.diverged) {
     std::cerr << "dda: error: the consolidation diverged at " << consolidation.stats.message
               << "; no trial was run\n";
@@ -169,6 +185,15 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     write_fos_report(out_dir, scene, settings, info, none, consolidation.stats.wall_time_s);
     std::cerr << "dda: " << none.message << "; report in " << out_dir << "\n";
     return interrupted_exit_code();
+  }
+  if (consolidating) {
+    // An extra for later searches: one that cannot be written does not stop this one.
+    try {
+      write_file_whole(std::filesystem::path(out_dir) / kConsolidationCheckpointName,
+                       encode_consolidation(scene_text, scene, made_at, consolidation));
+    } catch (const std::exception& e) {
+      std::cerr << "dda: warning: the consolidation is not kept: " << e.what() << "\n";
+    }
   }
   std::cerr << "dda: the consolidation broke " << info.bonds_broken << " bonds"
             << settling_phrase(info.settling) << "\n";

@@ -32,6 +32,9 @@ struct FosCommandOptions {
   long samples = 0;
   std::uint64_t seed = 0;
   double at_factor = 0.0;
+  // --consolidated FILE: the consolidation a dda fos of the same scene wrote
+  // (OUT/consolidated.ddack), read instead of consolidating again; empty: consolidate.
+  std::string consolidated;
 };
 
 int fos_command(const std::string& scene_path, const std::string& out_dir, FosSettings settings,

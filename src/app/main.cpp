@@ -10,7 +10,10 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
+#include <limits>
+#include <optional>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -21,6 +24,9 @@
 #include "app/fos_command.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
+#include "app/run_checkpoints.hpp"
+#include "io/checkpoint.hpp"
+#include "io/json_input.hpp"
 #include "io/material_point_output.hpp"
 #include "io/material_point_reader.hpp"
 #include "io/output.hpp"
@@ -101,50 +107,111 @@ int report_parse_error(const CLI::ParseError& e, const CLI::App& app, const char
   return kExitInputError;
 }
 
-dda::Scene load_scene(const std::string& path) {
+// The scene and the text it was read from (a checkpoint stores the text).
+dda::Scene load_scene(const std::string& path, std::string& text) {
   if (path.empty()) {
     std::cerr << "dda: no scene given; running the " << dda::kDefaultSceneName
               << " (a swinging pinned bar, and an octagon thrown onto a fixed floor; see scenes/default.json)\n";
-    return dda::parse_scene_text(dda::default_scene_text(), dda::kDefaultSceneName);
+    text = dda::default_scene_text();
+    return dda::parse_scene_text(text, dda::kDefaultSceneName);
   }
-  return dda::read_scene_file(path);
+  text = dda::input::read_input_file(path, "a scene file");
+  return dda::parse_scene_text(text, path);
 }
+
+// dda run's checkpoint options: --checkpoint-every N (0: none on the way) and --restart FILE.
+struct CheckpointOptions {
+  int every = 0;
+  std::string restart;
+};
 
 // `vtk_format`: "binary" or "ascii" from --vtk-format, or empty for the scene's own;
 // `pictures`: draw the run's pictures into OUT/plot at the end.
 int run_command(const std::string& scene_path, const std::string& out_dir,
-                const std::string& vtk_format, bool pictures) {
-  dda::Scene scene = load_scene(scene_path);
-  if (!vtk_format.empty()) scene.control.vtk_binary = vtk_format == "binary";
-  for (const std::string& warning : scene.warnings) {
-    std::cerr << "dda: warning: " << warning << "\n";
+                const std::string& vtk_format, bool pictures, const CheckpointOptions& checkpoints) {
+  std::string scene_text;
+  std::optional<dda::Checkpoint> resumed;
+  if (!checkpoints.restart.empty()) {
+    if (!scene_path.empty()) {
+      throw dda::InputError("run: --restart continues the scene stored in " + checkpoints.restart +
+                            "; give no scene file with it");
+    }
+    resumed.emplace(dda::read_checkpoint(checkpoints.restart));
+    scene_text = resumed->scene_text;
   }
-  dda::World world = dda::make_world(scene);
-  dda::OutputWriter writer(out_dir, scene);
+  dda::Scene scene = resumed ? resumed->scene : load_scene(scene_path, scene_text);
+  if (!vtk_format.empty()) scene.control.vtk_binary = vtk_format == "binary";
+  if (!resumed) {
+    for (const std::string& warning : scene.warnings) {
+      std::cerr << "dda: warning: " << warning << "\n";
+    }
+  }
+  dda::World world = resumed ? std::move(resumed->world) : dda::make_world(scene);
+  std::optional<dda::OutputWriter> output;
+  if (resumed) {
+    output.emplace(out_dir, scene, resumed->output);
+  } else {
+    output.emplace(out_dir, scene);
+  }
+  dda::OutputWriter& writer = *output;
+  // The counts go on from the checkpoint's; how that run ended is not this one's. The run
+  // loop times this process's part: the earlier part's time is added to it.
+  dda::RunStats stats;
+  double earlier_wall_time = 0.0;
+  if (resumed) {
+    stats = resumed->stats;
+    stats.interrupted = stats.diverged = false;
+    stats.message.clear();
+    earlier_wall_time = stats.wall_time_s;
+  }
+  dda::RunCheckpoints saved(std::filesystem::path(out_dir) / dda::kRunCheckpointName,
+                            checkpoints.every, scene_text, scene, earlier_wall_time);
   dda::ProgressBar progress(dda::run_length(scene), dda::run_unit(scene));
   const int every = scene.control.output_every;
-  const auto observe = [&](const dda::World& w, const dda::RunStats&) {
+  const auto observe = [&](const dda::World& w, const dda::RunStats& s) {
     if (w.step % every == 0 || dda::is_finished(w)) writer.record(w);
+    if (w.step > 0) saved.after_step(w, s, writer.progress());
     progress.update(dda::run_position(scene, w));
     return dda::interrupt_signal() == 0;  // stop after this step, keeping what was written
   };
-  dda::RunStats stats = dda::run(world, observe);
+  // A restarted run's first state was recorded by the run it continues.
+  const auto at_start = [&](const dda::World& w, const dda::RunStats& s) {
+    return resumed ? dda::interrupt_signal() == 0 : observe(w, s);
+  };
+  dda::run(world, dda::RunHook{at_start, {}, observe}, stats);
   progress.finish();
   if (stats.interrupted) {
     stats.message = "interrupted (signal " + std::to_string(dda::interrupt_signal()) +
                     ") after step " + std::to_string(world.step);
   }
+  bool checkpoint_left = false;
+  if (stats.interrupted || stats.diverged) {
+    // Before the last state below is recorded: the checkpoint's output ends where the run
+    // in one piece would have had it.
+    // A checkpoint that cannot be written costs the restart, not the results: said, and the
+    // summary is still written.
+    try {
+      checkpoint_left = saved.at_stop(world, stats, writer.progress(), stats.diverged);
+    } catch (const std::exception& e) {
+      std::cerr << "dda: warning: no checkpoint left: " << e.what() << "\n";
+    }
+  }
   const bool last_recorded = world.step % every == 0 || dda::is_finished(world);
   if ((stats.diverged || stats.interrupted) && !last_recorded) writer.record(world);  // keep the last state
+  stats.wall_time_s += earlier_wall_time;  // after the checkpoint, which adds it itself
   writer.finish(world, stats);
   if (stats.interrupted) {
     std::cerr << "dda: " << stats.message << " at t = " << world.time << " s; results up to there are in "
-              << out_dir << " (summary.json: \"interrupted\": true)\n";
+              << out_dir << " (summary.json: \"interrupted\": true)";
+    if (checkpoint_left) std::cerr << "; continue with dda run --restart " << saved.file().string();
+    std::cerr << "\n";
     return dda::interrupted_exit_code();
   }
   if (stats.diverged) {
     std::cerr << "dda: error: the run diverged at " << stats.message
-              << "; results up to there are in " << out_dir << "\n";
+              << "; results up to there are in " << out_dir;
+    if (checkpoint_left) std::cerr << " (the last completed step's state in " << saved.file().string() << ")";
+    std::cerr << "\n";
     return kExitDiverged;
   }
   std::cerr << "dda: " << stats.steps << " steps (" << stats.cut_steps << " cut) in "
@@ -235,6 +302,13 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"binary", "ascii"}));
   bool no_picture = false;
   run->add_flag("--no-picture", no_picture, "Draw no pictures into DIR/plot at the end (dda plot draws them later)");
+  CheckpointOptions checkpoints;
+  run->add_option("--checkpoint-every", checkpoints.every,
+                  "Write the run's state to DIR/checkpoint.ddack every N steps (docs/checkpoint.md)")
+      ->check(CLI::Range(1, std::numeric_limits<int>::max()));
+  run->add_option("--restart", checkpoints.restart,
+                  "Continue the run stored in this checkpoint (no scene file with it; --out "
+                  "defaults to the checkpoint's directory)");
 
   std::string plot_run_dir;
   dda::PlotCommandOptions plot_options;
@@ -320,6 +394,9 @@ int main(int argc, char** argv) {
                       "With --samples: one trial per sample at this F (e.g. 1: the probability "
                       "of failure) instead of each sample's search")
       ->check(finite_range(1e-3, 1e3));
+  fos_app->add_option("--consolidated", fos_options.consolidated,
+                      "Start from the consolidation an earlier dda fos of this scene wrote "
+                      "(its OUT/consolidated.ddack) instead of consolidating again");
   fos_app->add_option("--seismic-coefficient", fos.seismic_coefficient,
                       "Pseudo-static horizontal body force, as a share of the weight, along +x "
                       "(negative: along -x)")->capture_default_str()
@@ -341,11 +418,16 @@ int main(int argc, char** argv) {
   }
 
   try {
+    // A restart without --out continues in the directory its checkpoint is in.
+    if (run->parsed() && !checkpoints.restart.empty() && run->get_option("--out")->count() == 0) {
+      const std::filesystem::path home = std::filesystem::path(checkpoints.restart).parent_path();
+      out_dir = home.empty() ? "." : home.string();
+    }
     if (run->parsed()) require_output_path(out_dir, "run");
     if (point->parsed()) require_output_path(csv_file, "material-point");
     if (fos_app->parsed()) require_output_path(fos_dir, "fos");
     if (cut->parsed()) require_output_path(scene_out, "cut");
-    if (run->parsed()) return run_command(scene_path, out_dir, vtk_format, !no_picture);
+    if (run->parsed()) return run_command(scene_path, out_dir, vtk_format, !no_picture, checkpoints);
     if (plot->parsed()) {
       if (exaggeration_option->count() > 0) plot_options.plot.exaggeration = plot_exaggeration;
       return dda::plot_command(plot_run_dir, plot_options);

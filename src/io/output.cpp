@@ -12,6 +12,7 @@
 
 #include "io/bolt_output.hpp"
 #include "io/contact_output.hpp"
+#include "io/input_error.hpp"
 #include "io/text_file.hpp"
 #include "kinematics/block_matrices.hpp"
 #include "solver/energy.hpp"
@@ -303,6 +304,86 @@ OutputWriter::OutputWriter(std::filesystem::path dir, const Scene& scene)
     monitors_.emplace(dir_ / "monitors.csv", std::string(kMonitorsHeader) + "\n");
   }
   if (!scene.bolts.empty()) bolts_.emplace(dir_ / "bolts.csv", std::string(kBoltsHeader) + "\n");
+}
+
+namespace {
+
+// The run's frame files in dir/vtk that `keep` does not list: a restarted run's directory
+// loses the frames written after its checkpoint's step.
+void remove_frames_not_in(const fs::path& dir, const OutputProgress& keep) {
+  std::vector<std::string> listed;
+  for (const OutputProgress::Frames* frames : {&keep.frames, &keep.contact_frames, &keep.bolt_frames}) {
+    for (const auto& frame : *frames) listed.push_back(fs::path(frame.second).filename().string());
+  }
+  std::error_code ec;
+  std::vector<fs::path> gone;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir / "vtk", ec)) {
+    const std::string name = entry.path().filename().string();
+    const bool frame = (name.rfind("step_", 0) == 0 || name.rfind("contacts_", 0) == 0 ||
+                        name.rfind("bolts_", 0) == 0) &&
+                       entry.path().extension() == ".vtp";
+    if (frame && std::find(listed.begin(), listed.end(), name) == listed.end()) {
+      gone.push_back(entry.path());
+    }
+  }
+  for (const fs::path& path : gone) {
+    fs::remove(path, ec);
+    if (ec) fail("cannot remove a frame written after the checkpoint (" + ec.message() + ")", path);
+  }
+}
+
+}  // namespace
+
+OutputWriter::OutputWriter(std::filesystem::path dir, const Scene& scene, const OutputProgress& from)
+    : dir_(std::move(dir)), scene_(scene) {
+  const fs::path history = dir_ / "history.csv";
+  std::error_code ec;
+  if (!fs::exists(history, ec)) {
+    // Another directory: the continuation alone, from fresh files.
+    fs::create_directories(dir_, ec);
+    if (ec) fail("cannot create directory (" + ec.message() + ")", dir_);
+    remove_earlier_run(dir_);
+    fs::create_directories(dir_ / "vtk", ec);
+    if (ec) fail("cannot create directory (" + ec.message() + ")", dir_ / "vtk");
+    history_.emplace(history, std::string(kHistoryHeader) + "\n");
+    if (!scene.monitors.empty()) {
+      monitors_.emplace(dir_ / "monitors.csv", std::string(kMonitorsHeader) + "\n");
+    }
+    if (!scene.bolts.empty()) bolts_.emplace(dir_ / "bolts.csv", std::string(kBoltsHeader) + "\n");
+    return;
+  }
+  // The run's own directory: every streamed file must be the one the checkpoint counted.
+  const auto check = [&](const fs::path& path, const StreamProgress& at) {
+    if (!file_begins_with(path, at)) {
+      throw InputError(path.string() +
+                       ": not the file of the run this checkpoint continues (it does not begin "
+                       "with the rows the checkpoint counted); restart into that run's own "
+                       "directory or into one without a history.csv");
+    }
+  };
+  check(history, from.history);
+  if (!scene.monitors.empty()) check(dir_ / "monitors.csv", from.monitors);
+  if (!scene.bolts.empty()) check(dir_ / "bolts.csv", from.bolts);
+  fs::create_directories(dir_ / "vtk", ec);
+  if (ec) fail("cannot create directory (" + ec.message() + ")", dir_ / "vtk");
+  remove_frames_not_in(dir_, from);
+  history_.emplace(history, from.history);
+  if (!scene.monitors.empty()) monitors_.emplace(dir_ / "monitors.csv", from.monitors);
+  if (!scene.bolts.empty()) bolts_.emplace(dir_ / "bolts.csv", from.bolts);
+  frames_ = from.frames;
+  contact_frames_ = from.contact_frames;
+  bolt_frames_ = from.bolt_frames;
+}
+
+OutputProgress OutputWriter::progress() const {
+  OutputProgress p;
+  p.frames = frames_;
+  p.contact_frames = contact_frames_;
+  p.bolt_frames = bolt_frames_;
+  p.history = history_->progress();
+  if (monitors_) p.monitors = monitors_->progress();
+  if (bolts_) p.bolts = bolts_->progress();
+  return p;
 }
 
 void OutputWriter::record(const World& world) {

@@ -31,6 +31,15 @@ VtkPolyData blocks_piece(const World& world);
 // A series' frame file name: "vtk/PREFIX_000120.vtp" for step 120.
 std::string vtk_frame_name(const char* prefix, int step);
 
+// Where a run's output files stood after a step (a checkpoint keeps it): the frames indexed
+// so far and the whole rows of each streamed CSV file, so that a restarted run continues
+// them (docs/checkpoint.md, "Output of a restarted run").
+struct OutputProgress {
+  using Frames = std::vector<std::pair<double, std::string>>;  // (time, relative file name)
+  Frames frames, contact_frames, bolt_frames;
+  StreamProgress history, monitors, bolts;
+};
+
 class OutputWriter {
  public:
   // Creates `dir` (and dir/vtk) if needed, removes an earlier run's files and opens
@@ -38,6 +47,17 @@ class OutputWriter {
   // when one of the run's file names holds something other than a regular file (then
   // before anything is removed or written).
   OutputWriter(std::filesystem::path dir, const Scene& scene);
+
+  // A restarted run's writer. When `dir` holds the files the checkpoint's run had written
+  // (history.csv, monitors.csv and bolts.csv begin with the bytes `from` describes), they are
+  // cut back to the checkpoint's step, the frames written after it removed, and the run's
+  // files continue there; when `dir` has no history.csv, it starts afresh and holds the
+  // continuation only. Throws InputError naming the file when `dir` holds another run's
+  // history.
+  OutputWriter(std::filesystem::path dir, const Scene& scene, const OutputProgress& from);
+
+  // What has been written so far (for a checkpoint).
+  OutputProgress progress() const;
 
   // Appends one history row per block for the world's current step and writes a VTK frame.
   // A write that fails throws naming the file; history.csv and monitors.csv then end with

@@ -4,8 +4,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -131,6 +133,38 @@ StreamedFile::StreamedFile(fs::path path, std::string_view header) : path_(std::
     fail(path_, reason(err), regular_ ? "; no file was left under that name" : "");
   }
   committed_ = static_cast<long long>(header.size());
+  digest_ = continue_digest(kDigestStart, header);
+}
+
+StreamedFile::StreamedFile(fs::path path, const StreamProgress& at) : path_(std::move(path)) {
+  regular_ = true;
+  fd_ = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd_ < 0) fail(path_, "cannot open it: " + reason(errno), "");
+  const auto length = static_cast<off_t>(at.bytes);
+  if (::ftruncate(fd_, length) != 0 || ::lseek(fd_, length, SEEK_SET) < 0) {
+    const int err = errno;
+    ::close(fd_);
+    fd_ = -1;
+    fail(path_, "cannot cut it back to the checkpoint's step: " + reason(err), "");
+  }
+  committed_ = static_cast<long long>(at.bytes);
+  digest_ = at.digest;
+}
+
+bool file_begins_with(const fs::path& path, const StreamProgress& progress) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::uint64_t digest = kDigestStart;
+  std::uint64_t left = progress.bytes;
+  std::string buffer(1 << 16, '\0');
+  while (left > 0) {
+    const auto want = static_cast<std::streamsize>(std::min<std::uint64_t>(left, buffer.size()));
+    in.read(buffer.data(), want);
+    if (in.gcount() != want) return false;  // shorter than the checkpoint's
+    digest = continue_digest(digest, std::string_view(buffer.data(), static_cast<std::size_t>(want)));
+    left -= static_cast<std::uint64_t>(want);
+  }
+  return digest == progress.digest;
 }
 
 StreamedFile::~StreamedFile() {
@@ -142,6 +176,7 @@ void StreamedFile::commit() {
   const int err = write_all(fd_, pending_);
   if (err == 0) {
     committed_ += static_cast<long long>(pending_.size());
+    digest_ = continue_digest(digest_, pending_);
     pending_.clear();
     return;
   }

@@ -7,6 +7,7 @@
 // error here rather than the end of the program).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <initializer_list>
 #include <string>
@@ -38,6 +39,27 @@ void write_file_whole(const std::filesystem::path& path, std::string_view bytes)
 void prepare_output_directory(const std::filesystem::path& dir,
                               std::initializer_list<const char*> names);
 
+// FNV-1a, 64 bits: a digest of bytes, continued over pieces (`digest` the pieces' so far,
+// kDigestStart for none). What a checkpoint checks a streamed file and its own payload by:
+// it tells a file cut short or another run's file from the one it was, not a forgery.
+inline constexpr std::uint64_t kDigestStart = 14695981039346656037ull;
+inline std::uint64_t continue_digest(std::uint64_t digest, std::string_view bytes) {
+  for (const char c : bytes) {
+    digest ^= static_cast<unsigned char>(c);
+    digest *= 1099511628211ull;
+  }
+  return digest;
+}
+
+// How far a streamed file had been written: its bytes of whole records and their digest.
+struct StreamProgress {
+  std::uint64_t bytes = 0;
+  std::uint64_t digest = kDigestStart;
+};
+
+// Whether the file at `path` begins with the bytes `progress` describes.
+bool file_begins_with(const std::filesystem::path& path, const StreamProgress& progress);
+
 // A file written as a run goes, in records of whole rows: append() gathers a record,
 // commit() writes it. A commit that fails (full disk, file-size limit) cuts the file back
 // to the end of the last record written and throws std::runtime_error naming the file and
@@ -47,6 +69,9 @@ class StreamedFile {
   // Creates (or empties) `path` and writes `header` (a whole line) as the first record. A
   // header that cannot be written leaves no file behind. Throws naming the path.
   StreamedFile(std::filesystem::path path, std::string_view header);
+  // Continues the regular file `path` (a restarted run's), cut back to `at`, which the caller
+  // has checked it begins with (file_begins_with). Throws naming the path.
+  StreamedFile(std::filesystem::path path, const StreamProgress& at);
   ~StreamedFile();
   StreamedFile(const StreamedFile&) = delete;
   StreamedFile& operator=(const StreamedFile&) = delete;
@@ -55,12 +80,15 @@ class StreamedFile {
   void append(char c) { pending_ += c; }
   void commit();
   const std::filesystem::path& path() const { return path_; }
+  // The whole records written so far.
+  StreamProgress progress() const { return {static_cast<std::uint64_t>(committed_), digest_}; }
 
  private:
   std::filesystem::path path_;
   int fd_ = -1;
   bool regular_ = false;
   long long committed_ = 0;  // bytes of whole records in the file
+  std::uint64_t digest_ = kDigestStart;  // of those bytes
   std::string pending_;
 };
 
