@@ -35,11 +35,12 @@ int fos_samples_command(const Scene& scene, const std::string& out_dir, const Wo
             << " s, failing beyond " << settings.failure_displacement << " m\n";
   const auto start = std::chrono::steady_clock::now();
   long finished = 0;
+  const long here = (p.samples - p.share + p.shares - 1) / p.shares;  // this rank's share
   ProbabilisticResult result = run_probabilistic(
       consolidated, scene.joint_materials, scene.random_strengths, settings, p,
       [&](const SampleOutcome& o) {
         ++finished;
-        std::cerr << "dda: sample " << o.index << " (" << finished << "/" << p.samples << "): "
+        std::cerr << "dda: sample " << o.index << " (" << finished << "/" << here << "): "
                   << (o.failing ? "failing" : "stable");
         if (p.at_factor <= 0.0) {
           std::cerr << ", F = ";

@@ -42,15 +42,16 @@ std::string result_cells(const fs::path& report_path) {
   std::string row = number_cell(report, "factor_of_safety");
   const auto bracket = report.find("bracket");
   if (bracket != report.end() && bracket->is_array() && bracket->size() == 2) {
-    row += "," + input::format_number((*bracket)[0].get<double>()) + "," +
-           input::format_number((*bracket)[1].get<double>());
+    row.append(",").append(input::format_number((*bracket)[0].get<double>()));
+    row.append(",").append(input::format_number((*bracket)[1].get<double>()));
   } else {
     row += ",,";
   }
   const auto p = report.find("probabilistic");
   row += ",";
   if (p != report.end()) {
-    row += number_cell(*p, "probability_of_failure") + "," + number_cell(*p, "samples_judged");
+    row.append(number_cell(*p, "probability_of_failure")).append(",");
+    row.append(number_cell(*p, "samples_judged"));
   } else {
     row += ",";
   }
@@ -105,7 +106,7 @@ int sweep_command(const std::string& sweep_path, const std::string& out_dir) {
   std::string rows;
   for (std::size_t v = me; v < spec.variants.size(); v += ranks) {
     std::string row = variant_name(v);
-    for (const nlohmann::json& value : spec.variants[v]) row += "," + cell(value);
+    for (const nlohmann::json& value : spec.variants[v]) row.append(",").append(cell(value));
     const fs::path dir = fs::path(out_dir) / variant_name(v);
     int code = interrupted_exit_code();
     const bool started = interrupt_signal() == 0;  // after a signal the rest are not run
@@ -124,8 +125,10 @@ int sweep_command(const std::string& sweep_path, const std::string& out_dir) {
         code = 1;
       }
     }
-    row += "," + std::to_string(code) + "," + (started ? status_of(code) : "not run") + "," +
-           (started ? result_cells(dir / "report.json") : std::string(",,,,")) + "\n";
+    row.append(",").append(std::to_string(code));
+    row.append(",").append(started ? status_of(code) : "not run");
+    row.append(",").append(started ? result_cells(dir / "report.json") : std::string(",,,,"));
+    row.append("\n");
     rows += row;
   }
   const std::vector<std::string> all = gather_to_root(rows);
@@ -141,7 +144,7 @@ int sweep_command(const std::string& sweep_path, const std::string& out_dir) {
     }
   }
   std::string csv = "variant";
-  for (const std::string& p : spec.pointers) csv += "," + cell(p);
+  for (const std::string& p : spec.pointers) csv.append(",").append(cell(p));
   csv += ",exit_code,status,factor_of_safety,last_stable,first_failing,probability_of_failure,"
          "samples_judged\n";
   for (std::size_t v = 0; v < spec.variants.size(); ++v) {
