@@ -126,10 +126,12 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   if (!any_free) throw InputError(scene_path + ": blocks: every block is fixed; nothing can fail");
   // The output directory before any work: a search of hours whose report cannot be written
   // fails now, not at its end. Rank 0 alone writes (app/ranks.hpp).
-  if (is_root_rank()) prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
-                                     "last_stable.png", "first_failing.png", "trials.png",
-                                     "limit_analysis_close.png", "last_stable_close.png",
-                                     "first_failing_close.png", "factors.png", "verdicts.png"});
+  if (is_root_rank()) {
+    prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
+                                       "last_stable.png", "first_failing.png", "trials.png",
+                                       "limit_analysis_close.png", "last_stable_close.png",
+                                       "first_failing_close.png", "factors.png", "verdicts.png"});
+  }
 
   // SIGINT or SIGTERM (watched from the start of main): the consolidation or the running
   // trials stop at their next step, and the report holds the trials judged so far (a second
@@ -164,8 +166,11 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   settings = resolve_fos_settings(world, settings, consolidation.settling.relaxation_steps);
   // Under mpirun the search's rounds are --jobs trials per rank wide: the report gives that
   // width, which a run on one process with --jobs that wide matches trial for trial.
-  FosSettings reported_settings = settings;
-  reported_settings.jobs = settings.jobs * rank_count();
+  const auto reported_settings = [&settings] {
+    FosSettings r = settings;
+    r.jobs = settings.jobs * rank_count();
+    return r;
+  };
   const auto stop_message = [&](const std::string& when) {
     return "interrupted (signal " + std::to_string(interrupt_signal()) + ") " + when;
   };
@@ -175,7 +180,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     none.message = stop_message("during the consolidation, at t = " + printf_text(world.time, "%g") +
                                 " s; no trial was run");
     if (is_root_rank()) {
-      write_fos_report(out_dir, scene, reported_settings, info, none, consolidation.stats.wall_time_s);
+      write_fos_report(out_dir, scene, reported_settings(), info, none, consolidation.stats.wall_time_s);
     }
     std::cerr << "dda: " << none.message << "; report in " << out_dir << "\n";
     return interrupted_exit_code();
@@ -238,7 +243,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
             << settings.failure_displacement << " m, " << settings.jobs << " at once";
   if (rank_count() > 1) {
     std::cerr << " on each of " << rank_count() << " ranks (rounds of "
-              << reported_settings.jobs << ")";
+              << reported_settings().jobs << ")";
   }
   std::cerr
             << (settings.jobs > 1 && blas_calls_serialised()
@@ -275,7 +280,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   if (result.interrupted) {
     FosResult kept = result;
     kept.message = stop_message(result.message);
-    write_fos_report(out_dir, scene, reported_settings, info, kept, wall, &limit);
+    write_fos_report(out_dir, scene, reported_settings(), info, kept, wall, &limit);
     std::cerr << "dda: " << kept.message << "; report of the trials so far in " << out_dir
               << " (report.json: \"interrupted\": true)\n";
     return interrupted_exit_code();
@@ -340,7 +345,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     }
     std::cerr << "dda: " << (spread->within ? "" : "note: ") << spread->text << "\n";
   }
-  write_fos_report(out_dir, scene, reported_settings, info, reported, wall, &limit,
+  write_fos_report(out_dir, scene, reported_settings(), info, reported, wall, &limit,
                    dynamic ? &*dynamic : nullptr, spread ? &*spread : nullptr);
   // The trials' chart also when no factor was found: it shows why (all stable, all failing).
   write_trials_chart(std::filesystem::path(out_dir) / "trials.png", result, settings.failure_displacement,

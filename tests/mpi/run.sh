@@ -8,6 +8,8 @@
 #   run.sh trials DDA OUT: the search of one factor, --jobs 1 on two ranks against --jobs 2
 #     on one process (the same rounds of two trials): the same report.json (wall times and
 #     the dropped speculative trials aside) and the same pictures of the bracket's trials.
+#   run.sh sweep DDA OUT: dda sweep of three variants on two ranks against one process: the
+#     same sweep.csv and the same reports of the variants.
 set -euo pipefail
 case_name="$1"
 dda="$2"
@@ -60,8 +62,26 @@ PY
       cmp "$out/serial/$picture" "$out/ranks/$picture"
     done
     ;;
+  sweep)
+    # Three friction angles of the block on a plane, searched: the variants over two ranks
+    # (rank 0 runs variants 0 and 2, rank 1 variant 1) against one process.
+    cp "$source_dir/scenes/random_plane.json" "$out/plane.json"
+    cat > "$out/sweep.json" <<'JSON'
+{"scene": "plane.json", "command": "fos", "fos": {"jobs": 1, "skip_limit_analysis": true},
+ "grid": {"/joint_materials/default/friction_angle": [35, 40, 45]}}
+JSON
+    # Both into DIR/run, then moved: a report names its scene's path, which must agree.
+    "$dda" sweep "$out/sweep.json" --out "$out/run" 2>"$out/serial.log"
+    mv "$out/run" "$out/serial"
+    "${mpi[@]}" "$dda" sweep "$out/sweep.json" --out "$out/run" 2>"$out/ranks.log"
+    mv "$out/run" "$out/ranks"
+    cmp "$out/serial/sweep.csv" "$out/ranks/sweep.csv"
+    for v in 000 001 002; do
+      /usr/bin/python3 "$here/compare_reports.py" "$out/serial/variant-$v/report.json" "$out/ranks/variant-$v/report.json"
+    done
+    ;;
   *)
-    echo "run.sh: unknown case $case_name (samples or trials)" >&2
+    echo "run.sh: unknown case $case_name (samples, trials or sweep)" >&2
     exit 2
     ;;
 esac
