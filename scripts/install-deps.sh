@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages this project builds, tests and plots with.
 # Safe to run again: apt-get skips what is already there.
+#   scripts/install-deps.sh        what the default build needs
+#   scripts/install-deps.sh mpi    that and OpenMPI, for the mpi preset (docs/mpi.md)
 set -euo pipefail
 pkgs=(
   build-essential cmake ninja-build pkg-config
@@ -11,6 +13,9 @@ pkgs=(
   python3 python3-numpy python3-matplotlib
   python3-dev pybind11-dev python3-pybind11 python3-pytest
 )
+if [ "${1:-}" = mpi ]; then
+  pkgs+=(openmpi-bin libopenmpi-dev)
+fi
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -5,9 +5,11 @@
 #include <iostream>
 #include <optional>
 
+#include "app/fos_ranks.hpp"
 #include "app/fos_samples.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
+#include "app/ranks.hpp"
 #include "common/printf_text.hpp"
 #include "io/bolt_force_report.hpp"
 #include "io/checkpoint.hpp"
@@ -118,6 +120,8 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
       throw InputError(scene_path + ": bolts: --target-factor finds the force the scene's bolts "
                        "must hold, and the scene has none");
     }
+    // Its bisection is one trial after another: rank 0 runs it alone.
+    if (!is_root_rank()) return kExitOk;
     return bolt_force_command(scene, scene_path, out_dir, settings, options.target_factor);
   }
   for (const std::string& warning : scene.warnings) std::cerr << "dda: warning: " << warning << "\n";
@@ -125,12 +129,14 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   for (const BlockSpec& b : scene.blocks) any_free = any_free || !b.fixed;
   if (!any_free) throw InputError(scene_path + ": blocks: every block is fixed; nothing can fail");
   // The output directory before any work: a search of hours whose report cannot be written
-  // fails now, not at its end.
-  prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
-                                     "last_stable.png", "first_failing.png", "trials.png",
-                                     "limit_analysis_close.png", "last_stable_close.png",
-                                     "first_failing_close.png", "factors.png", "verdicts.png",
-                                     kConsolidationCheckpointName});
+  // fails now, not at its end. Rank 0 alone writes (app/ranks.hpp).
+  if (is_root_rank()) {
+    prepare_output_directory(out_dir, {"report.json", "report.md", "limit_analysis.png",
+                                       "last_stable.png", "first_failing.png", "trials.png",
+                                       "limit_analysis_close.png", "last_stable_close.png",
+                                       "first_failing_close.png", "factors.png", "verdicts.png",
+                                       kConsolidationCheckpointName});
+  }
 
   // SIGINT or SIGTERM (watched from the start of main): the consolidation or the running
   // trials stop at their next step, and the report holds the trials judged so far (a second
@@ -174,6 +180,13 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
   // consolidation, as a run at that setting would).
   FosSettings given = settings;
   settings = resolve_fos_settings(world, settings, consolidation.settling.relaxation_steps);
+  // Under mpirun the search's rounds are --jobs trials per rank wide: the report gives that
+  // width, which a run on one process with --jobs that wide matches trial for trial.
+  const auto reported_settings = [&settings] {
+    FosSettings r = settings;
+    r.jobs = settings.jobs * rank_count();
+    return r;
+  };
   const auto stop_message = [&](const std::string& when) {
     return "interrupted (signal " + std::to_string(interrupt_signal()) + ") " + when;
   };
@@ -182,11 +195,13 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     none.interrupted = true;
     none.message = stop_message("during the consolidation, at t = " + printf_text(world.time, "%g") +
                                 " s; no trial was run");
-    write_fos_report(out_dir, scene, settings, info, none, consolidation.stats.wall_time_s);
+    if (is_root_rank()) {
+      write_fos_report(out_dir, scene, reported_settings(), info, none, consolidation.stats.wall_time_s);
+    }
     std::cerr << "dda: " << none.message << "; report in " << out_dir << "\n";
     return interrupted_exit_code();
   }
-  if (consolidating) {
+  if (consolidating && is_root_rank()) {
     // An extra for later searches: one that cannot be written does not stop this one.
     try {
       write_file_whole(std::filesystem::path(out_dir) / kConsolidationCheckpointName,
@@ -240,6 +255,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
                                  limit.analysis);
   };
   if (method == "limit-analysis") {
+    if (!is_root_rank()) return limit.analysis.found ? kExitOk : kExitNoFactor;
     FosResult none;
     none.message = "strength reduction not run (--method limit-analysis)";
     write_fos_report(out_dir, scene, settings, info, none,
@@ -249,7 +265,12 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     return limit.analysis.found ? kExitOk : kExitNoFactor;
   }
   std::cerr << "dda: trials of " << settings.trial_time << " s, failing beyond "
-            << settings.failure_displacement << " m, " << settings.jobs << " at once"
+            << settings.failure_displacement << " m, " << settings.jobs << " at once";
+  if (rank_count() > 1) {
+    std::cerr << " on each of " << rank_count() << " ranks (rounds of "
+              << reported_settings().jobs << ")";
+  }
+  std::cerr
             << (settings.jobs > 1 && blas_calls_serialised()
                     ? " (their BLAS calls one at a time: the BLAS loaded is not known to be safe "
                       "for concurrent callers; docs/factor-of-safety.md, section 3)"
@@ -257,16 +278,34 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
             << "\n";
 
   const auto start = std::chrono::steady_clock::now();
-  const FosResult result = search_on_threads(
-      settings,
-      [&](double f, const StopQuery& stop) { return run_trial(world, settings, f, stop); },
-      [](const TrialResult& t) { std::cerr << "dda: " << trial_line(t) << "\n"; }, interrupted);
+  const auto print_trial = [](const TrialResult& t) { std::cerr << "dda: " << trial_line(t) << "\n"; };
+  FosResult result =
+      rank_count() > 1
+          ? search_over_ranks(world, settings, print_trial, interrupted)
+          : search_on_threads(
+                settings,
+                [&](double f, const StopQuery& stop) { return run_trial(world, settings, f, stop); },
+                print_trial, interrupted);
+  // The rest (the pictures, the mechanism, the dynamic check, --spread and the report) is
+  // rank 0's. It needs the worlds of the bracket's two trials: those another rank ran are
+  // run again here (at most two trials' time; docs/mpi.md).
+  if (!is_root_rank()) {
+    return result.interrupted ? interrupted_exit_code() : result.found ? kExitOk : kExitNoFactor;
+  }
+  if (result.found && !result.interrupted) {
+    const int again = trial_worlds_on_root(result, world, settings,
+                                           {result.last_stable, result.first_failing}, interrupted);
+    if (again > 0) {
+      std::cerr << "dda: ran " << again << " trial" << (again > 1 ? "s" : "")
+                << " of the bracket again on rank 0 for its pictures\n";
+    }
+  }
   const double wall = consolidation.stats.wall_time_s +
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.interrupted) {
     FosResult kept = result;
     kept.message = stop_message(result.message);
-    write_fos_report(out_dir, scene, settings, info, kept, wall, &limit);
+    write_fos_report(out_dir, scene, reported_settings(), info, kept, wall, &limit);
     std::cerr << "dda: " << kept.message << "; report of the trials so far in " << out_dir
               << " (report.json: \"interrupted\": true)\n";
     return interrupted_exit_code();
@@ -331,7 +370,7 @@ int fos_command(const std::string& scene_path, const std::string& out_dir, FosSe
     }
     std::cerr << "dda: " << (spread->within ? "" : "note: ") << spread->text << "\n";
   }
-  write_fos_report(out_dir, scene, settings, info, reported, wall, &limit,
+  write_fos_report(out_dir, scene, reported_settings(), info, reported, wall, &limit,
                    dynamic ? &*dynamic : nullptr, spread ? &*spread : nullptr);
   // The trials' chart also when no factor was found: it shows why (all stable, all failing).
   write_trials_chart(std::filesystem::path(out_dir) / "trials.png", result, settings.failure_displacement,

@@ -24,7 +24,9 @@
 #include "app/fos_command.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
+#include "app/ranks.hpp"
 #include "app/run_checkpoints.hpp"
+#include "app/sweep_command.hpp"
 #include "io/checkpoint.hpp"
 #include "io/json_input.hpp"
 #include "io/material_point_output.hpp"
@@ -43,7 +45,7 @@ constexpr int kExitOutputError = 1;
 constexpr int kExitInputError = 2;
 constexpr int kExitDiverged = 3;
 
-constexpr const char* kSubcommands = "run, material-point, fos, cut";
+constexpr const char* kSubcommands = "run, material-point, fos, cut, sweep";
 
 // An output path the user gave as "" would write into the current directory (or nowhere):
 // refused like any bad input, naming the option.
@@ -286,6 +288,8 @@ int main(int argc, char** argv) {
   // cut is made is then seen by the command, which stops at its next step, increment or
   // stage with a message, instead of the program vanishing without a word.
   dda::watch_for_interrupts();
+  // Under mpirun: the ranks for the life of main (one process otherwise; app/ranks.hpp).
+  dda::RankSession ranks(argc, argv);
   CLI::App app{"dda: two-dimensional Discontinuous Deformation Analysis"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("dda ") + DDA_VERSION);
@@ -409,6 +413,13 @@ int main(int argc, char** argv) {
   cut->add_option("model", model_path, "Model file (JSON, see docs/model-format.md)");
   cut->add_option("--out", scene_out, "Scene file to write (JSON, see docs/scene-format.md)")
       ->capture_default_str();
+  std::string sweep_path;
+  std::string sweep_dir = "dda-sweep";
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "Run dda fos on variants of a scene (a grid or list of values; docs/sweep.md)");
+  sweep->add_option("sweep", sweep_path, "Sweep file (JSON, see docs/sweep.md)");
+  sweep->add_option("--out", sweep_dir, "Directory for sweep.csv and each variant's folder")
+      ->capture_default_str();
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
@@ -427,6 +438,7 @@ int main(int argc, char** argv) {
     if (point->parsed()) require_output_path(csv_file, "material-point");
     if (fos_app->parsed()) require_output_path(fos_dir, "fos");
     if (cut->parsed()) require_output_path(scene_out, "cut");
+    if (sweep->parsed()) require_output_path(sweep_dir, "sweep");
     if (run->parsed()) return run_command(scene_path, out_dir, vtk_format, !no_picture, checkpoints);
     if (plot->parsed()) {
       if (exaggeration_option->count() > 0) plot_options.plot.exaggeration = plot_exaggeration;
@@ -435,11 +447,15 @@ int main(int argc, char** argv) {
     if (point->parsed()) return material_point_command(spec_path, csv_file);
     if (fos_app->parsed()) return dda::fos_command(fos_scene, fos_dir, fos, fos_options);
     if (cut->parsed()) return dda::cut_command(model_path, scene_out);
+    if (sweep->parsed()) return dda::sweep_command(sweep_path, sweep_dir);
   } catch (const dda::InputError& e) {
+    // Every rank reads the same input and stops at the same error: each returns.
     std::cerr << "dda: error: " << e.what() << "\n";
     return kExitInputError;
   } catch (const std::exception& e) {
+    // Perhaps this rank's alone (rank 0's output directory): the others would wait for it.
     std::cerr << "dda: error: " << e.what() << "\n";
+    dda::abort_all_ranks(kExitOutputError, std::string("error: ") + e.what());
     return kExitOutputError;
   }
   return kExitOk;

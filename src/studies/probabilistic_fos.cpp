@@ -105,7 +105,9 @@ ProbabilisticResult run_probabilistic(const World& consolidated,
     result.samples[k].index = static_cast<long>(k);
   }
   std::mutex lock;
-  std::size_t next = 0;
+  const auto shares = static_cast<std::size_t>(std::max(1L, p.shares));
+  const auto share = static_cast<std::size_t>(std::clamp(p.share, 0L, std::max(1L, p.shares) - 1));
+  std::size_t next = share;
   // Each worker takes the next sample; a sample owns its world and its generator, so the
   // workers share nothing but the queue (as run_trials' do).
   auto worker = [&] {
@@ -114,7 +116,8 @@ ProbabilisticResult run_probabilistic(const World& consolidated,
       {
         const std::lock_guard<std::mutex> guard(lock);
         if (next >= result.samples.size() || (stop && stop())) return;
-        k = next++;
+        k = next;
+        next += shares;
       }
       SampleOutcome o = run_sample(consolidated, scene_joints, spec, settings, p,
                                    static_cast<long>(k), stop);
@@ -123,15 +126,28 @@ ProbabilisticResult run_probabilistic(const World& consolidated,
       result.samples[k] = std::move(o);
     }
   };
-  const std::size_t threads = std::min<std::size_t>(
-      result.samples.size(), static_cast<std::size_t>(std::max(1, settings.jobs)));
+  const std::size_t mine = (result.samples.size() + shares - 1 - share) / shares;
+  const std::size_t threads =
+      std::min<std::size_t>(mine, static_cast<std::size_t>(std::max(1, settings.jobs)));
   std::vector<std::thread> pool;
   for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
   worker();
   for (std::thread& t : pool) t.join();
-  for (const SampleOutcome& o : result.samples) result.interrupted = result.interrupted || !o.done;
+  for (std::size_t k = share; k < result.samples.size(); k += shares) {
+    result.interrupted = result.interrupted || !result.samples[k].done;
+  }
   result.summary = summarise(result.samples);
   return result;
+}
+
+void add_samples(ProbabilisticResult& result, std::vector<SampleOutcome> outcomes) {
+  for (SampleOutcome& o : outcomes) {
+    if (o.index < 0 || o.index >= static_cast<long>(result.samples.size())) continue;
+    result.samples[static_cast<std::size_t>(o.index)] = std::move(o);
+  }
+  result.interrupted = false;
+  for (const SampleOutcome& o : result.samples) result.interrupted = result.interrupted || !o.done;
+  result.summary = summarise(result.samples);
 }
 
 }  // namespace dda

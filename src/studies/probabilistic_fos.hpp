@@ -22,6 +22,10 @@ struct ProbabilisticSettings {
   // > 0: one trial per sample at this F, its verdict (failing: the sample's factor is below
   // it). 0: the sample's factor by the search, whose first trial is at F = 1.
   double at_factor = 0.0;
+  // This process runs the samples k with k % shares == share (the ranks of an MPI run share
+  // the samples so); the others stay not done. 0 of 1: all of them.
+  long share = 0;
+  long shares = 1;
 };
 
 // What one sample gave.
@@ -71,10 +75,15 @@ struct ProbabilisticResult {
 
 ProbabilisticSummary summarise(const std::vector<SampleOutcome>& samples);
 
-// Runs the samples on settings.jobs threads (each sample's trials one after another, so
+// Puts the outcomes of samples run elsewhere (their share of p.shares) into `result` at
+// their indices, and judges the whole again: `interrupted` and the summary over all samples.
+void add_samples(ProbabilisticResult& result, std::vector<SampleOutcome> outcomes);
+
+// Runs the samples (those of p.share, when shared) on settings.jobs threads (each sample's trials one after another, so
 // that a sample's search is the same whatever the number of threads; the search's own round
 // width is one trial). `settings` resolved (resolve_fos_settings). `done` (may be empty) is
-// called once per finished sample, one call at a time. Once `stop` (may be empty) says so,
+// called once per finished sample, one call at a time. `interrupted` and the summary are
+// over this share's samples. Once `stop` (may be empty) says so,
 // running samples end without a verdict and the rest are not started.
 ProbabilisticResult run_probabilistic(const World& consolidated,
                                       const std::vector<JointMaterial>& scene_joints,

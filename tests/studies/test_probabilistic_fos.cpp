@@ -98,3 +98,56 @@ TEST_CASE("a sample's factor of a block on a plane is tan(phi) / tan(alpha), wha
   }
   CHECK(two.summary.mean_factor == one.summary.mean_factor);
 }
+
+TEST_CASE("samples shared out in parts and put together are the samples of one run",
+          "[fos][random][ranks]") {
+  // What the ranks of an MPI run do with --samples (docs/mpi.md): rank r of R runs the
+  // samples k with k % R == r, rank 0 puts the others' in. Each sample's draw depends on the
+  // seed and k alone, so the whole must equal one run's to the last bit, whatever the parts.
+  const Scene scene = parse_scene_text(
+      test::with_random_friction(test::plane_block_scene(30.0, 32.0), 32.0, 4.0, 10.0, 54.0).dump(),
+      "plane");
+  const Consolidation c = consolidated(scene);
+  FosSettings s = resolve_fos_settings(c.world, FosSettings{}, c.settling.relaxation_steps);
+  s.jobs = 2;
+  ProbabilisticSettings p;
+  p.samples = 7;
+  p.seed = 5;
+  p.at_factor = 1.0;
+  const ProbabilisticResult whole =
+      run_probabilistic(c.world, scene.joint_materials, scene.random_strengths, s, p, {});
+  p.shares = 3;
+  std::vector<ProbabilisticResult> parts;
+  for (long r = 0; r < 3; ++r) {
+    p.share = r;
+    parts.push_back(run_probabilistic(c.world, scene.joint_materials, scene.random_strengths, s, p, {}));
+    // A part judges its own samples only (7 = 3 + 2 + 2).
+    CHECK(parts.back().summary.judged == (r == 0 ? 3 : 2));
+    CHECK_FALSE(parts.back().interrupted);
+  }
+  // Rank 0's result takes the others' own samples (what app/fos_samples.cpp gathers).
+  const auto own = [](const ProbabilisticResult& part) {
+    std::vector<SampleOutcome> out;
+    for (const SampleOutcome& o : part.samples) {
+      if (o.done) out.push_back(o);
+    }
+    return out;
+  };
+  ProbabilisticResult joined = parts[0];
+  add_samples(joined, own(parts[1]));
+  // Samples 2 and 5 not yet in: not all judged, and said so.
+  CHECK(joined.interrupted);
+  CHECK(joined.summary.judged == 5);
+  add_samples(joined, own(parts[2]));
+  REQUIRE_FALSE(joined.interrupted);
+  REQUIRE(joined.samples.size() == whole.samples.size());
+  for (std::size_t k = 0; k < whole.samples.size(); ++k) {
+    CHECK(joined.samples[k].values == whole.samples[k].values);
+    CHECK(joined.samples[k].failing == whole.samples[k].failing);
+    CHECK(joined.samples[k].verdict == whole.samples[k].verdict);
+    CHECK(joined.samples[k].steps == whole.samples[k].steps);
+  }
+  CHECK(joined.summary.failing == whole.summary.failing);
+  CHECK(joined.summary.probability_of_failure == whole.summary.probability_of_failure);
+  CHECK(joined.summary.interval.low == whole.summary.interval.low);
+}

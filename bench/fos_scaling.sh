@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Strong scaling of the probabilistic factor of safety over MPI ranks (docs/mpi.md,
+# "Scaling"): the 1965-block slope of models/slope-fos.json with its bedding's friction
+# angle drawn from N(30, 2) degrees (truncated to 20 to 40), SAMPLES samples judged at
+# F = 1, on 1, 2 and 4 ranks (one thread each), and a table: wall time, cost per sample,
+# parallel efficiency against one rank, and an estimate for a 64-core node.
+#
+#   bench/fos_scaling.sh OUT_DIR [SAMPLES] [RANKS...]   (defaults: 100 samples; 1 2 4 ranks)
+#   env DDA_MPI_BUILD_DIR: default build/mpi (cmake --preset mpi && cmake --build --preset mpi)
+#   env DDA_SCALING_MODEL: default models/slope-fos.json (a model with a joint material
+#     "bedding"; models/small-slope.json tries the script out in a minute)
+#
+# Each rank consolidates the slope itself (a few seconds, the serial part), then runs every
+# R-th sample. Ranks beyond the machine's cores share them (mpirun --oversubscribe): their
+# figures then measure the sharing, not the scaling, and the table says so.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/.." && pwd)"
+if [ $# -lt 1 ]; then
+  echo "usage: $0 OUT_DIR [SAMPLES] [RANKS...]" >&2
+  exit 2
+fi
+out="$1"
+samples="${2:-100}"
+shift $(( $# >= 2 ? 2 : 1 ))
+ranks_list=("$@")
+[ ${#ranks_list[@]} -gt 0 ] || ranks_list=(1 2 4)
+exe="${DDA_MPI_BUILD_DIR:-$root/build/mpi}/dda"
+[ -x "$exe" ] || { echo "$0: $exe not found; build first (cmake --preset mpi && cmake --build --preset mpi)" >&2; exit 2; }
+mkdir -p "$out"
+cores=$(nproc)
+# One thread per rank: CHOLMOD's OpenMP loops and OpenBLAS would otherwise each start a
+# team per rank and oversubscribe the cores.
+export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
+# Containers and CI run as root, which OpenMPI refuses unless told.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+/usr/bin/python3 - "${DDA_SCALING_MODEL:-$root/models/slope-fos.json}" "$out/model.json" <<'PY'
+import json, sys
+model = json.load(open(sys.argv[1]))
+model["random_strengths"] = {"variables": [{
+    "joint_material": "bedding", "property": "friction_angle", "distribution": "normal",
+    "mean": 30.0, "standard_deviation": 2.0, "min": 20.0, "max": 40.0}]}
+json.dump(model, open(sys.argv[2], "w"), indent=1)
+PY
+"$exe" cut "$out/model.json" --out "$out/scene.json" 2>/dev/null
+table="$out/scaling.txt"
+{
+  echo "probabilistic fos of the $(python3 -c "import json;print(sum(1 for b in json.load(open('$out/scene.json'))['blocks']))")-block slope, $samples samples at F = 1, seed 1, --jobs 1, $cores cores"
+  printf "%6s %10s %18s %11s %8s  %s\n" ranks wall_s core_s_per_sample efficiency 'P(F<1)' note
+} > "$table"
+t1=""
+for r in "${ranks_list[@]}"; do
+  # Ranks bound to cores while they fit; beyond, unbound and oversubscribed.
+  if [ "$r" -le "$cores" ]; then bind=(--bind-to core); note=""; else bind=(--bind-to none --oversubscribe); note="oversubscribed: $r ranks on $cores cores"; fi
+  start=$(date +%s.%N)
+  mpirun -n "$r" "${bind[@]}" "$exe" fos "$out/scene.json" --samples "$samples" --seed 1 \
+    --at-factor 1 --jobs 1 --out "$out/ranks-$r" 2>"$out/ranks-$r.log" >/dev/null
+  end=$(date +%s.%N)
+  wall=$(python3 -c "print(f'{$end - $start:.1f}')")
+  [ -n "$t1" ] || t1="$wall"
+  python3 - "$r" "$wall" "$t1" "$samples" "$note" "$out/ranks-$r/report.json" >> "$table" <<'PY'
+import json, sys
+r, wall, t1, n, note, report = int(sys.argv[1]), float(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4]), sys.argv[5], sys.argv[6]
+p = json.load(open(report))["probabilistic"]
+efficiency = t1 / (r * wall)
+print(f"{r:6d} {wall:10.1f} {wall * r / n:18.2f} {efficiency:11.2f} {p['probability_of_failure']:8.3f}  {note}")
+PY
+done
+# The estimate for a 64-core node: one rank a core, each consolidating once (the serial part,
+# from the report) and then running its share of the samples at the one-rank cost a sample.
+python3 - "$out/ranks-${ranks_list[0]}/report.json" "$t1" "$samples" "${ranks_list[0]}" >> "$table" <<'PY'
+import json, math, sys
+report, t1, n, r1 = json.load(open(sys.argv[1])), float(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+consolidation = report["consolidation"]["wall_time_s"]
+per_sample = sum(s["wall_time_s"] for s in report["probabilistic"]["samples"]) / n
+for N in (100, 1000):
+    t64 = consolidation + math.ceil(N / 64) * per_sample
+    print(f"64 cores, {N} samples: about {t64:.0f} s (consolidation {consolidation:.1f} s + "
+          f"{math.ceil(N / 64)} samples a rank x {per_sample:.1f} s), "
+          f"against {consolidation + N * per_sample:.0f} s on one core")
+PY
+cat "$table"
