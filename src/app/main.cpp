@@ -169,9 +169,8 @@ int run_command(const std::string& scene_path, const std::string& out_dir,
   dda::RunCheckpoints saved(std::filesystem::path(out_dir) / dda::kRunCheckpointName,
                             checkpoints.every, scene_text, scene, earlier_wall_time);
   dda::ProgressBar progress(dda::run_length(scene), dda::run_unit(scene));
-  const int every = scene.control.output_every;
   const auto observe = [&](const dda::World& w, const dda::RunStats& s) {
-    if (w.step % every == 0 || dda::is_finished(w)) writer.record(w);
+    writer.record_if_due(w);
     if (w.step > 0) saved.after_step(w, s, writer.progress());
     progress.update(dda::run_position(scene, w));
     return dda::interrupt_signal() == 0;  // stop after this step, keeping what was written
@@ -198,8 +197,7 @@ int run_command(const std::string& scene_path, const std::string& out_dir,
       std::cerr << "dda: warning: no checkpoint left: " << e.what() << "\n";
     }
   }
-  const bool last_recorded = world.step % every == 0 || dda::is_finished(world);
-  if ((stats.diverged || stats.interrupted) && !last_recorded) writer.record(world);  // keep the last state
+  if (stats.diverged || stats.interrupted) writer.record_last(world);
   stats.wall_time_s += earlier_wall_time;  // after the checkpoint, which adds it itself
   writer.finish(world, stats);
   if (stats.interrupted) {

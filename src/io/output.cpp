@@ -17,6 +17,7 @@
 #include "kinematics/block_matrices.hpp"
 #include "solver/energy.hpp"
 #include "solver/excavation.hpp"
+#include "solver/step.hpp"
 
 namespace dda {
 
@@ -384,6 +385,18 @@ OutputProgress OutputWriter::progress() const {
   if (monitors_) p.monitors = monitors_->progress();
   if (bolts_) p.bolts = bolts_->progress();
   return p;
+}
+
+bool OutputWriter::due(const World& world) const {
+  return world.step % scene_.control.output_every == 0 || is_finished(world);
+}
+
+void OutputWriter::record_if_due(const World& world) {
+  if (due(world)) record(world);
+}
+
+void OutputWriter::record_last(const World& world) {
+  if (!due(world)) record(world);
 }
 
 void OutputWriter::record(const World& world) {

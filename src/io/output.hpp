@@ -64,6 +64,15 @@ class OutputWriter {
   // the last whole step written before (io/output_file.hpp, StreamedFile).
   void record(const World& world);
 
+  // Whether the world's step is one the scene records: every control.output_every steps,
+  // and the last.
+  bool due(const World& world) const;
+  // record() when due(): what a run records after each step.
+  void record_if_due(const World& world);
+  // record() when not due(): a run that stopped early (a signal, a failed step) keeps its
+  // last state.
+  void record_last(const World& world);
+
   // Writes summary.json and the .pvd index. Called once at the end, also after divergence,
   // so that what was written is kept and indexed.
   void finish(const World& world, const RunStats& stats);

@@ -47,18 +47,16 @@ int Simulation::step(int steps, const StopQuery& stop) {
 int Simulation::run(std::optional<double> until, const StopQuery& stop, OutputWriter* writer) {
   throw_if_diverged();
   const auto reached = [until](const World& w) { return until && w.time >= *until; };
-  const int every = scene_.control.output_every;
-  const auto recorded = [&](const World& w) { return w.step % every == 0 || is_finished(w); };
   if (writer && world_.step == 0) writer->record(world_);
   int made = 0;
   if (!reached(world_) && !finished()) {
     made = advance(reached, stop, [&](const World& w) {
-      if (writer && recorded(w)) writer->record(w);
+      if (writer) writer->record_if_due(w);
     });
   }
   if (writer) {
     // A run stopped by a signal or a failed step keeps its last state, as dda run's does.
-    if ((stats_.diverged || stats_.interrupted) && !recorded(world_)) writer->record(world_);
+    if (stats_.diverged || stats_.interrupted) writer->record_last(world_);
     writer->finish(world_, stats_);
   }
   stats_.interrupted = false;
