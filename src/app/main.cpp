@@ -166,8 +166,16 @@ int run_command(const std::string& scene_path, const std::string& out_dir,
     stats.message.clear();
     earlier_wall_time = stats.wall_time_s;
   }
+  // The step loop's workspace, and with a restart the kept factor the stopped run had: the
+  // continued run then takes its steps as the unbroken run would have, bit for bit.
+  dda::StepWorkspace workspace;
+  if (resumed && resumed->workspace && !dda::restore_workspace(workspace, *resumed->workspace)) {
+    std::cerr << "dda: warning: the linear solver's kept factor in " << checkpoints.restart
+              << " could not be rebuilt; the run continues with a new one and agrees with the "
+                 "unbroken run to the solver's tolerance, not bit for bit\n";
+  }
   dda::RunCheckpoints saved(std::filesystem::path(out_dir) / dda::kRunCheckpointName,
-                            checkpoints.every, scene_text, scene, earlier_wall_time);
+                            checkpoints.every, scene_text, scene, earlier_wall_time, workspace);
   dda::ProgressBar progress(dda::run_length(scene), dda::run_unit(scene));
   const auto observe = [&](const dda::World& w, const dda::RunStats& s) {
     writer.record_if_due(w);
@@ -179,7 +187,7 @@ int run_command(const std::string& scene_path, const std::string& out_dir,
   const auto at_start = [&](const dda::World& w, const dda::RunStats& s) {
     return resumed ? dda::interrupt_signal() == 0 : observe(w, s);
   };
-  dda::run(world, dda::RunHook{at_start, {}, observe}, stats);
+  dda::run(world, workspace, dda::RunHook{at_start, {}, observe}, stats);
   progress.finish();
   if (stats.interrupted) {
     stats.message = "interrupted (signal " + std::to_string(dda::interrupt_signal()) +

@@ -8,6 +8,7 @@
 
 #include "io/checkpoint.hpp"
 #include "io/output.hpp"
+#include "solver/step.hpp"
 
 namespace dda {
 
@@ -16,18 +17,20 @@ class RunCheckpoints {
   // `every` 0: none on the way, and only an interrupted run leaves one.
   // `earlier_wall_time`: the seconds the run had taken before this process (a restart's),
   // added to the wall time stored.
+  // `workspace`: the step loop's, whose kept factor each checkpoint stores with the world.
   RunCheckpoints(std::filesystem::path file, int every, const std::string& scene_text,
-                 const Scene& scene, double earlier_wall_time);
+                 const Scene& scene, double earlier_wall_time, const StepWorkspace& workspace);
 
   // After each completed step, once its output is recorded: keeps the step's state (when
   // checkpoints are taken on the way) and writes it every `every` steps.
   void after_step(const World& world, const RunStats& stats, const OutputProgress& output);
 
-  // The run stopped: writes the last completed step's state. `world` and `stats` are that
-  // step's when the run was interrupted (the step ended whole); after a divergence the world
-  // is the failed step's, and the state kept after the last completed step is written
-  // instead (nothing when checkpoints are not taken on the way). Returns whether one was
-  // written.
+  // The run stopped: writes the last completed step's state. `world`, `stats` and the
+  // workspace are that step's when the run was interrupted (the step ended whole); after a
+  // divergence they are the failed step's, and the state kept after the last completed step
+  // is written instead (nothing when checkpoints are not taken on the way), without the
+  // kept factor: a run continued from there starts with a new one. Returns whether one
+  // was written.
   bool at_stop(const World& world, const RunStats& stats, const OutputProgress& output,
                bool diverged);
 
@@ -39,9 +42,10 @@ class RunCheckpoints {
   const std::string& scene_text_;
   const Scene& scene_;
   double earlier_wall_time_;
-  std::string encode(const World& world, const RunStats& stats, const OutputProgress& output) const;
+  const StepWorkspace& workspace_;
+  std::string encode(const World& world, const RunStats& stats, const OutputProgress& output,
+                     bool with_workspace) const;
   std::string last_;  // the encoded state of the last completed step (with `every` > 0)
-  int last_step_ = -1;
 };
 
 }  // namespace dda

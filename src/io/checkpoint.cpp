@@ -55,6 +55,10 @@ static_assert(sizeof(void*) != 8 || sizeof(Bolt) == 88, "Bolt changed: update vi
 static_assert(sizeof(void*) != 8 || sizeof(JointLaw) == 80, "JointLaw changed");
 static_assert(sizeof(void*) != 8 || sizeof(MaterialParameters) == 104, "MaterialParameters changed");
 static_assert(sizeof(void*) != 8 || sizeof(Settling) == 368, "Settling changed: update visit(Settling)");
+static_assert(sizeof(void*) != 8 || sizeof(LinearSolveStats) == 40, "LinearSolveStats changed");
+static_assert(sizeof(void*) != 8 || sizeof(FactorRecord) == 112, "FactorRecord changed");
+static_assert(sizeof(void*) != 8 || sizeof(CholmodSolver::Record) == 176, "CholmodSolver::Record changed");
+static_assert(sizeof(void*) != 8 || sizeof(WorkspaceRecord) == 200, "WorkspaceRecord changed");
 
 template <class B, class T>
 concept Is = std::same_as<std::remove_const_t<B>, T>;
@@ -279,6 +283,39 @@ template <class A, Is<Settling> B>
 void visit(A& a, B& s) {
   a(s.steps), a(s.at_rest), a(s.unbalanced_start), a(s.unbalanced_end), a(s.relaxation_steps);
   a(s.stopped), a(s.kept), a(s.stats);
+}
+
+template <class A, Is<RankOneTerm> B>
+void visit(A& a, B& t) {
+  a(t.entries);
+}
+
+template <class A, Is<FactorModification> B>
+void visit(A& a, B& m) {
+  a(m.update), a(m.terms);
+}
+
+template <class A, Is<FactorRecord> B>
+void visit(A& a, B& f) {
+  a(f.analysed), a(f.outer), a(f.inner), a(f.values), a(f.factored), a(f.analyses);
+  a(f.modifications);
+}
+
+template <class A, Is<LinearSolveStats> B>
+void visit(A& a, B& s) {
+  a(s.factorisations), a(s.analyses), a(s.modifications), a(s.reused), a(s.cg_iterations);
+  a(s.cg_failures), a(s.largest_difference_from_plain);
+}
+
+template <class A, Is<CholmodSolver::Record> B>
+void visit(A& a, B& r) {
+  a(r.factor), a(r.factored_rows), a(r.refresh), a(r.since_factor_cost), a(r.since_factor_solves);
+  a(r.last_path), a(r.stats);
+}
+
+template <class A, Is<WorkspaceRecord> B>
+void visit(A& a, B& w) {
+  a(w.solver), a(w.factor_springs);
 }
 
 template <class A, Is<ConsolidationSettings> B>
@@ -515,6 +552,9 @@ std::string encode_checkpoint(const CheckpointSource& source) {
   w(source.world);
   w(source.stats);
   w(source.output);
+  std::optional<WorkspaceRecord> workspace;
+  if (source.workspace != nullptr) workspace = record_workspace(*source.workspace);
+  w(workspace);
   return frame_payload(w.bytes);
 }
 
@@ -553,7 +593,7 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& name) 
   const std::size_t blocks = c.world.blocks.size();
   r(c.world);
   if (c.world.blocks.size() != blocks) r.garbage("a world that is not its scene's");
-  r(c.stats), r(c.output);
+  r(c.stats), r(c.output), r(c.workspace);
   if (!r.done()) r.garbage("bytes after its end");
   return c;
 }

@@ -8,11 +8,13 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "io/output.hpp"
 #include "solver/run_stats.hpp"
 #include "solver/scene.hpp"
+#include "solver/workspace_record.hpp"
 #include "solver/world.hpp"
 #include "studies/strength_reduction.hpp"
 
@@ -21,7 +23,8 @@ namespace dda {
 // The file's format version: raised whenever what it holds or how changes. A file of
 // another version is refused (a restart is exact only within one version of the program's
 // state).
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+// 2: the step loop's workspace (the linear solver's kept factor) is stored.
+inline constexpr std::uint32_t kCheckpointVersion = 2;
 
 // The usual file names: a run's (dda run --checkpoint-every) and a fos consolidation's.
 inline constexpr const char* kRunCheckpointName = "checkpoint.ddack";
@@ -35,6 +38,9 @@ struct Checkpoint {
   World world;
   RunStats stats;
   OutputProgress output;
+  // The step loop's workspace (its kept factor), when the run that wrote it had one to
+  // store; restore_workspace puts it into the StepWorkspace the continued run steps with.
+  std::optional<WorkspaceRecord> workspace;
 };
 
 // The state to store: the scene's text and name, and what the run has reached.
@@ -44,6 +50,9 @@ struct CheckpointSource {
   const World& world;
   const RunStats& stats;
   const OutputProgress& output;
+  // The workspace the run steps with (nullptr: none stored; the continued run then starts
+  // with a fresh factor and agrees with the unbroken run to the solver's tolerance).
+  const StepWorkspace* workspace = nullptr;
 };
 
 // The file's bytes (header, payload, checksum).

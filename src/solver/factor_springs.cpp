@@ -1,6 +1,8 @@
 #include "solver/factor_springs.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <tuple>
 #include <functional>
 #include <unordered_set>
 
@@ -77,6 +79,19 @@ void FactorSprings::commit() {
 void FactorSprings::clear() {
   recorded_.clear();
   pending_.clear();
+}
+
+std::vector<FactorSprings::Entry> FactorSprings::entries() const {
+  std::vector<Entry> out(recorded_.begin(), recorded_.end());
+  const auto tied = [](const ContactKey& k) { return std::tie(k.vertex_block, k.vertex, k.edge_block, k.edge); };
+  std::sort(out.begin(), out.end(), [&](const Entry& a, const Entry& b) { return tied(a.first) < tied(b.first); });
+  return out;
+}
+
+void FactorSprings::restore(const std::vector<Entry>& entries) {
+  recorded_.clear();
+  pending_.clear();
+  recorded_.insert(entries.begin(), entries.end());
 }
 
 }  // namespace dda

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "contact/contact.hpp"
@@ -38,6 +39,13 @@ class FactorSprings {
 
   // Nothing recorded (no factor yet, or it was dropped).
   void clear();
+
+  // The ledger as a checkpoint keeps it (sorted by key, so that its bytes do not depend on
+  // the hash table's order), and put back. Pending differences are not kept: the next
+  // differences() makes them afresh.
+  using Entry = std::pair<ContactKey, ContactMode>;
+  std::vector<Entry> entries() const;
+  void restore(const std::vector<Entry>& entries);
 
  private:
   struct KeyHash {

@@ -79,6 +79,23 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve(const BlockSystem& system) {
   return factor_.solve(system.rhs);
 }
 
+CholmodSolver::Record CholmodSolver::record() const {
+  return Record{factor_.record(), factored_rows_,      refresh_,   since_factor_cost_,
+                since_factor_solves_, last_path_, stats_};
+}
+
+bool CholmodSolver::restore(const Record& record) {
+  factored_rows_ = record.factored_rows;
+  refresh_ = record.refresh;
+  since_factor_cost_ = record.since_factor_cost;
+  since_factor_solves_ = record.since_factor_solves;
+  last_path_ = record.last_path;
+  stats_ = record.stats;
+  if (factor_.restore(record.factor)) return true;
+  factored_rows_ = -1;  // no factor: the next solve factorises
+  return false;
+}
+
 std::optional<Eigen::VectorXd> CholmodSolver::solve_reusing(const BlockSystem& system) {
   if (!reuse_ || refresh_ || !factor_.has_factor() || system.block_rows() != factored_rows_) {
     return solve(system);

@@ -130,6 +130,25 @@ class CholmodSolver {
   // plus every modification and CG iteration since) is least when a solve's CG costs as
   // much as that average: after a CG that cost more, the next reuse factorises.
 
+  // What a checkpoint keeps of the solver (docs/checkpoint.md): the kept factor (as
+  // SparseCholesky::record rebuilds it), the refresh rule's counters and the counts, so that
+  // a run continued from a checkpoint takes the same paths to the same answers, bit for bit,
+  // as the run never stopped.
+  struct Record {
+    FactorRecord factor;
+    int factored_rows = -1;
+    bool refresh = false;
+    double since_factor_cost = 0.0;
+    int since_factor_solves = 0;
+    Path last_path = Path::Factorised;
+    LinearSolveStats stats;
+  };
+  Record record() const;
+  // False when the factor could not be rebuilt: the solver then holds none and factorises
+  // at its next solve (a continued run then agrees with the unbroken one to the solver's
+  // tolerance, not bit for bit).
+  bool restore(const Record& record);
+
   int factorisations() const { return stats_.factorisations; }
   int modifications() const { return stats_.modifications; }
   const LinearSolveStats& stats() const { return stats_; }

@@ -218,23 +218,11 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
     own_pattern = same_pattern(lower);
     if (!own_pattern) scatter_into_pattern(lower);  // the union holds it: cannot fail
   }
+  // record() keeps the matrix factorised: a matrix of the analysed pattern is its values.
+  if (own_pattern) values_.assign(lower.valuePtr(), lower.valuePtr() + lower.nonZeros());
+  modifications_.clear();
   cholmod_sparse a = own_pattern ? view_lower(lower) : view_pattern();
-  if (!analysed) {
-    if (lower.rows() >= kNestedDissectionRows) {
-      common_.nmethods = 2;  // AMD and METIS, the smaller factor kept
-      common_.method[0].ordering = CHOLMOD_AMD;
-      common_.method[1].ordering = CHOLMOD_METIS;
-    } else {
-      common_.nmethods = 1;
-      common_.method[0].ordering = CHOLMOD_AMD;
-    }
-    symbolic_ = cholmod_analyze(&a, &common_);
-    if (symbolic_ == nullptr) return false;
-    ++analyses_;
-    const auto* perm = static_cast<const int*>(symbolic_->Perm);
-    inverse_perm_.assign(symbolic_->n, 0);
-    for (size_t i = 0; i < symbolic_->n; ++i) inverse_perm_[perm[i]] = static_cast<int>(i);
-  }
+  if (!analysed && !analyse(a)) return false;
   // A factor that was refactorised in place keeps its form; one that was converted for
   // updates (or failed) starts again from the analysis.
   const bool reusable =
@@ -254,9 +242,74 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   return factored_;
 }
 
+bool SparseCholesky::analyse(cholmod_sparse& a) {
+  if (a.nrow >= static_cast<size_t>(kNestedDissectionRows)) {
+    common_.nmethods = 2;  // AMD and METIS, the smaller factor kept
+    common_.method[0].ordering = CHOLMOD_AMD;
+    common_.method[1].ordering = CHOLMOD_METIS;
+  } else {
+    common_.nmethods = 1;
+    common_.method[0].ordering = CHOLMOD_AMD;
+  }
+  symbolic_ = cholmod_analyze(&a, &common_);
+  if (symbolic_ == nullptr) return false;
+  ++analyses_;
+  const auto* perm = static_cast<const int*>(symbolic_->Perm);
+  inverse_perm_.assign(symbolic_->n, 0);
+  for (size_t i = 0; i < symbolic_->n; ++i) inverse_perm_[perm[i]] = static_cast<int>(i);
+  return true;
+}
+
+FactorRecord SparseCholesky::record() const {
+  FactorRecord r;
+  r.analysed = symbolic_ != nullptr;
+  r.outer = outer_;
+  r.inner = inner_;
+  r.values = values_;
+  r.factored = has_factor();
+  r.analyses = analyses_;
+  r.modifications = modifications_;
+  return r;
+}
+
+bool SparseCholesky::restore(const FactorRecord& record) {
+  if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
+  if (symbolic_ != nullptr) cholmod_free_factor(&symbolic_, &common_);
+  factored_ = false;
+  modified_ = false;
+  modifications_.clear();
+  outer_ = record.outer;
+  inner_ = record.inner;
+  values_ = record.values;
+  analyses_ = record.analyses;
+  const bool consistent = !outer_.empty() && static_cast<std::size_t>(outer_.back()) == inner_.size() &&
+                          values_.size() == inner_.size();
+  if (!record.analysed || !consistent) return !record.analysed;
+  // The analysis as factorize() made it (one more in the count: set back below).
+  cholmod_sparse a = view_pattern();
+  const bool analysed = analyse(a);
+  analyses_ = record.analyses;
+  if (!analysed) return false;
+  if (!record.factored) return true;
+  factor_ = cholmod_copy_factor(symbolic_, &common_);
+  if (factor_ == nullptr) return false;
+  {
+    const std::unique_lock<std::mutex> lock = blas_lock();
+    if (!cholmod_factorize(&a, factor_, &common_)) return false;
+  }
+  factored_ = common_.status == CHOLMOD_OK && positive_pivots();
+  if (!factored_) return false;
+  make_cost_tables();
+  for (const FactorModification& m : record.modifications) {
+    if (!modify(m.terms, m.update)) return false;
+  }
+  return true;
+}
+
 bool SparseCholesky::modify(const std::vector<RankOneTerm>& terms, bool update) {
   assert(has_factor());
   if (terms.empty()) return true;
+  modifications_.push_back({update, terms});
   if (!modified_) {
     // updown needs a simplicial LDL': convert a supernodal LL' (a copy of its entries) or
     // take the simplicial one as it is.

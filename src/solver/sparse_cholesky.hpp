@@ -29,6 +29,27 @@ struct RankOneTerm {
   std::vector<std::pair<int, double>> entries;
 };
 
+// What rebuilds a SparseCholesky's factor bit for bit (a checkpoint's kept factor,
+// docs/checkpoint.md): the analysed pattern, the matrix last factorised in it, and the
+// rank-one modifications applied since, in order. Analysis and numeric factorisation are
+// deterministic for a given pattern and matrix, and cholmod_updown for a given factor and
+// terms, so replaying these on a fresh object makes the same factor, the same cost tables
+// and therefore the same later choices; storing CHOLMOD's factor itself would mean writing
+// its simplicial and supernodal layouts field by field.
+struct FactorModification {
+  bool update = true;  // K += c c^T (else K -= c c^T)
+  std::vector<RankOneTerm> terms;
+};
+struct FactorRecord {
+  bool analysed = false;         // a pattern was analysed (else nothing below matters)
+  std::vector<int> outer;        // the analysed pattern (lower triangle, compressed columns)
+  std::vector<int> inner;
+  std::vector<double> values;    // the matrix last factorised, in that pattern
+  bool factored = false;         // that factorisation (and the modifications) succeeded
+  int analyses = 0;              // the count analyses() reports
+  std::vector<FactorModification> modifications;  // since that factorisation
+};
+
 class SparseCholesky {
  public:
   SparseCholesky();
@@ -87,6 +108,13 @@ class SparseCholesky {
   Eigen::VectorXd solve(const Eigen::VectorXd& b);
 
   bool has_factor() const { return factor_ != nullptr && factored_; }
+
+  // The state to rebuild this factor from, and the rebuild (on any object: what it held is
+  // dropped). restore() returns false when the replay does not end as the record says (a
+  // record of another build of CHOLMOD or BLAS); the object then holds no factor, and the
+  // next factorize() starts afresh.
+  FactorRecord record() const;
+  bool restore(const FactorRecord& record);
   bool supernodal() const { return factor_ != nullptr && factor_->is_super; }
 
  private:
@@ -97,6 +125,9 @@ class SparseCholesky {
   void grow_pattern(const Eigen::SparseMatrix<double>& k);
   cholmod_sparse view_pattern() const;  // outer_, inner_, values_ as CHOLMOD reads them
   bool positive_pivots() const;
+  // The ordering and symbolic factor of pattern `a` (AMD; AMD and METIS from
+  // kNestedDissectionRows rows on) into symbolic_; false when CHOLMOD fails.
+  bool analyse(cholmod_sparse& a);
   void make_cost_tables();
 
   cholmod_common common_;
@@ -120,6 +151,7 @@ class SparseCholesky {
   double factor_entries_ = 0.0;  // nnz(L) of the last factorisation
   bool factored_ = false;
   bool modified_ = false;  // converted to simplicial LDL' and updated since factorised
+  std::vector<FactorModification> modifications_;  // since the last factorisation (record())
 };
 
 }  // namespace dda

@@ -59,9 +59,13 @@ void require_same_output(const fs::path& a, const fs::path& b) {
 
 TEST_CASE("dda run split at a checkpoint and restarted leaves what the run in one piece leaves",
           "[cli][checkpoint]") {
+  // Both solver paths: a factorisation every solve, and the default kept factor (whose
+  // state the checkpoint carries, so that the continuation is exact on it too).
+  const std::string solver = GENERATE(as<std::string>{}, "factorise", "reuse");
+  INFO("linear_solver " << solver);
   dda::test::TempDir dir("dda-checkpoint-");
   const fs::path scene = dir.path / "scene.json";
-  dda::test::write_file(scene, dda::test::checkpoint_scene());
+  dda::test::write_file(scene, dda::test::checkpoint_scene("0.08", solver));
   const fs::path whole = dir.path / "whole";
   REQUIRE(dda_run(shell_quote(scene.string()) + " --out " + shell_quote(whole.string())).exit_code == 0);
   // 26 steps; checkpoints every 7 leave step 21's (the first stage ends at step 10).
@@ -93,10 +97,12 @@ TEST_CASE("dda run split at a checkpoint and restarted leaves what the run in on
 
 TEST_CASE("dda run stopped by a signal leaves a checkpoint that continues it exactly",
           "[cli][checkpoint]") {
+  const std::string solver = GENERATE(as<std::string>{}, "factorise", "reuse");
+  INFO("linear_solver " << solver);
   dda::test::TempDir dir("dda-checkpoint-signal-");
   const fs::path scene = dir.path / "scene.json";
   // 10 static steps and 1200 dynamic ones: long enough to be stopped on the way.
-  dda::test::write_file(scene, dda::test::checkpoint_scene("6.0"));
+  dda::test::write_file(scene, dda::test::checkpoint_scene("6.0", solver));
   const fs::path whole = dir.path / "whole";
   REQUIRE(dda_run(shell_quote(scene.string()) + " --out " + shell_quote(whole.string())).exit_code == 0);
   const fs::path out = dir.path / "out";

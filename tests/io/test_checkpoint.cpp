@@ -264,6 +264,45 @@ TEST_CASE("A run stopped at any step and continued from its checkpoint ends as t
   }
 }
 
+TEST_CASE("With the kept factor a run stopped at any step continues from its file bit for bit",
+          "[checkpoint]") {
+  // The same scene on the default solver path ("linear_solver": "reuse": the factor is kept
+  // from step to step, updated by the springs that changed, and CG makes up the rest): the
+  // checkpoint stores the kept factor (WorkspaceRecord) and the continued run rebuilds it,
+  // so it takes the paths, and reaches the answers, of the run never stopped.
+  const std::string text = dda::test::checkpoint_scene("0.08", "reuse");
+  const Scene scene = parse_scene_text(text, "checkpoint scene");
+  REQUIRE(scene.control.reuse_factor);
+  World whole = make_world(scene);
+  StepWorkspace whole_ws;
+  RunStats whole_stats;
+  run(whole, whole_ws, RunHook{}, whole_stats);
+  REQUIRE(whole.step == 26);
+  REQUIRE(whole_ws.solver.stats().reused > 0);  // the kept factor was used
+  for (const int k : {1, 5, 10, 11, 17, 25}) {
+    INFO("split at step " << k);
+    World first = make_world(scene);
+    StepWorkspace first_ws;
+    RunStats stats;
+    const auto go_on = [k](const World& w, const RunStats&) { return w.step < k; };
+    run(first, first_ws, RunHook{{}, {}, go_on}, stats);
+    REQUIRE(first.step == k);
+    const std::string bytes = encode_checkpoint({text, scene, first, stats, OutputProgress{}, &first_ws});
+    Checkpoint resumed = decode_checkpoint(bytes, "memory");
+    REQUIRE(resumed.workspace);
+    StepWorkspace resumed_ws;
+    REQUIRE(restore_workspace(resumed_ws, *resumed.workspace));
+    // Written again from the rebuilt workspace: the same bytes.
+    CHECK(encode_checkpoint({text, resumed.scene, resumed.world, resumed.stats, resumed.output,
+                             &resumed_ws}) == bytes);
+    resumed.stats.interrupted = false;
+    run(resumed.world, resumed_ws, RunHook{}, resumed.stats);
+    require_same(whole, resumed.world);
+    require_same(whole_stats, resumed.stats);
+    CHECK(resumed_ws.solver.stats().cg_iterations == whole_ws.solver.stats().cg_iterations);
+  }
+}
+
 TEST_CASE("A file that is not a whole checkpoint of this version is refused naming it",
           "[checkpoint]") {
   const std::string text = dda::test::checkpoint_scene();

@@ -1,6 +1,7 @@
 // The fast path (CHOLMOD) against the simple reference (dense LDLT) on assembled systems.
 #include <catch2/catch.hpp>
 #include <cstdlib>
+#include <cstring>
 #include <random>
 
 #include "../../bench/brick_wall.hpp"
@@ -9,6 +10,7 @@
 #include "solver/assembly.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/step.hpp"
+#include "solver/workspace_record.hpp"
 #include "solver/world.hpp"
 
 using namespace dda;
@@ -489,4 +491,105 @@ TEST_CASE("a kept factor is refreshed when a CG costs more than the average solv
   REQUIRE(cholmod.solve_reusing(drifted));
   CHECK(cholmod.stats().factorisations == 2);
   CHECK(cholmod.last_path() == CholmodSolver::Path::Factorised);
+}
+
+namespace {
+
+bool same_bits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("a factor rebuilt from its record is the factor recorded, bit for bit", "[solver][checkpoint]") {
+  // The supernodal factor of a 400-brick wall's system, updated by two springs and downdated
+  // by one (which turns it into a simplicial LDL'), recorded and rebuilt on a new object:
+  // the same answers to the last bit, the same cost model (which decides the later paths),
+  // and the same answer again after both refactorise a changed matrix on the kept analysis.
+  const BlockSystem sys = settling_wall_system(400, 3);
+  Eigen::SparseMatrix<double> lower = sys.lower_triangle();
+  lower.makeCompressed();
+  SparseCholesky factor;
+  REQUIRE(factor.factorize(lower));
+  REQUIRE(factor.supernodal());
+  RankOneTerm a, b;
+  a.entries = {{6 * 3 + 0, 3e4}, {6 * 4 + 1, -3e4}};
+  b.entries = {{6 * 10 + 1, 2e4}, {6 * 11 + 2, 1e4}, {6 * 11 + 0, -2e4}};
+  REQUIRE(factor.modify({a, b}, true));
+  REQUIRE(factor.modify({a}, false));
+  const FactorRecord record = factor.record();
+  CHECK(record.modifications.size() == 2);
+  SparseCholesky rebuilt;
+  REQUIRE(rebuilt.restore(record));
+  CHECK(same_bits(rebuilt.solve(sys.rhs), factor.solve(sys.rhs)));
+  CHECK(rebuilt.refactorisation_cost() == factor.refactorisation_cost());
+  CHECK(rebuilt.modification_cost({a, b}) == factor.modification_cost({a, b}));
+  CHECK(rebuilt.analyses() == factor.analyses());
+  Eigen::SparseMatrix<double> changed = lower * 1.0001;
+  changed.makeCompressed();
+  REQUIRE(factor.factorize(changed));
+  REQUIRE(rebuilt.factorize(changed));
+  CHECK(same_bits(rebuilt.solve(sys.rhs), factor.solve(sys.rhs)));
+  CHECK(rebuilt.analyses() == factor.analyses());  // the kept analysis served both
+  // A record that does not hold together is refused, not half used.
+  FactorRecord damaged = record;
+  damaged.values.pop_back();
+  SparseCholesky refused;
+  CHECK_FALSE(refused.restore(damaged));
+  CHECK_FALSE(refused.has_factor());
+}
+
+TEST_CASE("a settling wall continued from its recorded workspace takes the unbroken run's steps",
+          "[solver][checkpoint]") {
+  // The 100-brick wall settling for 120 steps with the default solver path (a kept factor,
+  // rank-one updates, CG on top): stopped at step k, its workspace recorded and put into a
+  // new one, and the world (a copy) stepped on. Every block ends where the unbroken run's
+  // does to the last bit, and the solver took the same paths (its counts agree). Without the
+  // record the continued run factorises afresh and differs at round-off: the control below
+  // shows the comparison can fail.
+  const Scene scene = bench::brick_wall_scene(100, elastic_material("rock", 2700.0, 1e9, 0.25));
+  constexpr int kSteps = 120;
+  World whole = make_world(scene);
+  StepWorkspace whole_ws;
+  RunStats whole_stats;
+  for (int k = 0; k < kSteps; ++k) REQUIRE(advance_step(whole, whole_ws, whole_stats).ok);
+  const LinearSolveStats& s = whole_ws.solver.stats();
+  REQUIRE(s.modifications > 0);  // the paths a record must carry were taken
+  REQUIRE(s.reused > s.factorisations);
+  const auto same_blocks = [](const World& a, const World& b) {
+    for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+      for (std::size_t v = 0; v < a.blocks[i].vertices.size(); ++v) {
+        const Vec2 p = a.blocks[i].vertices[v], q = b.blocks[i].vertices[v];
+        if (std::memcmp(&p, &q, sizeof p) != 0) return false;
+      }
+      if (std::memcmp(&a.blocks[i].velocity, &b.blocks[i].velocity, sizeof(Vec3)) != 0) return false;
+    }
+    return true;
+  };
+  for (const int stop : {1, 37, 90}) {
+    INFO("stopped at step " << stop);
+    World first = make_world(scene);
+    StepWorkspace first_ws;
+    RunStats stats;
+    for (int k = 0; k < stop; ++k) REQUIRE(advance_step(first, first_ws, stats).ok);
+    const WorkspaceRecord record = record_workspace(first_ws);
+    World continued = first;
+    StepWorkspace continued_ws;
+    REQUIRE(restore_workspace(continued_ws, record));
+    RunStats continued_stats = stats;
+    for (int k = stop; k < kSteps; ++k) REQUIRE(advance_step(continued, continued_ws, continued_stats).ok);
+    CHECK(same_blocks(continued, whole));
+    CHECK(continued_stats.open_close_total == whole_stats.open_close_total);
+    const LinearSolveStats& c = continued_ws.solver.stats();
+    CHECK(c.factorisations == s.factorisations);
+    CHECK(c.modifications == s.modifications);
+    CHECK(c.cg_iterations == s.cg_iterations);
+    if (stop == 37) {
+      World fresh = first;
+      StepWorkspace fresh_ws;
+      RunStats fresh_stats = stats;
+      for (int k = stop; k < kSteps; ++k) REQUIRE(advance_step(fresh, fresh_ws, fresh_stats).ok);
+      CHECK_FALSE(same_blocks(fresh, whole));
+    }
+  }
 }
