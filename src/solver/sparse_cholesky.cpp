@@ -278,28 +278,29 @@ bool SparseCholesky::restore(const FactorRecord& record) {
   factored_ = false;
   modified_ = false;
   modifications_.clear();
-  outer_ = record.outer;
-  inner_ = record.inner;
-  values_ = record.values;
+  outer_.clear();
+  inner_.clear();
+  values_.clear();
   analyses_ = record.analyses;
-  const bool consistent = !outer_.empty() && static_cast<std::size_t>(outer_.back()) == inner_.size() &&
-                          values_.size() == inner_.size();
-  if (!record.analysed || !consistent) return !record.analysed;
-  // The analysis as factorize() made it (one more in the count: set back below).
-  cholmod_sparse a = view_pattern();
-  const bool analysed = analyse(a);
-  analyses_ = record.analyses;
-  if (!analysed) return false;
-  if (!record.factored) return true;
-  factor_ = cholmod_copy_factor(symbolic_, &common_);
-  if (factor_ == nullptr) return false;
-  {
-    const std::unique_lock<std::mutex> lock = blas_lock();
-    if (!cholmod_factorize(&a, factor_, &common_)) return false;
+  if (!record.analysed) return true;
+  const int n = static_cast<int>(record.outer.size()) - 1;
+  if (n < 0 || static_cast<std::size_t>(record.outer.back()) != record.inner.size() ||
+      record.values.size() != record.inner.size()) {
+    return false;
   }
-  factored_ = common_.status == CHOLMOD_OK && positive_pivots();
-  if (!factored_) return false;
-  make_cost_tables();
+  // factorize() on the emptied object: the stored pattern becomes the analysed one, analysed
+  // and factorised as when it was made.
+  Eigen::SparseMatrix<double> lower = Eigen::Map<const Eigen::SparseMatrix<double>>(
+      n, n, static_cast<Eigen::Index>(record.inner.size()), record.outer.data(), record.inner.data(),
+      record.values.data());
+  lower.makeCompressed();
+  const bool factorised = factorize(lower);
+  analyses_ = record.analyses;
+  if (!record.factored) {
+    factored_ = false;  // the recorded object held no factor (its factorisation failed)
+    return symbolic_ != nullptr;
+  }
+  if (!factorised) return false;
   for (const FactorModification& m : record.modifications) {
     if (!modify(m.terms, m.update)) return false;
   }
