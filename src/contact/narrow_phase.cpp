@@ -86,7 +86,10 @@ bool in_vertex_pair(const std::vector<VertexPair>& pairs, int va, int vb) {
 }
 
 // Vertex `v` of `vp` against every edge of `ep`, skipping edges that end at a vertex paired
-// with `v` (those meetings are decided by the vertex-to-vertex rule).
+// with `v` (those meetings are decided by the vertex-to-vertex rule). Every test below only
+// rules a meeting out, so their order does not change the answer; the projection's reach,
+// which rules out all but a few of a pair's vertex-edge meetings, goes first (in a hopper of
+// 300 polygons the covers and vertex pairs tested first had made this 7 % of the run).
 void vertex_to_edge(const Polygon& vp, const PolygonFeatures& vf, int vblock, const Polygon& ep,
                     const PolygonFeatures& ef, int eblock, double d0,
                     const std::vector<VertexPair>& pairs, bool v_is_a,
@@ -96,13 +99,17 @@ void vertex_to_edge(const Polygon& vp, const PolygonFeatures& vf, int vblock, co
   for (int v = 0; v < nv; ++v) {
     if (!vf[static_cast<std::size_t>(v)].convex) continue;
     for (int e = 0; e < ne; ++e) {
+      const EdgeFrame& frame = ef[static_cast<std::size_t>(e)].edge;
+      const EdgeProjection proj = project_on_edge(vp[v], frame);
+      // Outside by up to d0, or inside by no more than half the local edge lengths.
+      const double reach =
+          std::min({d0, vf[static_cast<std::size_t>(v)].half_shortest_edge, 0.5 * frame.length});
+      if (proj.t < 0.0 || proj.t > 1.0 || proj.gap > d0 || proj.gap < -reach) continue;
       if (covered_against(ef, e, vblock, true)) continue;
-      if (blocked_at_covered_edge(vf, v, eblock, ef[static_cast<std::size_t>(e)].edge, true)) continue;
+      if (blocked_at_covered_edge(vf, v, eblock, frame, true)) continue;
       const int e_end = wrap(e + 1, ne);
       const bool paired_start = v_is_a ? in_vertex_pair(pairs, v, e) : in_vertex_pair(pairs, e, v);
       const bool paired_end = v_is_a ? in_vertex_pair(pairs, v, e_end) : in_vertex_pair(pairs, e_end, v);
-      const EdgeFrame& frame = ef[static_cast<std::size_t>(e)].edge;
-      const EdgeProjection proj = project_on_edge(vp[v], frame);
       // A paired vertex is left to the vertex-pair rule only where it projects near the
       // paired end: two faces that overlap by more than that (blocks face to face, offset
       // along the face) need both end vertices on the other's edge, and a rocking block
@@ -117,10 +124,6 @@ void vertex_to_edge(const Polygon& vp, const PolygonFeatures& vf, int vblock, co
           (paired_end && (1.0 - proj.t) * frame.length < clearance)) {
         continue;
       }
-      // Outside by up to d0, or inside by no more than half the local edge lengths.
-      const double reach =
-          std::min({d0, vf[static_cast<std::size_t>(v)].half_shortest_edge, 0.5 * frame.length});
-      if (proj.t < 0.0 || proj.t > 1.0 || proj.gap > d0 || proj.gap < -reach) continue;
       if (wedge_score(vf, v, frame.normal) < -kCandidateWedgeTolerance) continue;
       // Behind the edge's line but outside its block: beyond the other edge of an acute
       // corner, where the line's extension says "deep inside" (a pack of random blocks had

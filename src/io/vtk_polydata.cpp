@@ -239,7 +239,7 @@ std::string vtk_compressed_array(const std::string& raw, std::size_t block_size)
     std::string out(packed, '\0');
     const int rc = compress2(reinterpret_cast<Bytef*>(out.data()), &packed,
                              reinterpret_cast<const Bytef*>(raw.data() + begin),
-                             static_cast<uLong>(size), Z_DEFAULT_COMPRESSION);
+                             static_cast<uLong>(size), Z_BEST_SPEED);
     if (rc != Z_OK) throw std::runtime_error("vtk: zlib could not compress an array block");
     put_le(header, packed, 8);
     body.append(out.data(), packed);

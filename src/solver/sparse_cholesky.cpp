@@ -233,13 +233,88 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
     if (factor_ == nullptr) return false;
   }
   modified_ = false;
+  // The matrix in the factor's order (make_permuted_layout), handed over as already
+  // permuted: CHOLMOD reads the factor's ordering only to decide whether to permute its
+  // input, and the solves and updates still use the factor's permutation.
+  const double* source = own_pattern ? lower.valuePtr() : values_.data();
+  for (std::size_t q = 0; q < permuted_position_.size(); ++q) {
+    permuted_values_[static_cast<std::size_t>(permuted_position_[q])] = source[q];
+  }
+  cholmod_sparse permuted = view_lower(static_cast<int>(permuted_outer_.size()) - 1,
+                                       permuted_inner_.size(), permuted_outer_.data(),
+                                       permuted_inner_.data(), permuted_values_.data());
+  permuted.stype = factor_->is_super ? -1 : 1;
+  permuted.sorted = permuted_sorted_ ? 1 : 0;
+  const int ordering = factor_->ordering;
+  factor_->ordering = CHOLMOD_NATURAL;
+  bool ok = false;
   {
     const std::unique_lock<std::mutex> lock = blas_lock();
-    if (!cholmod_factorize(&a, factor_, &common_)) return false;
+    ok = cholmod_factorize(&permuted, factor_, &common_) != 0;
   }
+  factor_->ordering = ordering;
+  if (!ok) return false;
   factored_ = common_.status == CHOLMOD_OK && positive_pivots();
-  if (factored_) make_cost_tables();
+  if (factored_ && !tables_made_) {
+    make_cost_tables();
+    tables_made_ = true;
+  }
   return factored_;
+}
+
+void SparseCholesky::make_permuted_layout() {
+  const int n = static_cast<int>(outer_.size()) - 1;
+  const auto* perm = static_cast<const int*>(symbolic_->Perm);
+  permuted_outer_.assign(static_cast<std::size_t>(n) + 1, 0);
+  permuted_inner_.resize(inner_.size());
+  permuted_position_.resize(inner_.size());
+  permuted_values_.assign(inner_.size(), 0.0);
+  // Entries in the order CHOLMOD's own permutation leaves them in (rowfac's sums run in the
+  // order of a column's entries, so this keeps every factor as it was, bit for bit): for a
+  // simplicial factor, the upper triangle filled column by column of P K P', each new
+  // column's entries in the analysed pattern's order (cholmod_transpose_sym, marked
+  // unsorted); for a supernodal one, that transposed again, which sorts it.
+  const auto place = [&](auto&& visit) {
+    for (int j = 0; j < n; ++j) {
+      const int old = perm[j];
+      for (int q = outer_[static_cast<std::size_t>(old)]; q < outer_[static_cast<std::size_t>(old) + 1]; ++q) {
+        const int i = inverse_perm_[static_cast<std::size_t>(inner_[static_cast<std::size_t>(q)])];
+        visit(j, i, q);
+      }
+    }
+  };
+  if (!symbolic_->is_super) {
+    place([&](int j, int i, int) { ++permuted_outer_[static_cast<std::size_t>(std::max(i, j)) + 1]; });
+    for (int j = 0; j < n; ++j) {
+      permuted_outer_[static_cast<std::size_t>(j) + 1] += permuted_outer_[static_cast<std::size_t>(j)];
+    }
+    std::vector<int> next(permuted_outer_.begin(), permuted_outer_.end() - 1);
+    place([&](int j, int i, int q) {
+      const int at = next[static_cast<std::size_t>(std::max(i, j))]++;
+      permuted_inner_[static_cast<std::size_t>(at)] = std::min(i, j);
+      permuted_position_[static_cast<std::size_t>(q)] = at;
+    });
+    permuted_sorted_ = false;
+    return;
+  }
+  struct Entry {
+    int column, row, from;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(inner_.size());
+  place([&](int j, int i, int q) { entries.push_back({std::min(i, j), std::max(i, j), q}); });
+  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
+    return x.column != y.column ? x.column < y.column : x.row < y.row;
+  });
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    ++permuted_outer_[static_cast<std::size_t>(entries[k].column) + 1];
+    permuted_inner_[k] = entries[k].row;
+    permuted_position_[static_cast<std::size_t>(entries[k].from)] = static_cast<int>(k);
+  }
+  for (int j = 0; j < n; ++j) {
+    permuted_outer_[static_cast<std::size_t>(j) + 1] += permuted_outer_[static_cast<std::size_t>(j)];
+  }
+  permuted_sorted_ = true;
 }
 
 bool SparseCholesky::analyse(cholmod_sparse& a) {
@@ -257,6 +332,8 @@ bool SparseCholesky::analyse(cholmod_sparse& a) {
   const auto* perm = static_cast<const int*>(symbolic_->Perm);
   inverse_perm_.assign(symbolic_->n, 0);
   for (size_t i = 0; i < symbolic_->n; ++i) inverse_perm_[perm[i]] = static_cast<int>(i);
+  make_permuted_layout();
+  tables_made_ = false;
   return true;
 }
 

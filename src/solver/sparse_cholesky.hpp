@@ -144,8 +144,23 @@ class SparseCholesky {
   std::vector<double> values_;  // a matrix scattered into it
   int analyses_ = 0;
   std::vector<int> inverse_perm_;  // row i of A is row inverse_perm_[i] of P A
-  // The cost model's tables, made by factorize(): for each column j of L (factor's order),
-  // the summed column counts from j up the elimination tree to the root; and sum nnz^2.
+  // The analysed pattern permuted as the factor needs it, made once per analysis, so that
+  // CHOLMOD factorises it as given instead of transposing the matrix into it at every
+  // factorisation (cholmod_factorize permutes and transposes a matrix it is handed in the
+  // original order: a copy of every entry, 5 % of the 150-square box's run). A simplicial
+  // LDL' reads the upper triangle of P K P' by columns, a supernodal LL' the lower one.
+  // permuted_position_[q]: where entry q of the analysed pattern goes.
+  void make_permuted_layout();
+  std::vector<int> permuted_outer_;
+  std::vector<int> permuted_inner_;
+  std::vector<int> permuted_position_;
+  std::vector<double> permuted_values_;
+  bool permuted_sorted_ = true;  // each column's rows in order (as CHOLMOD marks it)
+  // The cost model's tables, made at the first factorisation after an analysis (the
+  // factor's structure is the analysis's until the next one): for each column j of L
+  // (factor's order), the summed column counts from j up the elimination tree to the root;
+  // and sum nnz^2.
+  bool tables_made_ = false;
   std::vector<double> path_cost_;
   double column_count_squares_ = 0.0;  // sum over columns of nnz(L(:,j))^2
   double factor_entries_ = 0.0;  // nnz(L) of the last factorisation
