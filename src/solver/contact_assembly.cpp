@@ -21,7 +21,9 @@ Mat26 t_at(const World& w, const StepContext& ctx, int block, const Vec2& x) {
 // force -k g0 m) to the system; fixed blocks carry no unknowns and are left out.
 class ContactAssembler {
  public:
-  ContactAssembler(const World& w, BlockSystem& s) : world_(w), system_(s) {}
+  ContactAssembler(const World& w, BlockSystem& s, std::size_t pairs = 0) : world_(w), system_(s) {
+    index_.reserve(pairs);
+  }
 
   void add_spring(const Contact& c, const Measure& m, double k, double g0) {
     const Block& bv = world_.blocks[c.key.vertex_block];
@@ -60,14 +62,23 @@ class ContactAssembler {
  private:
   Mat6& coupling(int a, int b) {
     const int row = std::max(a, b), col = std::min(a, b);
-    const auto [it, inserted] = index_.try_emplace(pair_key(row, col), system_.couplings.size());
-    if (inserted) system_.couplings.push_back({row, col, Mat6::Zero()});
-    return system_.couplings[it->second].k;
+    const std::uint64_t key = pair_key(row, col);
+    // A pair's contacts follow each other in the list (detection finds them pair by pair),
+    // so most look-ups are the last one's; the map is for the rest.
+    if (key != last_key_) {
+      const auto [it, inserted] = index_.try_emplace(key, system_.couplings.size());
+      if (inserted) system_.couplings.push_back({row, col, Mat6::Zero()});
+      last_key_ = key;
+      last_index_ = it->second;
+    }
+    return system_.couplings[last_index_].k;
   }
 
   const World& world_;
   BlockSystem& system_;
   std::unordered_map<std::uint64_t, std::size_t> index_;
+  std::uint64_t last_key_ = std::numeric_limits<std::uint64_t>::max();
+  std::size_t last_index_ = 0;
 };
 
 Vec2 projection_point(const Contact& c) { return c.measure_point(); }
@@ -132,7 +143,7 @@ void contact_spring_terms(const World& world, const Contact& c, const StepContex
 
 void add_contact_terms(const World& world, std::vector<Contact>& contacts,
                        const StepContext& ctx, BlockSystem& system) {
-  ContactAssembler assembler(world, system);
+  ContactAssembler assembler(world, system, contacts.size());
   const double kn = ctx.penalty;
   const double ks = shear_stiffness(ctx.penalty);
   for (const Contact& c : contacts) {

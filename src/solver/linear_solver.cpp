@@ -225,7 +225,8 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve_low_rank_coupled(
   // problem triangular.
   std::vector<Eigen::VectorXd> basis;
   basis.reserve(static_cast<std::size_t>(cap) + 1);
-  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(cap + 1, cap);
+  if (hessenberg_.rows() < cap + 1 || hessenberg_.cols() < cap) hessenberg_.resize(cap + 1, cap);
+  Eigen::MatrixXd& h = hessenberg_;
   Eigen::VectorXd cs = Eigen::VectorXd::Zero(cap), sn = Eigen::VectorXd::Zero(cap);
   Eigen::VectorXd g = Eigen::VectorXd::Zero(cap + 1);
   g[0] = b_norm;
@@ -233,6 +234,7 @@ std::optional<Eigen::VectorXd> CholmodSolver::solve_low_rank_coupled(
   int k = 0;
   for (; k < cap; ++k) {
     ++stats_.cg_iterations;
+    h.col(k).head(k + 2).setZero();  // the entries this column uses
     Eigen::VectorXd w = apply(factor_.solve(basis[static_cast<std::size_t>(k)]));
     for (int i = 0; i <= k; ++i) {
       h(i, k) = w.dot(basis[static_cast<std::size_t>(i)]);
