@@ -21,7 +21,7 @@ Mat26 t_at(const World& w, const StepContext& ctx, int block, const Vec2& x) {
 // force -k g0 m) to the system; fixed blocks carry no unknowns and are left out.
 class ContactAssembler {
  public:
-  ContactAssembler(const World& w, BlockSystem& s, std::size_t pairs = 0) : world_(w), system_(s) {
+  ContactAssembler(const World& w, BlockSystem& s, std::size_t pairs) : world_(w), system_(s) {
     index_.reserve(pairs);
   }
 

@@ -72,7 +72,8 @@ std::unique_lock<std::mutex> blas_lock() {
   return {};
 }
 
-// A cholmod_sparse view of an Eigen compressed lower triangle (no copy).
+// A cholmod_sparse view of a compressed-column symmetric matrix stored as its lower triangle
+// (no copy); the caller sets stype and sorted otherwise.
 cholmod_sparse view_lower(int n, std::size_t nnz, const int* p, const int* i, const double* x) {
   cholmod_sparse a{};
   a.nrow = static_cast<size_t>(n);
@@ -88,11 +89,6 @@ cholmod_sparse view_lower(int n, std::size_t nnz, const int* p, const int* i, co
   a.sorted = 1;
   a.packed = 1;
   return a;
-}
-
-cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& k) {
-  return view_lower(static_cast<int>(k.rows()), static_cast<std::size_t>(k.nonZeros()),
-                    k.outerIndexPtr(), k.innerIndexPtr(), k.valuePtr());
 }
 
 }  // namespace
@@ -205,10 +201,10 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   assert(lower.isCompressed());
   const bool was_factored = factored_;
   factored_ = false;
-  // The matrix as CHOLMOD sees it: itself when its pattern is the analysed one; else its
-  // values scattered into the analysed pattern when that holds all of its entries (a
-  // contact gone since the analysis leaves explicit zeros); else a new analysis, of the
-  // union of the two patterns (grow_pattern).
+  // The matrix's values in the analysed pattern (values_): its own when its pattern is the
+  // analysed one; else scattered into the analysed pattern when that holds all of its
+  // entries (a contact gone since the analysis leaves explicit zeros); else a new analysis,
+  // of the union of the two patterns (grow_pattern).
   bool own_pattern = symbolic_ != nullptr && same_pattern(lower);
   const bool analysed = own_pattern || (symbolic_ != nullptr && scatter_into_pattern(lower));
   if (!analysed) {
@@ -218,11 +214,13 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
     own_pattern = same_pattern(lower);
     if (!own_pattern) scatter_into_pattern(lower);  // the union holds it: cannot fail
   }
-  // record() keeps the matrix factorised: a matrix of the analysed pattern is its values.
+  // record() keeps the matrix factorised, and the factorisation below reads it from here.
   if (own_pattern) values_.assign(lower.valuePtr(), lower.valuePtr() + lower.nonZeros());
   modifications_.clear();
-  cholmod_sparse a = own_pattern ? view_lower(lower) : view_pattern();
-  if (!analysed && !analyse(a)) return false;
+  if (!analysed) {
+    cholmod_sparse a = view_pattern();
+    if (!analyse(a)) return false;
+  }
   // A factor that was refactorised in place keeps its form; one that was converted for
   // updates (or failed) starts again from the analysis.
   const bool reusable =
@@ -236,9 +234,8 @@ bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   // The matrix in the factor's order (make_permuted_layout), handed over as already
   // permuted: CHOLMOD reads the factor's ordering only to decide whether to permute its
   // input, and the solves and updates still use the factor's permutation.
-  const double* source = own_pattern ? lower.valuePtr() : values_.data();
   for (std::size_t q = 0; q < permuted_position_.size(); ++q) {
-    permuted_values_[static_cast<std::size_t>(permuted_position_[q])] = source[q];
+    permuted_values_[static_cast<std::size_t>(permuted_position_[q])] = values_[q];
   }
   cholmod_sparse permuted = view_lower(static_cast<int>(permuted_outer_.size()) - 1,
                                        permuted_inner_.size(), permuted_outer_.data(),
